@@ -1,0 +1,90 @@
+# mlg-shimmy: AUTO-07p plugin set for main landing gear shimmy.
+#
+#   make test      set up (Debian packages, AUTO-07p), build and run all tests
+#   make figures   set up and produce every registered figure in build/figures/
+#   make bench     set up and run the benchmark programs
+#   make setup     only the set-up steps
+#   make clean     remove build/
+#
+# Variables other makefiles (c/c.mk, ...) append to:
+#   TEST_PROGRAMS   test programs run by `make test`: C executables (give the
+#                   build rule) or Python scripts tests/test_*.py. Each prints
+#                   `ok <name>` / `not ok <name> - <detail>` lines.
+#   TEST_DEPS       other files the tests need built first (e.g. model .exe)
+#   FIGURES         make targets (e.g. fig05) built by `make figures`
+#   BENCH_PROGRAMS  programs run by `make bench` (executables or .py scripts)
+#
+# Settings (command line or environment):
+#   AUTO_DIR=<dir>  use an already built AUTO-07p instead of building one
+#   AUTO_SRC=<file> build AUTO-07p from this tarball, not the Debian source
+#   PYTHON          interpreter with numpy and matplotlib (/usr/bin/python3)
+#   OMP_NUM_THREADS threads for AUTO (1)
+#   TEST_TIMEOUT    seconds per test program (600)
+#
+# Useful for rules in included makefiles: $(AUTO_DIR), $(PYTHON), `| auto`
+# (AUTO-07p is ready) and $(call auto_equations,...) from mk/auto.mk.
+
+SHELL := /bin/bash
+PYTHON ?= /usr/bin/python3
+OMP_NUM_THREADS ?= 1
+TEST_TIMEOUT ?= 600
+export PYTHON OMP_NUM_THREADS
+export MPLBACKEND := Agg
+export SOURCE_DATE_EPOCH := 0
+
+PACKAGES := gcc gfortran make liblapack-dev python3-numpy python3-matplotlib \
+            libsundials-dev dpkg-dev
+PACKAGES_STAMP := build/.stamp-packages
+
+TEST_PROGRAMS :=
+TEST_DEPS :=
+FIGURES :=
+BENCH_PROGRAMS :=
+
+.PHONY: all setup packages auto test figures bench clean
+all: test
+
+include mk/auto.mk
+-include c/c.mk
+
+setup: packages auto
+
+packages: $(PACKAGES_STAMP)
+
+$(PACKAGES_STAMP): mk/install-packages.sh
+	mk/install-packages.sh $(PACKAGES)
+	@mkdir -p $(@D)
+	touch $@
+
+# Smoke test of the chain: a C model linked with a static library, compiled
+# by our rules, run by AUTO from drivers/autoglue.py.
+SMOKE := build/tests/smoke/smoke
+build/tests/smoke/libshift.a: tests/smoke/shift.c tests/smoke/shift.h | packages
+	@mkdir -p $(@D)
+	gcc -O2 -Wall -c $< -o $(@D)/shift.o
+	ar rcs $@ $(@D)/shift.o
+$(eval $(call auto_equations,$(SMOKE),tests/smoke/smoke.c,build/tests/smoke/libshift.a,-Itests/smoke))
+TEST_DEPS += $(SMOKE).exe
+TEST_PROGRAMS += tests/test_smoke_auto.py
+
+test: setup $(TEST_DEPS) $(TEST_PROGRAMS)
+	$(PYTHON) tests/run_tests.py --timeout $(TEST_TIMEOUT) $(TEST_PROGRAMS)
+
+figures: setup $(FIGURES)
+	@if [ -z "$(strip $(FIGURES))" ]; then \
+	    echo "figures: no figures are registered yet (FIGURES is empty)"; \
+	else \
+	    echo "figures: $(strip $(FIGURES)) -> build/figures/"; \
+	fi
+
+bench: setup $(BENCH_PROGRAMS)
+	@if [ -z "$(strip $(BENCH_PROGRAMS))" ]; then \
+	    echo "bench: no benchmark programs are registered yet (BENCH_PROGRAMS is empty)"; \
+	fi
+	@set -e; for prog in $(abspath $(BENCH_PROGRAMS)); do \
+	    echo "bench: $$prog"; \
+	    case $$prog in *.py) $(PYTHON) "$$prog" ;; *) "$$prog" ;; esac; \
+	done
+
+clean:
+	rm -rf build

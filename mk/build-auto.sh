@@ -1,0 +1,82 @@
+#!/bin/bash
+# Build AUTO-07p from source under a given directory.
+#
+#   mk/build-auto.sh <build-dir> [<tarball>]
+#
+# Without <tarball>, the Debian source package auto-07p is downloaded with
+# `apt-get source --download-only` into <build-dir>/download and its
+# .orig.tar.gz is checked against the Checksums-Sha256 field of the .dsc.
+# The tree is unpacked to <build-dir>/07p (the AUTO_DIR) and built there.
+set -euo pipefail
+
+build_dir=$1
+tarball=${2:-}
+mkdir -p "$build_dir"
+build_dir=$(cd "$build_dir" && pwd)
+
+die() { echo "build-auto: error: $*" >&2; exit 1; }
+
+fetch_debian_source() {
+    local src_list=/etc/apt/sources.list.d/mlg-shimmy-src.sources
+    local download=$build_dir/download
+    mkdir -p "$download"
+    if ! ls "$download"/auto-07p_*.orig.tar.* >/dev/null 2>&1 || ! ls "$download"/auto-07p_*.dsc >/dev/null 2>&1; then
+        if [ ! -f "$src_list" ]; then
+            [ "$(id -u)" = 0 ] || die "need root to add $src_list (or pass AUTO_SRC=<tarball> / AUTO_DIR=<built AUTO>)"
+            echo "build-auto: adding deb-src entries in $src_list"
+            sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources > "$src_list"
+        fi
+        apt-get update
+        # The .debian.tar.xz may be unavailable; the .orig.tar.gz and .dsc are what we need.
+        (cd "$download" && apt-get source --download-only auto-07p) || \
+            echo "build-auto: apt-get source exited non-zero; checking what arrived"
+    fi
+    local dsc orig
+    dsc=$(ls "$download"/auto-07p_*.dsc 2>/dev/null | head -n1) || true
+    orig=$(ls "$download"/auto-07p_*.orig.tar.* 2>/dev/null | head -n1) || true
+    [ -n "$dsc" ] || die "no .dsc downloaded into $download"
+    [ -n "$orig" ] || die "no .orig tarball downloaded into $download"
+    local expected actual
+    expected=$(awk -v f="$(basename "$orig")" '
+        /^Checksums-Sha256:/ { in_sum = 1; next }
+        /^[^ ]/ { in_sum = 0 }
+        in_sum && $3 == f { print $1 }' "$dsc")
+    [ -n "$expected" ] || die "$(basename "$orig") not listed in Checksums-Sha256 of $dsc"
+    actual=$(sha256sum "$orig" | cut -d' ' -f1)
+    if [ "$actual" != "$expected" ]; then
+        die "sha256 mismatch for $orig: got $actual, .dsc says $expected"
+    fi
+    echo "build-auto: $(basename "$orig") sha256 $actual matches $(basename "$dsc")"
+    tarball=$orig
+}
+
+if [ -n "$tarball" ]; then
+    [ -f "$tarball" ] || die "AUTO_SRC=$tarball: no such file"
+    echo "build-auto: using AUTO_SRC=$tarball, sha256 $(sha256sum "$tarball" | cut -d' ' -f1)"
+else
+    fetch_debian_source
+fi
+
+# Unpack, then move the tree root (the directory holding `configure`; auto/07p
+# in the Debian tarball) to <build-dir>/07p, the AUTO_DIR the Makefile expects.
+auto_dir=$build_dir/07p
+unpack=$build_dir/unpack
+rm -rf "$auto_dir" "$unpack"
+mkdir -p "$unpack"
+tar -xf "$tarball" -C "$unpack"
+configure=$(find "$unpack" -maxdepth 3 -name configure -type f | head -n1)
+[ -n "$configure" ] || die "no configure script found in $tarball"
+mv "$(dirname "$configure")" "$auto_dir"
+rm -rf "$unpack"
+
+cd "$auto_dir"
+# The dfsg tarball drops tek2ps/, but configure still wants tek2ps/Makefile.in.
+if [ ! -f tek2ps/Makefile.in ]; then
+    mkdir -p tek2ps
+    printf 'all:\n\nclean:\n' > tek2ps/Makefile.in
+fi
+./configure --disable-plaut --disable-plaut04 --disable-tek2ps --disable-gui \
+    --with-optimization-flags="-O2 -fallow-argument-mismatch"
+# No -j: the Fortran module build order breaks in parallel.
+make -j1
+echo "build-auto: AUTO-07p built in $auto_dir"

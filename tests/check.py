@@ -1,0 +1,22 @@
+"""Minimal helpers for Python test programs (protocol of tests/run_tests.py)."""
+import math
+
+
+def check(name, cond, detail=""):
+    """Print `ok <name>` or `not ok <name> - <detail>`; return cond."""
+    if cond:
+        print(f"ok {name}", flush=True)
+    else:
+        print(f"not ok {name} - {detail}", flush=True)
+    return bool(cond)
+
+
+def approx(a, b, rel=0.0, abs=0.0):
+    """True when |a - b| <= max(rel * max(|a|, |b|), abs)."""
+    return math.isclose(a, b, rel_tol=rel, abs_tol=abs)
+
+
+def check_close(name, value, expected, rel=0.0, abs=0.0):
+    """check() that value equals expected within rel/abs tolerance."""
+    return check(name, approx(value, expected, rel, abs),
+                 f"got {value!r}, expected {expected!r} (rel {rel}, abs {abs})")
