@@ -1,0 +1,33 @@
+# The model library (c/) and its C tests and benchmark; included by ../Makefile.
+CC ?= gcc
+MLG_CFLAGS := -std=c11 -O3 -Wall -Wextra -Wpedantic -Werror -Ic
+MLG_LIB := build/lib/libmlg.a
+MLG_SOURCES := $(wildcard c/*.c)
+MLG_HEADERS := $(wildcard c/*.h)
+MLG_OBJECTS := $(patsubst c/%.c,build/obj/%.o,$(MLG_SOURCES))
+
+$(MLG_OBJECTS): build/obj/%.o: c/%.c $(MLG_HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(MLG_CFLAGS) -fPIC -c $< -o $@
+
+$(MLG_LIB): $(MLG_OBJECTS)
+	@mkdir -p $(@D)
+	rm -f $@
+	ar rcs $@ $^
+
+# C unit tests: tests/c/test_*.c, one executable each, linked with LAPACK.
+MLG_TEST_SOURCES := $(wildcard tests/c/test_*.c)
+MLG_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(MLG_TEST_SOURCES))
+
+$(MLG_TESTS): build/tests/%: tests/c/%.c tests/c/unit.h $(MLG_LIB) | $(PACKAGES_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(MLG_CFLAGS) -Itests/c $< $(MLG_LIB) -llapack -lm -o $@
+
+TEST_PROGRAMS += $(MLG_TESTS)
+
+MLG_BENCH := build/bench/bench_vector_field
+$(MLG_BENCH): tests/bench/bench_vector_field.c $(MLG_LIB)
+	@mkdir -p $(@D)
+	$(CC) $(MLG_CFLAGS) $< $(MLG_LIB) -lm -o $@
+
+BENCH_PROGRAMS += $(MLG_BENCH)

@@ -1,0 +1,77 @@
+/* Straight-rolling equilibrium: Newton on f(u) = 0 (all rates zero). */
+#include <math.h>
+#include <string.h>
+
+#include "linear_solve.h"
+#include "mlg.h"
+#define DUAL_N 0
+#include "geometry.h"
+#include "strut.h"
+
+/* Static axial balance at beta = 0 (eq. 4 with zero rates): F_keta = F_z cos(phi0). */
+static double axial_residual(const mlg_params *p, double eta, double cos_phi)
+{
+    return strut_spring_force(p, d_const(eta)).v - p->Fstar * p->g_0 * p->m_0 * cos_phi;
+}
+
+/* Smallest root of the static axial balance in (0, z_tlk0), by scan and bisection. */
+static double smallest_axial_root(const mlg_params *p, double cos_phi)
+{
+    const int steps = 4000;
+    double lo = 1e-7, f_lo = axial_residual(p, lo, cos_phi);
+    for (int k = 1; k <= steps; k++) {
+        double hi = p->z_tlk0 * k / steps - 1e-9, f_hi = axial_residual(p, hi, cos_phi);
+        if ((f_lo <= 0.0) != (f_hi <= 0.0)) {
+            for (int it = 0; it < 200 && hi - lo > 1e-15; it++) {
+                double mid = 0.5 * (lo + hi), f_mid = axial_residual(p, mid, cos_phi);
+                if ((f_mid <= 0.0) == (f_lo <= 0.0)) {
+                    lo = mid;
+                    f_lo = f_mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            return 0.5 * (lo + hi);
+        }
+        lo = hi;
+        f_lo = f_hi;
+    }
+    return -1.0;
+}
+
+int mlg_equilibrium(const mlg_params *p_in, double eta_guess, double u[MLG_NX])
+{
+    /* The equilibrium does not depend on V (rates vanish, and V cancels from
+     * eqs. 5-6), but at V = 0 the tyre states are undetermined: solve at V >= 1. */
+    mlg_params p = *p_in;
+    if (p.V < 1.0) p.V = 1.0;
+    memset(u, 0, sizeof(double) * MLG_NX);
+    if (eta_guess <= 0.0) {
+        model_parameters mp = model_parameters_seed(&p);
+        sidestay g = sidestay_geometry(&mp);
+        eta_guess = smallest_axial_root(&p, g.H1.v + g.H3.v);
+        if (eta_guess <= 0.0) return -1;
+    }
+    u[MLG_ETA] = eta_guess;
+
+    double f[MLG_NX], J[MLG_NX * MLG_NX];
+    for (int it = 0; it < 60; it++) {
+        int status = mlg_rhs_jacobian(&p, u, f, J, NULL);
+        if (status != MLG_OK) return status;
+        double step[MLG_NX];
+        for (int i = 0; i < MLG_NX; i++) step[i] = -f[i];
+        if (mlg_linear_solve(MLG_NX, J, step) != 0) return -1;
+        /* keep eta inside the stroke: halve the step until it is */
+        double scale = 1.0;
+        while (!(u[MLG_ETA] + scale * step[MLG_ETA] > 0.0 &&
+                 u[MLG_ETA] + scale * step[MLG_ETA] < p.z_tlk0) && scale > 1e-6)
+            scale *= 0.5;
+        double size = 0.0;
+        for (int i = 0; i < MLG_NX; i++) {
+            u[i] += scale * step[i];
+            size = fmax(size, fabs(scale * step[i]));
+        }
+        if (size < 1e-13) return MLG_OK;
+    }
+    return -1;
+}

@@ -1,0 +1,127 @@
+/* Gear geometry: side-stay angles, axes and points of section II (Fig. 3). */
+#ifndef MLG_GEOMETRY_H
+#define MLG_GEOMETRY_H
+
+#include "model_parameters.h"
+#include "vec3.h"
+
+/* Quantities fixed by the side-stay orientation (rho, mu) and rake phi0. */
+typedef struct {
+    dvec u_beta, u_psi0, u_delta0;
+    dual m, sin_p, cos_p;
+    dual H1, H2, H3;          /* cos(phi) = H1 cos(beta) + H2 sin(beta) + H3 */
+    dmat R0;                  /* R(-e_Y, phi0) */
+} sidestay;
+
+static inline sidestay sidestay_geometry(const model_parameters *mp)
+{
+    const double phi0 = mp->c->phi0, c0 = cos(phi0), s0 = sin(phi0);
+    dual cr = d_cos(mp->rho), sr = d_sin(mp->rho), cm = d_cos(mp->mu), sm = d_sin(mp->mu);
+    sidestay g;
+    g.u_beta = v_make(d_neg(d_mul(cr, sm)), d_neg(d_mul(cr, cm)), d_neg(sr));
+    g.u_psi0 = v_const(-s0, 0.0, c0);
+    /* m and p: model-notes item 13; u_delta0 is then normal to u_beta and u_psi0 */
+    g.sin_p = d_sub(d_mulc(sr, c0), d_mulc(d_mul(cr, sm), s0));
+    g.cos_p = d_sqrt(d_sub(d_const(1.0), d_sq(g.sin_p)));
+    g.m = d_atan2(d_add(d_mulc(d_mul(cr, sm), c0), d_mulc(sr, s0)), d_mul(cr, cm));
+    dual cmm = d_cos(g.m);
+    g.u_delta0 = v_make(d_mulc(cmm, c0), d_neg(d_sin(g.m)), d_mulc(cmm, s0));
+    /* H1..H3 as printed after eq. (6) */
+    g.H1 = d_add(d_mulc(d_sq(cr), c0), d_mulc(d_mul(d_mul(sr, cr), sm), s0));
+    g.H2 = d_mulc(d_mul(cr, cm), -s0);
+    g.H3 = d_sub(d_mulc(d_sq(sr), c0), d_mulc(d_mul(d_mul(sr, cr), sm), s0));
+    g.R0 = m_rotation(v_const(0.0, -1.0, 0.0), d_const(phi0));
+    return g;
+}
+
+/* Lengths and inertias that depend on the compression eta (section II.A). */
+typedef struct {
+    dual L_beta, L_delta, z_tlk;
+    dual I_a;
+    dual I_beta, dI_beta_deta;      /* I_beta and dI_beta/deta */
+    dual I_delta, dI_delta_deta;    /* I_delta (at the current theta_a) and dI_delta/deta */
+    dual k_delta, c_delta;
+} strut_geometry;
+
+static inline strut_geometry strut_geometry_at(const model_parameters *mp, const sidestay *g,
+                                               dual eta, dual theta_a)
+{
+    const mlg_params *c = mp->c;
+    strut_geometry s;
+    s.L_beta = d_sub(d_const(c->L_beta0), eta);
+    s.L_delta = d_sub(d_const(c->L_delta0), eta);
+    s.z_tlk = d_sub(d_const(c->z_tlk0), eta);
+    s.I_a = d_const(c->I_a2 * c->a * c->a + c->I_a0 + 2.0 * c->I_0);
+    dual cos2p = d_sq(g->cos_p);
+    /* I_beta = (640 L_b^2 - 100 L_b + 260) cos^2 p;  dL_b/deta = -1 */
+    s.I_beta = d_mul(d_addc(d_add(d_mulc(d_sq(s.L_beta), c->I_beta2),
+                                  d_mulc(s.L_beta, c->I_beta1)), c->I_beta0), cos2p);
+    s.dI_beta_deta = d_neg(d_mul(d_addc(d_mulc(s.L_beta, 2.0 * c->I_beta2), c->I_beta1), cos2p));
+    /* I_delta = 630 L_d^2 - 140 L_d + 60 + I_a cos^2 theta_a */
+    s.I_delta = d_add(d_addc(d_add(d_mulc(d_sq(s.L_delta), c->I_delta2),
+                                   d_mulc(s.L_delta, c->I_delta1)), c->I_delta0),
+                      d_mul(s.I_a, d_sq(d_cos(theta_a))));
+    s.dI_delta_deta = d_neg(d_addc(d_mulc(s.L_delta, 2.0 * c->I_delta2), c->I_delta1));
+    /* k_delta = K L_d^2 / (3bc(b+c) + a(b^2+c^2) + (b^3 + R c^3) + 2abc), c = c0 - eta */
+    {
+        double a = c->a_kdelta, b = c->b_kdelta;
+        dual cc = d_sub(d_const(c->c_kdelta0), eta);
+        dual den = d_mulc(d_mul(cc, d_addc(cc, b)), 3.0 * b);
+        den = d_add(den, d_mulc(d_addc(d_sq(cc), b * b), a));
+        den = d_add(den, d_addc(d_mulc(d_mul(cc, d_sq(cc)), c->R_kdelta), b * b * b));
+        den = d_add(den, d_mulc(cc, 2.0 * a * b));
+        s.k_delta = d_div(d_mulc(d_sq(s.L_delta), c->K_kdelta), den);
+    }
+    /* c_delta: constant fraction of critical damping (model-notes item 1) */
+    s.c_delta = d_mulc(d_sqrt(d_mul(s.I_delta, s.k_delta)), c->zeta_delta);
+    return s;
+}
+
+/* Orientation and points of the gear for given (psi, delta, beta, eta). */
+typedef struct {
+    dvec u_psi, u_delta, u_eta, u_a, u_lambda, u_f, u_r;
+    dvec P_0, P_beta, P_wheel[2];         /* P_delta is the origin; wheel [0]=L, [1]=R */
+    dual cos_phi;                         /* H1 cos b + H2 sin b + H3 */
+    dual dcos_phi;                        /* d cos(phi)/d beta = -H1 sin b + H2 cos b */
+    dual d2cos_phi;                       /* d2 cos(phi)/d beta2 = -H1 cos b - H2 sin b */
+} pose;
+
+static inline dvec unit_horizontal(dual x, dual y)
+{
+    dual n = d_sqrt(d_add(d_sq(x), d_sq(y)));
+    return v_make(d_div(x, n), d_div(y, n), d_const(0.0));
+}
+
+static inline pose pose_at(const model_parameters *mp, const sidestay *g,
+                           const strut_geometry *s, dual psi, dual delta, dual beta)
+{
+    const mlg_params *c = mp->c;
+    pose q;
+    dual psi_s = d_add(psi, d_mul(beta, g->sin_p));               /* psi_s = psi + beta sin p */
+    dmat R_b = m_rotation(g->u_beta, beta);
+    dmat R_bd = m_mul(R_b, m_rotation(g->u_delta0, delta));
+    dmat R_bdp = m_mul(R_bd, m_rotation(g->u_psi0, psi_s));
+    q.u_delta = m_apply(R_b, g->u_delta0);
+    q.u_psi = m_apply(R_bd, g->u_psi0);
+    q.u_eta = m_apply(R_b, g->u_psi0);
+    q.u_a = m_apply(R_bdp, v_const(0.0, 1.0, 0.0));
+    q.u_lambda = unit_horizontal(q.u_a.c[0], q.u_a.c[1]);
+    q.u_f = unit_horizontal(q.u_a.c[1], d_neg(q.u_a.c[0]));
+    /* u_r = R(u_f, -pi/2) u_a = u_a x u_f, exactly, since u_f is normal to u_a */
+    q.u_r = v_cross(q.u_a, q.u_f);
+    q.P_0 = m_apply(R_bd, m_apply(g->R0, v_make(d_const(0), d_const(0), d_neg(s->L_delta))));
+    q.P_beta = m_apply(R_b, m_apply(g->R0, v_make(d_const(0), d_const(0),
+                                                   d_sub(s->L_beta, s->L_delta))));
+    for (int i = 0; i < 2; i++) {
+        double side = i == 0 ? c->a : -c->a;
+        q.P_wheel[i] = m_apply(R_bdp, m_apply(g->R0, v_make(d_const(-c->e), d_const(side),
+                                                            d_neg(s->L_delta))));
+    }
+    dual cb = d_cos(beta), sb = d_sin(beta);
+    q.cos_phi = d_add(d_add(d_mul(g->H1, cb), d_mul(g->H2, sb)), g->H3);
+    q.dcos_phi = d_add(d_neg(d_mul(g->H1, sb)), d_mul(g->H2, cb));
+    q.d2cos_phi = d_neg(d_add(d_mul(g->H1, cb), d_mul(g->H2, sb)));
+    return q;
+}
+
+#endif

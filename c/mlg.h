@@ -1,0 +1,105 @@
+/* mlg-shimmy model library: public interface.
+ *
+ * The dual-wheel main landing gear of Howcroft, Lowenberg, Neild and
+ * Krauskopf, "Effects of freeplay on the dynamic stability of an aircraft
+ * main landing gear" (sections II-III), as a first-order vector field
+ * u' = f(u; p) with 10 states, its exact Jacobians, the straight-rolling
+ * equilibrium and parameter validation.  Plain C11; no AUTO dependency.
+ */
+#ifndef MLG_H
+#define MLG_H
+
+#include <stddef.h>
+#include "parameters.h"
+
+/* State vector, in this order (SI units: rad, m, rad/s, m/s). */
+enum mlg_state_index {
+    MLG_PSI, MLG_DELTA, MLG_BETA, MLG_ETA,
+    MLG_PSI_DOT, MLG_DELTA_DOT, MLG_BETA_DOT, MLG_ETA_DOT,
+    MLG_LAMBDA_L, MLG_LAMBDA_R,
+    MLG_NX
+};
+
+/* Continuation parameters: MLG_PAR_<name> is the 0-based index, so the
+ * AUTO parameter is PAR(MLG_PAR_<name> + 1), i.e. par[MLG_PAR_<name>] in C. */
+enum mlg_par_index {
+#define X(name, value, unit, doc) MLG_PAR_##name,
+    MLG_CONTINUATION_PARAMETERS(X)
+#undef X
+    MLG_NPAR
+};
+
+/* Derivative columns of mlg_rhs_jacobian: the states, then PAR(1..MLG_NPAR). */
+enum { MLG_NDIR = MLG_NX + MLG_NPAR };
+
+typedef struct {
+#define X(name, value, unit, doc) double name;
+    MLG_CONTINUATION_PARAMETERS(X)
+    MLG_CONSTANTS(X)
+#undef X
+} mlg_params;
+
+/* Status bits of an evaluation: the state lies outside the model's domain. */
+enum mlg_status {
+    MLG_OK = 0,
+    MLG_ETA_OUT_OF_STROKE = 1,   /* eta <= 0 or eta >= z_tlk0: strut beyond its stroke */
+    MLG_WHEEL_LIFT_OFF = 2,      /* a tyre load F_i < 0 (negative tyre deflection) */
+    MLG_TYRE_BOTTOMED = 4,       /* tyre deflection d_i >= 2 r */
+    MLG_NOT_FINITE = 8           /* a state component is NaN or infinite */
+};
+
+/* ---- parameter sets (parameters.c) ---- */
+mlg_params mlg_params_table(void);    /* the paper as printed (Table 1 etc.) */
+mlg_params mlg_params_figures(void);  /* as `table`, c_psi calibrated (docs/model.md) */
+extern const double MLG_C_PSI_FIGURES;
+
+/* Look-ups by name; return NULL / -1 for an unknown name. */
+double *mlg_param_ref(mlg_params *p, const char *name);
+int mlg_par_index(const char *name);               /* 0-based, or -1 */
+const char *mlg_par_name(int index);               /* NULL if out of range */
+void mlg_params_set_par(mlg_params *p, const double *par);   /* par[0..MLG_NPAR-1] */
+void mlg_params_get_par(const mlg_params *p, double *par);
+
+/* 0 if physically meaningful; otherwise nonzero, with a message naming the
+ * offending parameter written to msg (if msg != NULL). */
+int mlg_params_check(const mlg_params *p, char *msg, size_t msg_size);
+/* Text for a status value returned by the evaluations. */
+const char *mlg_status_text(int status);
+
+/* ---- vector field (vector_field_value.c, vector_field_jacobian.c) ---- */
+/* f = du/dt.  Returns an mlg_status (0 = OK).  f is filled in either case
+ * but is meaningless unless the status is 0. */
+int mlg_rhs(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX]);
+
+/* f, dfdu (column-major, dfdu[i + MLG_NX*j] = df_i/du_j) and, if dfdp is not
+ * NULL, dfdp[i + MLG_NX*k] = df_i/dPAR(k+1) in PAR units (y_fp in mm ...). */
+int mlg_rhs_jacobian(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX],
+                     double dfdu[MLG_NX * MLG_NX], double dfdp[MLG_NX * MLG_NPAR]);
+
+/* Intermediate quantities of one evaluation, for tests and reports. */
+typedef struct {
+    double F_z, F_dyn, cos_phi, F_keta, F_ceta;
+    double L_beta, L_delta, I_a, I_beta, I_delta, k_delta, c_delta, r_tlk;
+    double F[2], d[2], h[2], L[2], r_eff[2], alpha[2], F_y[2], M_z[2];  /* [0]=L, [1]=R */
+    double M_kpsi, M_cpsi, M_psi, M_delta, M_beta;
+    double m, p;                                   /* side-stay angles (Fig. 3) */
+} mlg_diagnostics;
+int mlg_diagnose(const mlg_params *p, const double u[MLG_NX], mlg_diagnostics *out);
+
+/* ---- freeplay, in plain doubles for plots and boundaries (freeplay_value.c) ---- */
+double mlg_r_tlk(const mlg_params *p, double eta);                 /* m */
+/* Torque-link moment divided by r_tlk, i.e. force [N], for deflection y_tlk [m]:
+ * eq. (15) if eps_m > 0, the non-smooth eq. (14) if eps_m == 0. */
+double mlg_torque_link_force(double k_tlk, double y_tlk, double yfp_m, double eps_m);
+/* epsilon in metres for the parameters in force: (eps_abs + eps_rel y_fp) mm */
+double mlg_epsilon_m(const mlg_params *p);
+
+/* ---- straight-rolling equilibrium (equilibrium.c) ---- */
+/* Newton on f(u) = 0 from psi = delta = lambda = rates = 0 and the axial
+ * static balance.  eta_guess <= 0 picks the smallest-eta root of the static
+ * axial balance (the branch reached by loading from F* = 0).  Returns 0 on
+ * convergence, else an mlg_status bit or -1 (no convergence) with u holding
+ * the last iterate. */
+int mlg_equilibrium(const mlg_params *p, double eta_guess, double u[MLG_NX]);
+
+#endif

@@ -1,0 +1,158 @@
+/* Parameter sets, look-up by name and validation. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "mlg.h"
+
+/* c_psi of the `figures` set: the value that puts the zero-freeplay Hopf
+ * point at F* = 1 at the paper's V = 346.1 m/s (docs/model.md, "c_psi"). */
+const double MLG_C_PSI_FIGURES = 724.0;
+
+mlg_params mlg_params_table(void)
+{
+    mlg_params p = {
+#define X(name, value, unit, doc) .name = (value),
+        MLG_CONTINUATION_PARAMETERS(X)
+        MLG_CONSTANTS(X)
+#undef X
+    };
+    return p;
+}
+
+mlg_params mlg_params_figures(void)
+{
+    mlg_params p = mlg_params_table();
+    p.c_psi = MLG_C_PSI_FIGURES;
+    return p;
+}
+
+static const char *const par_names[MLG_NPAR] = {
+#define X(name, value, unit, doc) #name,
+    MLG_CONTINUATION_PARAMETERS(X)
+#undef X
+};
+
+double *mlg_param_ref(mlg_params *p, const char *name)
+{
+#define X(field, value, unit, doc) if (strcmp(name, #field) == 0) return &p->field;
+    MLG_CONTINUATION_PARAMETERS(X)
+    MLG_CONSTANTS(X)
+#undef X
+    return NULL;
+}
+
+int mlg_par_index(const char *name)
+{
+    for (int k = 0; k < MLG_NPAR; k++)
+        if (strcmp(name, par_names[k]) == 0) return k;
+    return -1;
+}
+
+const char *mlg_par_name(int index)
+{
+    return index >= 0 && index < MLG_NPAR ? par_names[index] : NULL;
+}
+
+void mlg_params_set_par(mlg_params *p, const double *par)
+{
+#define X(name, value, unit, doc) p->name = par[MLG_PAR_##name];
+    MLG_CONTINUATION_PARAMETERS(X)
+#undef X
+}
+
+void mlg_params_get_par(const mlg_params *p, double *par)
+{
+#define X(name, value, unit, doc) par[MLG_PAR_##name] = p->name;
+    MLG_CONTINUATION_PARAMETERS(X)
+#undef X
+}
+
+double mlg_epsilon_m(const mlg_params *p)
+{
+    return 1e-3 * (p->eps_abs + p->eps_rel * p->yfp);
+}
+
+static int reject(char *msg, size_t n, const char *fmt, ...)
+{
+    if (msg != NULL && n > 0) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(msg, n, fmt, ap);
+        va_end(ap);
+    }
+    return 1;
+}
+
+int mlg_params_check(const mlg_params *p, char *msg, size_t n)
+{
+    /* every value finite */
+#define X(name, value, unit, doc)                                               \
+    if (!isfinite(p->name))                                                     \
+        return reject(msg, n, "parameter %s is not finite (%g)", #name, p->name);
+    MLG_CONTINUATION_PARAMETERS(X)
+    MLG_CONSTANTS(X)
+#undef X
+    if (p->V < 0.0)
+        return reject(msg, n, "parameter V = %g m/s: forward velocity must be >= 0", p->V);
+    if (p->Fstar < 0.0)
+        return reject(msg, n, "parameter Fstar = %g: the load F* must be >= 0", p->Fstar);
+    if (p->yfp < 0.0)
+        return reject(msg, n, "parameter yfp = %g mm: freeplay must be >= 0", p->yfp);
+    if (p->eps_abs < 0.0)
+        return reject(msg, n, "parameter eps_abs = %g mm: smoothing must be >= 0", p->eps_abs);
+    if (p->eps_rel < 0.0)
+        return reject(msg, n, "parameter eps_rel = %g: smoothing must be >= 0", p->eps_rel);
+    if (p->yfp > 0.0 && !(mlg_epsilon_m(p) > 0.0))
+        return reject(msg, n,
+                      "parameter eps_abs/eps_rel: smoothing epsilon = %g mm must be > 0 "
+                      "when yfp = %g mm > 0 (eq. 15 needs epsilon > 0)",
+                      p->eps_abs + p->eps_rel * p->yfp, p->yfp);
+    if (p->c_psi < 0.0)
+        return reject(msg, n, "parameter c_psi = %g N m s/rad: damping must be >= 0", p->c_psi);
+    if (!(p->k_tlk > 0.0))
+        return reject(msg, n, "parameter k_tlk = %g N/m: stiffness must be > 0", p->k_tlk);
+    if (fabs(p->rho) >= 0.5 * MLG_PI)
+        return reject(msg, n, "parameter rho = %g rad: side-stay inclination must lie in "
+                      "(-pi/2, pi/2)", p->rho);
+    if (fabs(p->mu) >= 0.5 * MLG_PI)
+        return reject(msg, n, "parameter mu = %g rad: side-stay orientation must lie in "
+                      "(-pi/2, pi/2)", p->mu);
+    {
+        /* sin p (model-notes 13); |p| -> pi/2 makes I_beta = 0 (degenerate) */
+        double sp = sin(p->rho) * cos(p->phi0) - cos(p->rho) * sin(p->mu) * sin(p->phi0);
+        if (fabs(sp) > 0.99)
+            return reject(msg, n, "parameters rho = %g, mu = %g rad: side-stay angle p = %g "
+                          "rad makes the gear geometry degenerate (cos p ~ 0)",
+                          p->rho, p->mu, asin(fmax(-1.0, fmin(1.0, sp))));
+    }
+    if (p->strut_variant != 0.0 && p->strut_variant != 1.0)
+        return reject(msg, n, "parameter strut_variant = %g must be 0 (monotone) or 1 "
+                      "(as printed)", p->strut_variant);
+    {
+        const char *positive[] = {"a", "l_tlk", "r", "M", "I_psi", "I", "k_beta",
+                                  "g_0", "m_0", "a_d", "b_d"};
+        mlg_params copy = *p;
+        for (size_t k = 0; k < sizeof positive / sizeof positive[0]; k++) {
+            double v = *mlg_param_ref(&copy, positive[k]);
+            if (!(v > 0.0))
+                return reject(msg, n, "parameter %s = %g must be > 0", positive[k], v);
+        }
+    }
+    if (!(p->phi0 > -0.5 * MLG_PI && p->phi0 < 0.5 * MLG_PI))
+        return reject(msg, n, "parameter phi0 = %g rad: rake angle must lie in (-pi/2, pi/2)",
+                      p->phi0);
+    if (msg != NULL && n > 0) msg[0] = '\0';
+    return 0;
+}
+
+const char *mlg_status_text(int status)
+{
+    if (status == MLG_OK) return "ok";
+    if (status & MLG_NOT_FINITE) return "state is not finite";
+    if (status & MLG_ETA_OUT_OF_STROKE) return "strut compression eta outside (0, z_tlk0)";
+    if (status & MLG_WHEEL_LIFT_OFF) return "a wheel lifts off (negative tyre load)";
+    if (status & MLG_TYRE_BOTTOMED) return "tyre deflection exceeds the tyre diameter";
+    return "unknown status";
+}

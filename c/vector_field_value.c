@@ -1,0 +1,40 @@
+/* The vector field in plain doubles (the model of vector_field.h, DUAL_N = 0). */
+#define DUAL_N 0
+#include "vector_field.h"
+
+static void load_state(const double u[MLG_NX], dual x[MLG_NX])
+{
+    for (int i = 0; i < MLG_NX; i++) x[i] = d_const(u[i]);
+}
+
+int mlg_rhs(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX])
+{
+    dual x[MLG_NX], fx[MLG_NX];
+    load_state(u, x);
+    int status = vector_field(p, x, fx, NULL);
+    for (int i = 0; i < MLG_NX; i++) f[i] = fx[i].v;
+    return status;
+}
+
+int mlg_diagnose(const mlg_params *p, const double u[MLG_NX], mlg_diagnostics *out)
+{
+    dual x[MLG_NX], fx[MLG_NX];
+    load_state(u, x);
+    return vector_field(p, x, fx, out);
+}
+
+double mlg_r_tlk(const mlg_params *p, double eta)
+{
+    return torque_link_radius(p, d_const(p->z_tlk0 - eta)).v;
+}
+
+double mlg_torque_link_force(double k_tlk, double y_tlk, double yfp_m, double eps_m)
+{
+    if (eps_m > 0.0)
+        return torque_link_force(d_const(k_tlk), d_const(y_tlk), d_const(yfp_m),
+                                 d_const(eps_m)).v;
+    /* eq. (14) */
+    if (y_tlk < -yfp_m) return k_tlk * (y_tlk + yfp_m);
+    if (y_tlk > yfp_m) return k_tlk * (y_tlk - yfp_m);
+    return 0.0;
+}

@@ -1,0 +1,62 @@
+/* Benchmark (not a test): cost of one evaluation of f, of f + df/du, and of
+ * f + df/du + df/dp, at representative states; ratios from the same run. */
+#define _POSIX_C_SOURCE 199309L
+#include <stdio.h>
+#include <time.h>
+
+#include "mlg.h"
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+enum { NSTATES = 16 };
+static mlg_params params;
+static double states[NSTATES][MLG_NX];
+static volatile double sink;
+
+static double time_per_call(int kind)
+{
+    double f[MLG_NX], J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
+    long calls = 0;
+    double start = now(), elapsed;
+    do {
+        for (int r = 0; r < 1000; r++, calls++) {
+            const double *u = states[calls % NSTATES];
+            if (kind == 0) mlg_rhs(&params, u, f);
+            else mlg_rhs_jacobian(&params, u, f, J, kind == 2 ? P : NULL);
+            sink += f[MLG_PSI_DOT];
+        }
+        elapsed = now() - start;
+    } while (elapsed < 1.0);
+    return elapsed / calls;
+}
+
+int main(void)
+{
+    params = mlg_params_figures();
+    params.V = 100.0;
+    params.yfp = 1.0;
+    params.eps_rel = 0.1;
+    double u[MLG_NX];
+    mlg_equilibrium(&params, -1.0, u);
+    for (int k = 0; k < NSTATES; k++) {      /* around straight rolling, inside and outside the freeplay */
+        for (int i = 0; i < MLG_NX; i++) states[k][i] = u[i];
+        states[k][MLG_PSI] = (k - NSTATES / 2) * 3e-4;
+        states[k][MLG_DELTA] = 1e-3 * (k % 3 - 1);
+        states[k][MLG_PSI_DOT] = 0.1 * (k % 5 - 2);
+        states[k][MLG_LAMBDA_L] = 1e-3 * (k % 4 - 1.5);
+        states[k][MLG_LAMBDA_R] = -1e-3 * (k % 4 - 1.5);
+    }
+    double t_f = time_per_call(0), t_fj = time_per_call(1), t_fjp = time_per_call(2);
+    printf("bench_vector_field: F* = 1, V = 100 m/s, y_fp = 1 mm, %d states\n", NSTATES);
+    printf("  f                  %8.3f us\n", 1e6 * t_f);
+    printf("  f + df/du          %8.3f us   (%.1f x f)\n", 1e6 * t_fj, t_fj / t_f);
+    printf("  f + df/du + df/dp  %8.3f us   (%.1f x f)\n", 1e6 * t_fjp, t_fjp / t_f);
+    printf("  finite-difference df/du would cost %d f-evaluations (%.1f x f with one-sided steps)\n",
+           MLG_NX + 1, (double)(MLG_NX + 1));
+    return 0;
+}

@@ -1,0 +1,99 @@
+/* Parameter validation, look-up by name, and the domain status of evaluations. */
+#include <string.h>
+
+#include "mlg.h"
+#include "unit.h"
+
+static void expect_rejected(const char *name, mlg_params p, const char *needle)
+{
+    char msg[256];
+    int bad = mlg_params_check(&p, msg, sizeof msg);
+    check(bad && strstr(msg, needle) != NULL, name, "message \"%s\" (expected to contain \"%s\")",
+          msg, needle);
+}
+
+int main(void)
+{
+    char msg[256];
+    mlg_params table = mlg_params_table(), figures = mlg_params_figures();
+    check(mlg_params_check(&table, msg, sizeof msg) == 0, "table_set_valid", "%s", msg);
+    check(mlg_params_check(&figures, msg, sizeof msg) == 0, "figures_set_valid", "%s", msg);
+    check(table.c_psi == 410.0 && figures.c_psi == MLG_C_PSI_FIGURES, "named_sets_c_psi",
+          "table %.1f, figures %.3f", table.c_psi, figures.c_psi);
+
+    mlg_params p = table;
+    p.yfp = -0.5;
+    expect_rejected("negative_freeplay", p, "parameter yfp = -0.5 mm");
+    p = table;
+    p.yfp = 1.0;
+    p.eps_abs = 0.0;
+    p.eps_rel = 0.0;
+    expect_rejected("zero_smoothing_with_freeplay", p, "eps_abs/eps_rel");
+    p = table;
+    p.Fstar = -0.1;
+    expect_rejected("negative_load", p, "parameter Fstar = -0.1");
+    p = table;
+    p.V = NAN;
+    expect_rejected("nan_velocity", p, "parameter V is not finite");
+    p = table;
+    p.k_beta = INFINITY;
+    expect_rejected("infinite_constant", p, "parameter k_beta is not finite");
+    p = table;
+    p.rho = 2.0;
+    expect_rejected("rho_out_of_range", p, "parameter rho = 2");
+    p = table;
+    p.mu = -1.6;
+    expect_rejected("mu_out_of_range", p, "parameter mu = -1.6");
+    p = table;
+    p.rho = 1.5;
+    expect_rejected("degenerate_side_stay", p, "degenerate");
+    p = table;
+    p.strut_variant = 0.5;
+    expect_rejected("strut_variant_not_a_switch", p, "parameter strut_variant = 0.5");
+    p = table;
+    p.c_psi = -1.0;
+    expect_rejected("negative_damping", p, "parameter c_psi = -1");
+    p = table;
+    p.yfp = 0.0;
+    p.eps_abs = 0.0;
+    p.eps_rel = 0.0;
+    check(mlg_params_check(&p, msg, sizeof msg) == 0, "zero_freeplay_zero_smoothing_valid",
+          "%s", msg);
+
+    /* names and PAR indices */
+    check(mlg_par_index("V") == 0 && mlg_par_index("Fstar") == 1 && mlg_par_index("yfp") == 2,
+          "par_indices", "V %d, Fstar %d, yfp %d", mlg_par_index("V"), mlg_par_index("Fstar"),
+          mlg_par_index("yfp"));
+    check(mlg_par_index("nonsense") == -1 && mlg_param_ref(&p, "nonsense") == NULL,
+          "unknown_names", "unknown names give -1 / NULL");
+    double *k = mlg_param_ref(&p, "k_tlk"), *ad = mlg_param_ref(&p, "a_d");
+    check(k == &p.k_tlk && ad == &p.a_d && *ad == 4.221e-4, "param_ref_by_name",
+          "k_tlk and a_d reachable by name");
+    double par[MLG_NPAR];
+    p = table;
+    p.c_psi = 555.0;
+    mlg_params_get_par(&p, par);
+    check(par[MLG_PAR_c_psi] == 555.0 && strcmp(mlg_par_name(MLG_PAR_c_psi), "c_psi") == 0,
+          "par_round_trip", "PAR(%d) = %g", MLG_PAR_c_psi + 1, par[MLG_PAR_c_psi]);
+
+    /* states outside the model's domain give a status, never NaN */
+    double u[MLG_NX], f[MLG_NX], J[MLG_NX * MLG_NX];
+    p = table;
+    mlg_equilibrium(&p, -1.0, u);
+    u[MLG_ETA] = -0.01;
+    int st = mlg_rhs(&p, u, f);
+    int finite = 1;
+    for (int i = 0; i < MLG_NX; i++) finite &= isfinite(f[i]);
+    check(st == MLG_ETA_OUT_OF_STROKE && finite, "eta_nonpositive_flagged", "status %d (%s)", st,
+          mlg_status_text(st));
+    mlg_equilibrium(&p, -1.0, u);
+    u[MLG_ETA_DOT] = -4.0;     /* the damper unloads the gear: F_dyn < 0 */
+    st = mlg_rhs_jacobian(&p, u, f, J, NULL);
+    check(st == MLG_WHEEL_LIFT_OFF, "wheel_lift_off_flagged", "status %d (%s)", st,
+          mlg_status_text(st));
+    mlg_equilibrium(&p, -1.0, u);
+    u[MLG_PSI] = NAN;
+    st = mlg_rhs(&p, u, f);
+    check(st == MLG_NOT_FINITE, "nan_state_flagged", "status %d (%s)", st, mlg_status_text(st));
+    return unit_exit();
+}

@@ -1,0 +1,66 @@
+/* Mirror symmetry of the gear for rho = mu = 0: with S the reflection Y -> -Y
+ * (psi, delta, their rates and the tyre deflections change sign, left and
+ * right tyres swap), f(S u) = S f(u). */
+#include "mlg.h"
+#include "unit.h"
+
+static void reflect(const double *u, double *v)
+{
+    for (int i = 0; i < MLG_NX; i++) v[i] = u[i];
+    v[MLG_PSI] = -u[MLG_PSI];
+    v[MLG_DELTA] = -u[MLG_DELTA];
+    v[MLG_PSI_DOT] = -u[MLG_PSI_DOT];
+    v[MLG_DELTA_DOT] = -u[MLG_DELTA_DOT];
+    v[MLG_LAMBDA_L] = -u[MLG_LAMBDA_R];
+    v[MLG_LAMBDA_R] = -u[MLG_LAMBDA_L];
+}
+
+int main(void)
+{
+    double worst = 0.0;
+    int n_ok = 0;
+    for (int n = 0; n < 500; n++) {
+        mlg_params p = mlg_params_table();
+        p.Fstar = unit_between(0.1, 3.5);
+        p.V = unit_between(0.0, 600.0);
+        p.yfp = n % 2 ? 1.0 : 0.0;
+        p.eps_rel = 0.1;
+        double u[MLG_NX], su[MLG_NX], f[MLG_NX], fs[MLG_NX], sf[MLG_NX];
+        mlg_equilibrium(&p, -1.0, u);
+        u[MLG_PSI] = unit_between(-0.01, 0.01);
+        u[MLG_DELTA] = unit_between(-0.01, 0.01);
+        u[MLG_BETA] += unit_between(-0.002, 0.002);
+        u[MLG_ETA] += unit_between(-0.01, 0.01);
+        u[MLG_PSI_DOT] = unit_between(-1.0, 1.0);
+        u[MLG_DELTA_DOT] = unit_between(-0.5, 0.5);
+        u[MLG_BETA_DOT] = unit_between(-0.2, 0.2);
+        u[MLG_ETA_DOT] = unit_between(-0.1, 0.1);
+        u[MLG_LAMBDA_L] = unit_between(-0.02, 0.02);
+        u[MLG_LAMBDA_R] = unit_between(-0.02, 0.02);
+        reflect(u, su);
+        if (mlg_rhs(&p, u, f) != MLG_OK || mlg_rhs(&p, su, fs) != MLG_OK) continue;
+        reflect(f, sf);
+        for (int i = 0; i < MLG_NX; i++)
+            worst = fmax(worst, fabs(fs[i] - sf[i]) / (fabs(f[i]) + 1e-8));
+        n_ok++;
+    }
+    check(n_ok >= 450, "symmetry_samples", "%d states evaluated", n_ok);
+    check(worst <= 1e-9, "mirror_symmetry", "max |f(Su) - S f(u)| / |f(u)| = %.2e", worst);
+
+    /* with a side-stay angle the symmetry is broken (guards against a vacuous test) */
+    mlg_params p = mlg_params_table();
+    p.rho = 0.1;
+    p.mu = 0.2;
+    double u[MLG_NX], su[MLG_NX], f[MLG_NX], fs[MLG_NX], sf[MLG_NX];
+    mlg_equilibrium(&p, -1.0, u);
+    u[MLG_PSI] = 0.003;
+    u[MLG_DELTA_DOT] = 0.1;
+    reflect(u, su);
+    mlg_rhs(&p, u, f);
+    mlg_rhs(&p, su, fs);
+    reflect(f, sf);
+    double broken = 0.0;
+    for (int i = 0; i < MLG_NX; i++) broken = fmax(broken, fabs(fs[i] - sf[i]) / (fabs(f[i]) + 1e-8));
+    check(broken > 1e-3, "side_stay_breaks_symmetry", "relative asymmetry %.2e", broken);
+    return unit_exit();
+}
