@@ -46,6 +46,8 @@ all: test
 
 include mk/auto.mk
 -include c/c.mk
+-include c/simulate/simulate.mk
+-include models/models.mk
 
 setup: packages auto
 

@@ -31,3 +31,9 @@ $(MLG_BENCH): tests/bench/bench_vector_field.c $(MLG_LIB)
 	$(CC) $(MLG_CFLAGS) $< $(MLG_LIB) -lm -o $@
 
 BENCH_PROGRAMS += $(MLG_BENCH)
+
+# Shared library for the Python drivers (drivers/mlgmodel.py, via ctypes).
+MLG_SHARED := build/lib/libmlg.so
+$(MLG_SHARED): $(MLG_OBJECTS)
+	@mkdir -p $(@D)
+	$(CC) -shared $^ -lm -o $@

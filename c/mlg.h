@@ -54,6 +54,8 @@ mlg_params mlg_params_figures(void);  /* as `table`, c_psi calibrated (docs/mode
 extern const double MLG_C_PSI_FIGURES;
 
 /* Look-ups by name; return NULL / -1 for an unknown name. */
+int mlg_params_field_count(void);                  /* doubles in mlg_params */
+const char *mlg_state_name(int index);             /* "psi", ...; NULL if out of range */
 double *mlg_param_ref(mlg_params *p, const char *name);
 int mlg_par_index(const char *name);               /* 0-based, or -1 */
 const char *mlg_par_name(int index);               /* NULL if out of range */

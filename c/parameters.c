@@ -34,6 +34,19 @@ static const char *const par_names[MLG_NPAR] = {
 #undef X
 };
 
+int mlg_params_field_count(void)
+{
+    return (int)(sizeof(mlg_params) / sizeof(double));
+}
+
+const char *mlg_state_name(int index)
+{
+    static const char *const names[MLG_NX] = {"psi", "delta", "beta", "eta", "psi_dot",
+                                              "delta_dot", "beta_dot", "eta_dot", "lambda_L",
+                                              "lambda_R"};
+    return index >= 0 && index < MLG_NX ? names[index] : NULL;
+}
+
 double *mlg_param_ref(mlg_params *p, const char *name)
 {
 #define X(field, value, unit, doc) if (strcmp(name, #field) == 0) return &p->field;

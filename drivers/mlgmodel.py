@@ -1,0 +1,111 @@
+"""The c/ model library from Python, through ctypes (build/lib/libmlg.so).
+
+Used by the drivers for what AUTO does not do: validating parameters before
+a run, the straight-rolling equilibrium that starts a run at given
+parameters (AUTO applies the constants' PAR after STPNT), and plain
+evaluations such as the torque-link profiles and the freeplay boundary.
+
+    m = Model("figures", Fstar=0.2, V=300)
+    m.check()                      # ValueError naming a bad parameter
+    u = m.equilibrium()            # {"psi": 0.0, ..., "eta": 0.27, ...}
+"""
+import ctypes
+import os
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+LIBRARY = os.path.join(ROOT, "build", "lib", "libmlg.so")
+if not os.path.exists(LIBRARY):
+    raise SystemExit(f"mlgmodel: {LIBRARY} is missing (make build/lib/libmlg.so)")
+_lib = ctypes.CDLL(LIBRARY)
+
+
+class _Params(ctypes.Structure):
+    _fields_ = [("values", ctypes.c_double * _lib.mlg_params_field_count())]
+
+
+_P = ctypes.POINTER(_Params)
+_D = ctypes.POINTER(ctypes.c_double)
+_lib.mlg_params_table.restype = _Params
+_lib.mlg_params_figures.restype = _Params
+_lib.mlg_param_ref.restype = _D
+_lib.mlg_param_ref.argtypes = [_P, ctypes.c_char_p]
+_lib.mlg_par_name.restype = ctypes.c_char_p
+_lib.mlg_state_name.restype = ctypes.c_char_p
+_lib.mlg_params_check.argtypes = [_P, ctypes.c_char_p, ctypes.c_size_t]
+_lib.mlg_status_text.restype = ctypes.c_char_p
+_lib.mlg_equilibrium.argtypes = [_P, ctypes.c_double, _D]
+_lib.mlg_r_tlk.restype = ctypes.c_double
+_lib.mlg_r_tlk.argtypes = [_P, ctypes.c_double]
+_lib.mlg_epsilon_m.restype = ctypes.c_double
+_lib.mlg_epsilon_m.argtypes = [_P]
+_lib.mlg_torque_link_force.restype = ctypes.c_double
+_lib.mlg_torque_link_force.argtypes = [ctypes.c_double] * 4
+
+
+def _names(getter):
+    names, k = [], 0
+    while getter(k) is not None:
+        names.append(getter(k).decode())
+        k += 1
+    return names
+
+
+PARNAMES = _names(_lib.mlg_par_name)      # PARNAMES[k] is PAR(k+1)
+UNAMES = _names(_lib.mlg_state_name)      # UNAMES[i] is U(i+1)
+C_PSI_FIGURES = ctypes.c_double.in_dll(_lib, "MLG_C_PSI_FIGURES").value
+
+
+class Model:
+    """A parameter set of the c/ library: 'table' (the paper as printed) or
+    'figures' (c_psi calibrated), with any parameter or constant overridden
+    by name."""
+
+    def __init__(self, parameter_set="figures", **values):
+        if parameter_set not in ("table", "figures"):
+            raise ValueError(f"unknown parameter set {parameter_set!r}")
+        self._p = getattr(_lib, f"mlg_params_{parameter_set}")()
+        self.set(**values)
+
+    def _ref(self, name):
+        ref = _lib.mlg_param_ref(ctypes.byref(self._p), name.encode())
+        if not ref:
+            raise KeyError(f"no parameter or constant named {name!r}")
+        return ref
+
+    def __getitem__(self, name):
+        return self._ref(name)[0]
+
+    def set(self, **values):
+        for name, value in values.items():
+            self._ref(name)[0] = float(value)
+        return self
+
+    def par(self):
+        """The continuation parameters as {name: value}, in PAR order."""
+        return {name: self[name] for name in PARNAMES}
+
+    def check(self):
+        msg = ctypes.create_string_buffer(256)
+        if _lib.mlg_params_check(ctypes.byref(self._p), msg, len(msg)):
+            raise ValueError(msg.value.decode())
+
+    def equilibrium(self, eta_guess=-1.0):
+        """Straight rolling as {state name: value}; raises if not found."""
+        self.check()
+        u = (ctypes.c_double * len(UNAMES))()
+        status = _lib.mlg_equilibrium(ctypes.byref(self._p), eta_guess, u)
+        if status != 0:
+            why = "no convergence" if status < 0 else _lib.mlg_status_text(status).decode()
+            raise RuntimeError(f"straight-rolling equilibrium not found: {why}")
+        return dict(zip(UNAMES, u))
+
+    def r_tlk(self, eta):
+        return _lib.mlg_r_tlk(ctypes.byref(self._p), eta)
+
+    def epsilon_m(self):
+        return _lib.mlg_epsilon_m(ctypes.byref(self._p))
+
+
+def torque_link_force(k_tlk, y_tlk, yfp_m, eps_m):
+    """Eq. (15) (eps_m > 0) or eq. (14) (eps_m == 0): force [N] at y_tlk [m]."""
+    return _lib.mlg_torque_link_force(k_tlk, y_tlk, yfp_m, eps_m)
