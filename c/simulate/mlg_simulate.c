@@ -1,0 +1,394 @@
+/* mlg_simulate: time simulation of the MLG model with SUNDIALS CVODE.
+ *
+ * Integrates u' = f(u; p) (c/mlg.h) from the straight-rolling equilibrium
+ * plus a small perturbation, as in Fig. 8 of Howcroft et al. (section IV.A:
+ * V = 300 m/s, F* = 0.2, zero freeplay, 15 s from near the unstable
+ * equilibrium).  BDF with Newton iterations and a dense linear solver fed by
+ * the exact Jacobian mlg_rhs_jacobian.  Writes the samples as CSV and prints
+ * solver statistics and the settled oscillation over the last second.
+ *
+ * Any evaluation outside the model's domain (nonzero mlg_status) stops the
+ * run with an error message and exit status 1.
+ */
+#define _POSIX_C_SOURCE 199309L
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include "mlg.h"
+
+static const char *const STATE_NAMES[MLG_NX] = {
+    "psi", "delta", "beta", "eta", "psi_dot", "delta_dot", "beta_dot", "eta_dot",
+    "lambda_L", "lambda_R"};
+
+/* Settings from the command line. */
+typedef struct {
+    mlg_params p;
+    double t_end, dt_out, rtol, atol, psi0, delta0;
+    const char *out;
+} options;
+
+/* Data passed to the CVODE callbacks: the parameters and the first failure. */
+typedef struct {
+    const mlg_params *p;
+    int status;                 /* first nonzero mlg_status met, else 0 */
+    double u_bad[MLG_NX];       /* the state where it was met */
+} model;
+
+static void usage(FILE *stream)
+{
+    fprintf(stream,
+        "usage: mlg_simulate [options]\n"
+        "  --set figures|table   parameter set (default figures); give it first,\n"
+        "                        the options below override its values\n"
+        "  --V X                 forward velocity [m/s] (default 300)\n"
+        "  --Fstar X             dimensionless load F* (default 0.2)\n"
+        "  --yfp X               torque-link freeplay [mm] (default 0)\n"
+        "  --eps-abs X           smoothing epsilon, absolute part [mm]\n"
+        "  --eps-rel X           smoothing epsilon, part proportional to yfp\n"
+        "  --c-psi X             torsional damping [N m s/rad]\n"
+        "  --strut-variant 0|1   F_keta stage order (0 monotone, 1 as printed)\n"
+        "  --t-end X             final time [s] (default 15)\n"
+        "  --dt-out X            output interval [s] (default 1e-3)\n"
+        "  --rtol X, --atol X    CVODE tolerances (default 1e-8, 1e-10)\n"
+        "  --psi0 X              perturbation of psi added to the equilibrium [rad]\n"
+        "                        (default 1e-3)\n"
+        "  --delta0 X            perturbation of delta [rad] (default 0)\n"
+        "  --out FILE            CSV output (default: none)\n");
+}
+
+static double parse_number(const char *option, const char *text)
+{
+    char *end;
+    errno = 0;
+    double value = strtod(text, &end);
+    if (errno != 0 || end == text || *end != '\0') {
+        fprintf(stderr, "mlg_simulate: %s needs a number, got '%s'\n", option, text);
+        exit(2);
+    }
+    return value;
+}
+
+static options parse_options(int argc, char **argv)
+{
+    options o = {.t_end = 15.0, .dt_out = 1e-3, .rtol = 1e-8, .atol = 1e-10,
+                 .psi0 = 1e-3, .delta0 = 0.0, .out = NULL};
+    o.p = mlg_params_figures();
+    o.p.V = 300.0;
+    o.p.Fstar = 0.2;
+
+    for (int k = 1; k < argc; k++) {
+        const char *opt = argv[k];
+        if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0) {
+            usage(stdout);
+            exit(0);
+        }
+        if (k + 1 >= argc) {
+            fprintf(stderr, "mlg_simulate: %s needs a value\n", opt);
+            usage(stderr);
+            exit(2);
+        }
+        const char *arg = argv[++k];
+        if (strcmp(opt, "--set") == 0) {
+            double V = o.p.V, Fstar = o.p.Fstar;
+            if (strcmp(arg, "figures") == 0)
+                o.p = mlg_params_figures();
+            else if (strcmp(arg, "table") == 0)
+                o.p = mlg_params_table();
+            else {
+                fprintf(stderr, "mlg_simulate: --set must be figures or table, got '%s'\n", arg);
+                exit(2);
+            }
+            o.p.V = V;
+            o.p.Fstar = Fstar;
+        }
+        else if (strcmp(opt, "--V") == 0) o.p.V = parse_number(opt, arg);
+        else if (strcmp(opt, "--Fstar") == 0) o.p.Fstar = parse_number(opt, arg);
+        else if (strcmp(opt, "--yfp") == 0) o.p.yfp = parse_number(opt, arg);
+        else if (strcmp(opt, "--eps-abs") == 0) o.p.eps_abs = parse_number(opt, arg);
+        else if (strcmp(opt, "--eps-rel") == 0) o.p.eps_rel = parse_number(opt, arg);
+        else if (strcmp(opt, "--c-psi") == 0) o.p.c_psi = parse_number(opt, arg);
+        else if (strcmp(opt, "--strut-variant") == 0) o.p.strut_variant = parse_number(opt, arg);
+        else if (strcmp(opt, "--t-end") == 0) o.t_end = parse_number(opt, arg);
+        else if (strcmp(opt, "--dt-out") == 0) o.dt_out = parse_number(opt, arg);
+        else if (strcmp(opt, "--rtol") == 0) o.rtol = parse_number(opt, arg);
+        else if (strcmp(opt, "--atol") == 0) o.atol = parse_number(opt, arg);
+        else if (strcmp(opt, "--psi0") == 0) o.psi0 = parse_number(opt, arg);
+        else if (strcmp(opt, "--delta0") == 0) o.delta0 = parse_number(opt, arg);
+        else if (strcmp(opt, "--out") == 0) o.out = arg;
+        else {
+            fprintf(stderr, "mlg_simulate: unknown option %s\n", opt);
+            usage(stderr);
+            exit(2);
+        }
+    }
+
+    char msg[256];
+    if (mlg_params_check(&o.p, msg, sizeof msg) != 0) {
+        fprintf(stderr, "mlg_simulate: %s\n", msg);
+        exit(2);
+    }
+    if (!(o.t_end > 0.0) || !(o.dt_out > 0.0) || !(o.rtol > 0.0) || !(o.atol > 0.0)
+        || !isfinite(o.t_end) || !isfinite(o.psi0) || !isfinite(o.delta0)) {
+        fprintf(stderr, "mlg_simulate: t-end, dt-out, rtol and atol must be > 0, "
+                        "psi0 and delta0 finite\n");
+        exit(2);
+    }
+    return o;
+}
+
+/* CVODE right-hand side; a state outside the model's domain is fatal (-1). */
+static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *data)
+{
+    (void)t;
+    model *m = data;
+    const double *u = N_VGetArrayPointer(y);
+    int status = mlg_rhs(m->p, u, N_VGetArrayPointer(ydot));
+    if (status != MLG_OK) {
+        m->status = status;
+        memcpy(m->u_bad, u, sizeof m->u_bad);
+        return -1;
+    }
+    return 0;
+}
+
+/* CVODE Jacobian: the exact df/du, column-major like SUNDenseMatrix. */
+static int jacobian(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *data,
+                    N_Vector tmp1, N_Vector tmp2, N_Vector tmp3)
+{
+    (void)t; (void)fy; (void)tmp1; (void)tmp2; (void)tmp3;
+    model *m = data;
+    const double *u = N_VGetArrayPointer(y);
+    double f[MLG_NX], dfdu[MLG_NX * MLG_NX];
+    int status = mlg_rhs_jacobian(m->p, u, f, dfdu, NULL);
+    if (status != MLG_OK) {
+        m->status = status;
+        memcpy(m->u_bad, u, sizeof m->u_bad);
+        return -1;
+    }
+    for (int j = 0; j < MLG_NX; j++)
+        memcpy(SM_COLUMN_D(J, j), dfdu + MLG_NX * j, MLG_NX * sizeof(double));
+    return 0;
+}
+
+static void check_flag(int flag, const char *call)
+{
+    if (flag < 0) {
+        fprintf(stderr, "mlg_simulate: %s failed: %s\n", call, CVodeGetReturnFlagName(flag));
+        exit(1);
+    }
+}
+
+/* Samples of the last second, for the settled-oscillation summary. */
+typedef struct {
+    size_t n, cap;
+    double *t, *u;              /* u[MLG_NX * k + i] */
+} tail;
+
+static void tail_add(tail *s, double t, const double *u)
+{
+    if (s->n == s->cap) {
+        s->cap = s->cap ? 2 * s->cap : 1024;
+        s->t = realloc(s->t, s->cap * sizeof *s->t);
+        s->u = realloc(s->u, s->cap * MLG_NX * sizeof *s->u);
+        if (s->t == NULL || s->u == NULL) {
+            fprintf(stderr, "mlg_simulate: out of memory\n");
+            exit(1);
+        }
+    }
+    s->t[s->n] = t;
+    memcpy(s->u + MLG_NX * s->n, u, MLG_NX * sizeof *u);
+    s->n++;
+}
+
+/* Mean and half peak-to-peak of one state over the samples.  While the
+ * amplitude still grows the mean drifts (beta and eta in Fig. 8), and the
+ * half peak-to-peak includes that drift. */
+typedef struct {
+    double mean, amplitude;
+} oscillation;
+
+static oscillation tail_oscillation(const tail *s, int i)
+{
+    double lo = INFINITY, hi = -INFINITY, sum = 0.0;
+    for (size_t k = 0; k < s->n; k++) {
+        double v = s->u[MLG_NX * k + i];
+        lo = fmin(lo, v);
+        hi = fmax(hi, v);
+        sum += v;
+    }
+    return (oscillation){sum / (double)s->n, 0.5 * (hi - lo)};
+}
+
+/* Frequency from the upward zero crossings of psi - mean (linear
+ * interpolation between samples); 0 if fewer than two crossings. */
+static double tail_frequency(const tail *s, double psi_mean)
+{
+    double first = 0.0, last = 0.0;
+    int crossings = 0;
+    for (size_t k = 1; k < s->n; k++) {
+        double a = s->u[MLG_NX * (k - 1) + MLG_PSI] - psi_mean;
+        double b = s->u[MLG_NX * k + MLG_PSI] - psi_mean;
+        if (a < 0.0 && b >= 0.0) {
+            double tc = s->t[k - 1] + (s->t[k] - s->t[k - 1]) * a / (a - b);
+            if (crossings == 0)
+                first = tc;
+            last = tc;
+            crossings++;
+        }
+    }
+    return crossings >= 2 ? (crossings - 1) / (last - first) : 0.0;
+}
+
+static double seconds_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static void write_row(FILE *csv, double t, const double *u)
+{
+    fprintf(csv, "%.9g", t);
+    for (int i = 0; i < MLG_NX; i++)
+        fprintf(csv, ",%.12e", u[i]);
+    fputc('\n', csv);
+}
+
+int main(int argc, char **argv)
+{
+    options o = parse_options(argc, argv);
+
+    double u0[MLG_NX];
+    int eq = mlg_equilibrium(&o.p, 0.0, u0);
+    if (eq != 0) {
+        fprintf(stderr, "mlg_simulate: no straight-rolling equilibrium at V = %g, F* = %g "
+                        "(code %d: %s)\n", o.p.V, o.p.Fstar, eq,
+                eq > 0 ? mlg_status_text(eq) : "Newton did not converge");
+        return 1;
+    }
+    printf("equilibrium_beta_rad %.10e\nequilibrium_eta_m %.10e\n", u0[MLG_BETA], u0[MLG_ETA]);
+    u0[MLG_PSI] += o.psi0;
+    u0[MLG_DELTA] += o.delta0;
+
+    FILE *csv = NULL;
+    if (o.out != NULL) {
+        csv = fopen(o.out, "w");
+        if (csv == NULL) {
+            fprintf(stderr, "mlg_simulate: cannot write %s: %s\n", o.out, strerror(errno));
+            return 1;
+        }
+        fputs("t", csv);
+        for (int i = 0; i < MLG_NX; i++)
+            fprintf(csv, ",%s", STATE_NAMES[i]);
+        fputc('\n', csv);
+        write_row(csv, 0.0, u0);
+    }
+
+    model m = {.p = &o.p, .status = MLG_OK};
+    SUNContext ctx;
+    if (SUNContext_Create(NULL, &ctx) != 0) {
+        fprintf(stderr, "mlg_simulate: SUNContext_Create failed\n");
+        return 1;
+    }
+    N_Vector y = N_VNew_Serial(MLG_NX, ctx);
+    memcpy(N_VGetArrayPointer(y), u0, sizeof u0);
+    SUNMatrix J = SUNDenseMatrix(MLG_NX, MLG_NX, ctx);
+    SUNLinearSolver LS = SUNLinSol_Dense(y, J, ctx);
+    void *cvode = CVodeCreate(CV_BDF, ctx);   /* default nonlinear solver: Newton */
+    if (y == NULL || J == NULL || LS == NULL || cvode == NULL) {
+        fprintf(stderr, "mlg_simulate: cannot create the CVODE solver\n");
+        return 1;
+    }
+    check_flag(CVodeInit(cvode, rhs, 0.0, y), "CVodeInit");
+    check_flag(CVodeSStolerances(cvode, o.rtol, o.atol), "CVodeSStolerances");
+    check_flag(CVodeSetUserData(cvode, &m), "CVodeSetUserData");
+    check_flag(CVodeSetLinearSolver(cvode, LS, J), "CVodeSetLinearSolver");
+    check_flag(CVodeSetJacFn(cvode, jacobian), "CVodeSetJacFn");
+    check_flag(CVodeSetMaxNumSteps(cvode, 1000000), "CVodeSetMaxNumSteps");
+    check_flag(CVodeSetStopTime(cvode, o.t_end), "CVodeSetStopTime");
+
+    tail settled = {0};
+    double t_tail = fmax(0.0, o.t_end - 1.0);
+    if (t_tail == 0.0)
+        tail_add(&settled, 0.0, u0);
+
+    double start = seconds_now();
+    long n_out = (long)ceil(o.t_end / o.dt_out - 1e-9);
+    for (long k = 1; k <= n_out; k++) {
+        double t_want = fmin(k * o.dt_out, o.t_end), t;
+        int flag = CVode(cvode, t_want, y, &t, CV_NORMAL);
+        if (flag < 0) {
+            if (m.status != MLG_OK) {
+                fprintf(stderr, "mlg_simulate: model evaluation failed near t = %.6g s: %s\n",
+                        t, mlg_status_text(m.status));
+                fprintf(stderr, "  state:");
+                for (int i = 0; i < MLG_NX; i++)
+                    fprintf(stderr, " %s=%.6g", STATE_NAMES[i], m.u_bad[i]);
+                fputc('\n', stderr);
+            } else {
+                fprintf(stderr, "mlg_simulate: CVode failed at t = %.6g s: %s\n",
+                        t, CVodeGetReturnFlagName(flag));
+            }
+            if (csv != NULL)
+                fclose(csv);
+            return 1;
+        }
+        const double *u = N_VGetArrayPointer(y);
+        if (csv != NULL)
+            write_row(csv, t, u);
+        if (t >= t_tail - 1e-12)
+            tail_add(&settled, t, u);
+    }
+    double wall = seconds_now() - start;
+    if (csv != NULL && fclose(csv) != 0) {
+        fprintf(stderr, "mlg_simulate: error writing %s\n", o.out);
+        return 1;
+    }
+
+    long steps, rhs_evals, jac_evals, ls_rhs_evals, setups, err_fails, conv_fails;
+    CVodeGetNumSteps(cvode, &steps);
+    CVodeGetNumRhsEvals(cvode, &rhs_evals);
+    CVodeGetNumJacEvals(cvode, &jac_evals);
+    CVodeGetNumLinRhsEvals(cvode, &ls_rhs_evals);
+    CVodeGetNumLinSolvSetups(cvode, &setups);
+    CVodeGetNumErrTestFails(cvode, &err_fails);
+    CVodeGetNumNonlinSolvConvFails(cvode, &conv_fails);
+
+    oscillation osc[MLG_ETA + 1];
+    for (int i = MLG_PSI; i <= MLG_ETA; i++)
+        osc[i] = tail_oscillation(&settled, i);
+
+    /* key value lines, read by drivers/fig08.py and tests/test_simulate.py */
+    printf("V %.10g\nFstar %.10g\nyfp %.10g\nc_psi %.10g\n", o.p.V, o.p.Fstar, o.p.yfp, o.p.c_psi);
+    printf("t_end %.10g\n", o.t_end);
+    printf("steps %ld\nrhs_evals %ld\njac_evals %ld\nfd_rhs_evals %ld\n",
+           steps, rhs_evals, jac_evals, ls_rhs_evals);
+    printf("lin_setups %ld\nerr_test_fails %ld\nnonlin_conv_fails %ld\n",
+           setups, err_fails, conv_fails);
+    printf("wall_time_s %.6f\n", wall);
+    printf("window_start_s %.10g\nwindow_samples %zu\n", t_tail, settled.n);
+    for (int i = MLG_PSI; i <= MLG_ETA; i++) {
+        const char *unit = i == MLG_ETA ? "m" : "rad";
+        printf("%s_mean_%s %.10e\n", STATE_NAMES[i], unit, osc[i].mean);
+        printf("%s_amplitude_%s %.10e\n", STATE_NAMES[i], unit, osc[i].amplitude);
+    }
+    printf("frequency_hz %.8f\n", tail_frequency(&settled, osc[MLG_PSI].mean));
+
+    free(settled.t);
+    free(settled.u);
+    CVodeFree(&cvode);
+    SUNLinSolFree(LS);
+    SUNMatDestroy(J);
+    N_VDestroy(y);
+    SUNContext_Free(&ctx);
+    return 0;
+}
