@@ -48,6 +48,7 @@ include mk/auto.mk
 -include c/c.mk
 -include c/simulate/simulate.mk
 -include models/models.mk
+-include drivers/figures.mk
 
 setup: packages auto
 

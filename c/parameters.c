@@ -7,8 +7,9 @@
 #include "mlg.h"
 
 /* c_psi of the `figures` set: the value that puts the zero-freeplay Hopf
- * point at F* = 1 at the paper's V = 346.1 m/s (docs/model.md, "c_psi"). */
-const double MLG_C_PSI_FIGURES = 724.0;
+ * point at F* = 1 at the paper's V = 346.1 m/s, found by AUTO continuation of that
+ * Hopf point in (V, c_psi): `make calibrate` (drivers/calibrate_c_psi.py). */
+const double MLG_C_PSI_FIGURES = 724.0034;
 
 mlg_params mlg_params_table(void)
 {

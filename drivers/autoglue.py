@@ -89,6 +89,9 @@ def run(rundir, name, data=None, constants=None, expect=(), **kw):
             if os.path.exists(stale):
                 os.remove(stale)
         auto.run(data, sv=name, **kw)
+    except auto.AUTOExceptions.AUTORuntimeError as exc:
+        raise RunError(f"run {name} in {rundir}: AUTO stopped ({exc}); "
+                       "see the messages above") from exc
     finally:
         os.chdir(cwd)
     if not all(map(os.path.exists, outputs)):

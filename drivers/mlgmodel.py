@@ -52,6 +52,7 @@ def _names(getter):
 
 PARNAMES = _names(_lib.mlg_par_name)      # PARNAMES[k] is PAR(k+1)
 UNAMES = _names(_lib.mlg_state_name)      # UNAMES[i] is U(i+1)
+NX = len(UNAMES)
 C_PSI_FIGURES = ctypes.c_double.in_dll(_lib, "MLG_C_PSI_FIGURES").value
 
 

@@ -1,0 +1,128 @@
+"""Shared pieces of the MLG figure drivers: starting runs at given
+parameters, the standard continuations, and plotting branches by stability.
+
+    start = Start("figures", Fstar=1.0)        # parameters + equilibrium
+    eq = equilibria(rundir, "eq_F1", start)    # straight rolling in V
+    po = periodic_from(rundir, "po_F1", eq("HB1"), stop={"V": 600})
+"""
+import os
+
+import matplotlib
+import matplotlib.pyplot as plt
+import numpy
+
+import autoglue
+import mlgmodel
+
+ROOT = autoglue.ROOT
+MODEL = os.path.join(autoglue.BUILD, "models", "mlg")
+CONSTANTS = os.path.join(ROOT, "constants", "c.mlg")
+MEASURES = ["psi_amp", "delta_amp", "beta_mean", "beta_amp", "eta_mean", "eta_amp",
+            "freq", "psi_mean"]
+
+matplotlib.rcParams.update({"figure.dpi": 110, "savefig.dpi": 150, "font.size": 9,
+                            "axes.grid": True, "grid.alpha": 0.3})
+STABLE, UNSTABLE = "tab:green", "tab:red"
+
+
+class Start:
+    """Parameters of a run and the straight-rolling equilibrium there,
+    validated by the c/ library before AUTO starts."""
+
+    def __init__(self, parameter_set="figures", **values):
+        self.model = mlgmodel.Model(parameter_set, **values)
+        self.model.check()
+        self.U = self.model.equilibrium()
+        self.PAR = self.model.par()
+
+
+def run(rundir, name, **kw):
+    """autoglue.run on the MLG model with the base constants."""
+    return autoglue.run(rundir, name, constants=CONSTANTS, e=MODEL, **kw)
+
+
+def equilibria(rundir, name, start, parameter="V", stop=None, ds=1.0, dsmax=2.0,
+               expect=(), **kw):
+    """Straight rolling continued in `parameter` from `start`.  DSMAX is kept
+    small: AUTO's Hopf test function follows the eigenvalue nearest the
+    imaginary axis, and the lightly damped axial mode (Re ~ -0.016) hides the
+    torsional crossing unless a step lands within a few m/s of it."""
+    stop = stop or {}
+    return run(rundir, name, PAR=start.PAR, U=start.U, ICP=[parameter] + MEASURES,
+               DS=ds, DSMAX=dsmax, UZSTOP=stop, expect=expect, **kw)
+
+
+def periodic_from(rundir, name, point, parameter="V", stop=None, ds=0.5, dsmax=5.0,
+                  nmx=400, expect=(), **kw):
+    """The periodic orbits born at the Hopf point `point`, continued in `parameter`."""
+    return run(rundir, name, data=point, IPS=2, ISW=1, ICP=[parameter, 11] + MEASURES,
+               DS=ds, DSMAX=dsmax, NMX=nmx, UZSTOP=stop or {}, expect=expect, **kw)
+
+
+def stable_mask(branch):
+    """Per point: True where stable.  AUTO's stability() lists the last point
+    index of each run of equal stability, negative for stable runs."""
+    mask = numpy.zeros(len(branch), dtype=bool)
+    start = 0
+    for end in branch.stability():
+        mask[start:abs(end)] = end < 0
+        start = abs(end)
+    return mask
+
+
+def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), ds=0.02, dsmax=0.05,
+               stop=None, nmx=2000, **kw):
+    """Continue the Hopf point `point` in two parameters (ISW=2).  The
+    extended unknowns 11-22 (critical eigenvector, frequency) are left out of
+    the arclength: with them, steps in the parameters shrink to ~1e-5.  ISP=0:
+    the generalised-Hopf test function of 0.9.2 changes sign spuriously on
+    this curve, and locating each sign change stalls the run."""
+    extended = {i: 0.0 for i in range(mlgmodel.NX + 1, 2 * mlgmodel.NX + 3)}
+    return run(rundir, name, data=point, ISW=2, ISP=0, ICP=list(parameters) + MEASURES,
+               DS=ds, DSMAX=dsmax, NMX=nmx, THU=extended, UZSTOP=stop or {}, **kw)
+
+
+def segments(branch, x, y):
+    """Split one branch into runs of equal stability: [(xs, ys, stable), ...]."""
+    xs, ys = numpy.asarray(branch[x]), numpy.asarray(branch[y])
+    stable = stable_mask(branch)
+    out, start = [], 0
+    for i in range(1, len(xs) + 1):
+        if i == len(xs) or stable[i] != stable[start]:
+            # overlap one point so that the segments join
+            out.append((xs[start:i + 1], ys[start:i + 1], bool(stable[start])))
+            start = i
+    return out
+
+
+def plot_branch(ax, diagram, x, y, scale=1.0, label=None, **style):
+    """Every branch of a diagram: stable parts solid green, unstable dashed red
+    (or in `color`, keeping the line styles)."""
+    for branch in diagram:
+        for xs, ys, stable in segments(branch, x, y):
+            ax.plot(xs, ys * scale, color=style.get("color", STABLE if stable else UNSTABLE),
+                    linestyle="-" if stable else "--", lw=style.get("lw", 1.4), label=label)
+            label = None
+
+
+def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None):
+    """Mark and label the special points of one type (e.g. 'HB', 'LP')."""
+    for point in diagram(kind):
+        ax.plot(point[x], point[y] * scale, "ko", ms=3.5)
+        ax.annotate(text or kind[0], (point[x], point[y] * scale), textcoords="offset points",
+                    xytext=(3, 4), fontsize=8)
+
+
+def save(fig, name):
+    os.makedirs(autoglue.FIGURES_DIR, exist_ok=True)
+    paths = [os.path.join(autoglue.FIGURES_DIR, f"{name}.{ext}") for ext in ("png", "pdf")]
+    for path in paths:
+        fig.savefig(path, bbox_inches="tight")
+    plt.close(fig)
+    print(f"{name}: wrote " + ", ".join(os.path.relpath(p, ROOT) for p in paths))
+
+
+def rundir(name):
+    path = os.path.join(autoglue.BUILD, name)
+    os.makedirs(path, exist_ok=True)
+    return path

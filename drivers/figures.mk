@@ -1,0 +1,19 @@
+# Figure targets that run AUTO on the MLG model; included by ../Makefile.
+# Each driver computes its runs under build/<name>/ and writes
+# build/figures/<name>.png and .pdf; it exits non-zero on MX or a missing
+# special point, naming the run.
+AUTO_DRIVER_DEPS := $(MLG_MODEL).exe $(MLG_SHARED) | auto
+
+.PHONY: fig07 fig09 calibrate
+fig07: $(AUTO_DRIVER_DEPS)
+	$(PYTHON) drivers/fig07.py
+
+fig09: $(AUTO_DRIVER_DEPS)
+	$(PYTHON) drivers/fig09.py
+
+# The c_psi of the `figures` set (MLG_C_PSI_FIGURES in c/parameters.c).
+calibrate: $(AUTO_DRIVER_DEPS)
+	$(PYTHON) drivers/calibrate_c_psi.py
+
+FIGURES += fig07 fig09
+TEST_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
