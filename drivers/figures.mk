@@ -17,3 +17,5 @@ calibrate: $(AUTO_DRIVER_DEPS)
 
 FIGURES += fig07 fig09
 TEST_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
+TEST_PROGRAMS += tests/test_auto_plugin.py
+BENCH_PROGRAMS += tests/bench/bench_auto_jacobian.py

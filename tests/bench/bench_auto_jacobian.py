@@ -1,0 +1,34 @@
+"""Benchmark (not a test): wall time of one periodic-orbit continuation with
+the analytic Jacobian (JAC=1) and with AUTO's finite differences (JAC=0),
+the same run, one after the other; the ratio is printed."""
+import os
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "drivers"))
+import autoglue  # noqa: E402
+import diagrams as dg  # noqa: E402
+
+RUNDIR = os.path.join(autoglue.BUILD, "bench", "auto-jacobian")
+
+
+def main():
+    start = dg.Start("figures", Fstar=1.0, V=0.0)
+    eq = dg.equilibria(RUNDIR, "eq", start, stop={"V": 400.0}, expect=["HB"])
+    seconds, points = {}, {}
+    for jac in (1, 0):
+        begin = time.perf_counter()
+        po = dg.periodic_from(RUNDIR, f"po_jac{jac}", eq("HB1"), stop={"V": 500.0},
+                              expect=["UZ"], JAC=jac)
+        seconds[jac] = time.perf_counter() - begin
+        points[jac] = len(po[0])
+    print("bench_auto_jacobian: periodic orbits from the Hopf point at F* = 1 to V = 500 m/s "
+          "(NTST = 80, NCOL = 4)")
+    for jac in (1, 0):
+        print(f"  JAC={jac}: {seconds[jac]:7.2f} s, {points[jac]} points")
+    print(f"  ratio JAC=0 / JAC=1: {seconds[0] / seconds[1]:.2f}")
+
+
+if __name__ == "__main__":
+    main()
