@@ -14,13 +14,18 @@ static inline dual torque_link_radius(const mlg_params *c, dual z_tlk)
     return d_addc(d_mulc(d_sin(angle), c->l_tlk), c->a_tlk);
 }
 
-/* Lateral torque-link force k_tlk * g(y) [N] at apex deflection y [m]:
- * eq. (15) for eps > 0.  With zero freeplay eq. (14) and (15) both reduce to
- * k_tlk y, which is used when eps == 0 (only allowed with y_fp == 0). */
+/* Lateral torque-link force [N] at apex deflection y [m]: eq. (15) for
+ * eps > 0, the non-smooth eq. (14) for eps == 0 (its limit; with zero
+ * freeplay both are k_tlk y).  The vector field is only used with eps > 0
+ * or zero freeplay (mlg_params_check); eq. (14) also serves the plots. */
 static inline dual torque_link_force(dual k_tlk, dual y, dual yfp, dual eps)
 {
-    if (eps.v == 0.0) return d_mul(k_tlk, y);
     dual yp = d_add(y, yfp), ym = d_sub(y, yfp);
+    if (eps.v == 0.0) {
+        if (yp.v < 0.0) return d_mul(k_tlk, yp);
+        if (ym.v > 0.0) return d_mul(k_tlk, ym);
+        return d_const(0.0);
+    }
     dual t1 = d_mul(yp, d_addc(d_atan(d_neg(d_div(yp, eps))), 0.5 * MLG_PI));
     dual t2 = d_mul(ym, d_addc(d_atan(d_div(ym, eps)), 0.5 * MLG_PI));
     return d_mulc(d_mul(k_tlk, d_add(t1, t2)), 1.0 / MLG_PI);

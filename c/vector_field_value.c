@@ -30,11 +30,5 @@ double mlg_r_tlk(const mlg_params *p, double eta)
 
 double mlg_torque_link_force(double k_tlk, double y_tlk, double yfp_m, double eps_m)
 {
-    if (eps_m > 0.0)
-        return torque_link_force(d_const(k_tlk), d_const(y_tlk), d_const(yfp_m),
-                                 d_const(eps_m)).v;
-    /* eq. (14) */
-    if (y_tlk < -yfp_m) return k_tlk * (y_tlk + yfp_m);
-    if (y_tlk > yfp_m) return k_tlk * (y_tlk - yfp_m);
-    return 0.0;
+    return torque_link_force(d_const(k_tlk), d_const(y_tlk), d_const(yfp_m), d_const(eps_m)).v;
 }
