@@ -22,8 +22,9 @@ static inline dual torque_link_force(dual k_tlk, dual y, dual yfp, dual eps)
 {
     dual yp = d_add(y, yfp), ym = d_sub(y, yfp);
     if (eps.v == 0.0) {
-        if (yp.v < 0.0) return d_mul(k_tlk, yp);
-        if (ym.v > 0.0) return d_mul(k_tlk, ym);
+        /* closed contact sets: with zero freeplay y = 0 takes the slope k_tlk */
+        if (yp.v <= 0.0) return d_mul(k_tlk, yp);
+        if (ym.v >= 0.0) return d_mul(k_tlk, ym);
         return d_const(0.0);
     }
     dual t1 = d_mul(yp, d_addc(d_atan(d_neg(d_div(yp, eps))), 0.5 * MLG_PI));

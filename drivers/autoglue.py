@@ -64,11 +64,26 @@ def special_points(bd):
     return points
 
 
+def read_constants(paths):
+    """A constants file, or a list of them: each later file overrides the
+    constants it sets (read with AUTO's parseC; unset ones stay as they are)."""
+    if isinstance(paths, str):
+        paths = [paths]
+    merged = auto.parseC.parseC(os.path.abspath(paths[0]))
+    for path in paths[1:]:
+        override = auto.parseC.parseC(os.path.abspath(path))
+        for key in override:
+            if key != "new" and override[key] is not None:
+                merged[key] = override[key]
+    return merged
+
+
 def run(rundir, name, data=None, constants=None, expect=(), **kw):
     """Run AUTO in rundir, save to b./s./d.<name> there, and check the result.
 
-    constants: path of a constants file, read afresh for this run (every
-    constant it does not set takes AUTO's default); kw overrides single
+    constants: path of a constants file, or a list of files merged in order
+    (read_constants), read afresh for this run (every constant they do not
+    set takes AUTO's default); kw overrides single
     constants and may give e= (equations name; with a directory part it must
     name an executable prebuilt by the Makefile, see check_prebuilt).
     Raises RunError naming the run if any branch ends in MX or a special point
@@ -76,7 +91,7 @@ def run(rundir, name, data=None, constants=None, expect=(), **kw):
     """
     os.makedirs(rundir, exist_ok=True)
     if constants is not None:
-        kw["c"] = auto.parseC.parseC(os.path.abspath(constants))
+        kw["c"] = read_constants(constants)
     if os.sep in kw.get("e", ""):
         kw["e"] = os.path.abspath(kw["e"])
         check_prebuilt(kw["e"])

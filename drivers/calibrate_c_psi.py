@@ -15,8 +15,8 @@ def calibrate(where="calibration"):
     rundir = dg.rundir(where)
     start = dg.Start("table", Fstar=1.0, V=0.0)
     eq = dg.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
-    curve = dg.hopf_curve(rundir, "hopf_c_psi", eq("HB1"), parameters=("V", "c_psi"), ds=1.0,
-                          dsmax=5.0, stop={"V": V_PAPER}, expect=["UZ"], nmx=500)
+    curve = dg.hopf_curve(rundir, "hopf_c_psi", eq("HB1"), parameters=("V", "c_psi"), DS=1.0,
+                          DSMAX=5.0, stop={"V": V_PAPER}, expect=["UZ"], NMX=500)
     return eq("HB1")["V"], curve("UZ1")["c_psi"]
 
 

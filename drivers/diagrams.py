@@ -17,6 +17,7 @@ import mlgmodel
 ROOT = autoglue.ROOT
 MODEL = os.path.join(autoglue.BUILD, "models", "mlg")
 CONSTANTS = os.path.join(ROOT, "constants", "c.mlg")
+RUN_CONSTANTS = os.path.join(ROOT, "constants", "runs")
 MEASURES = ["psi_amp", "delta_amp", "beta_mean", "beta_amp", "eta_mean", "eta_amp",
             "freq", "psi_mean"]
 
@@ -36,27 +37,29 @@ class Start:
         self.PAR = self.model.par()
 
 
-def run(rundir, name, **kw):
-    """autoglue.run on the MLG model with the base constants."""
-    return autoglue.run(rundir, name, constants=CONSTANTS, e=MODEL, **kw)
+def run(rundir, name, kind=None, **kw):
+    """autoglue.run on the MLG model: the base constants, then the run-type
+    file constants/runs/c.<kind> if given, then the keyword overrides."""
+    files = [CONSTANTS] + ([os.path.join(RUN_CONSTANTS, f"c.{kind}")] if kind else [])
+    return autoglue.run(rundir, name, constants=files, e=MODEL, **kw)
 
 
-def equilibria(rundir, name, start, parameter="V", stop=None, ds=1.0, dsmax=2.0,
-               expect=(), **kw):
-    """Straight rolling continued in `parameter` from `start`.  DSMAX is kept
-    small: AUTO's Hopf test function follows the eigenvalue nearest the
-    imaginary axis, and the lightly damped axial mode (Re ~ -0.016) hides the
-    torsional crossing unless a step lands within a few m/s of it."""
-    stop = stop or {}
-    return run(rundir, name, PAR=start.PAR, U=start.U, ICP=[parameter] + MEASURES,
-               DS=ds, DSMAX=dsmax, UZSTOP=stop, expect=expect, **kw)
+def equilibria(rundir, name, start, parameter="V", stop=None, **kw):
+    """Straight rolling continued in `parameter` from `start`."""
+    return run(rundir, name, "equilibria", PAR=start.PAR, U=start.U,
+               ICP=[parameter] + MEASURES, UZSTOP=stop or {}, **kw)
 
 
-def periodic_from(rundir, name, point, parameter="V", stop=None, ds=0.5, dsmax=5.0,
-                  nmx=400, expect=(), **kw):
+def periodic_from(rundir, name, point, parameter="V", stop=None, **kw):
     """The periodic orbits born at the Hopf point `point`, continued in `parameter`."""
-    return run(rundir, name, data=point, IPS=2, ISW=1, ICP=[parameter, 11] + MEASURES,
-               DS=ds, DSMAX=dsmax, NMX=nmx, UZSTOP=stop or {}, expect=expect, **kw)
+    return run(rundir, name, "periodic", data=point, ICP=[parameter, 11] + MEASURES,
+               UZSTOP=stop or {}, **kw)
+
+
+def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, **kw):
+    """Continue the Hopf point `point` in two parameters."""
+    return run(rundir, name, "hopf_curve", data=point, ICP=list(parameters) + MEASURES,
+               UZSTOP=stop or {}, **kw)
 
 
 def stable_mask(branch):
@@ -68,18 +71,6 @@ def stable_mask(branch):
         mask[start:abs(end)] = end < 0
         start = abs(end)
     return mask
-
-
-def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), ds=0.02, dsmax=0.05,
-               stop=None, nmx=2000, **kw):
-    """Continue the Hopf point `point` in two parameters (ISW=2).  The
-    extended unknowns 11-22 (critical eigenvector, frequency) are left out of
-    the arclength: with them, steps in the parameters shrink to ~1e-5.  ISP=0:
-    the generalised-Hopf test function of 0.9.2 changes sign spuriously on
-    this curve, and locating each sign change stalls the run."""
-    extended = {i: 0.0 for i in range(mlgmodel.NX + 1, 2 * mlgmodel.NX + 3)}
-    return run(rundir, name, data=point, ISW=2, ISP=0, ICP=list(parameters) + MEASURES,
-               DS=ds, DSMAX=dsmax, NMX=nmx, THU=extended, UZSTOP=stop or {}, **kw)
 
 
 def segments(branch, x, y):

@@ -16,7 +16,7 @@ def compute(parameter_set="figures", where="fig09"):
     eq = dg.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
     curves = []
     for direction, ds in (("up", 0.01), ("down", -0.01)):
-        curves.append(dg.hopf_curve(rundir, f"hopf_{direction}", eq("HB1"), ds=ds,
+        curves.append(dg.hopf_curve(rundir, f"hopf_{direction}", eq("HB1"), DS=ds,
                                     stop={"Fstar": list(FSTAR_RANGE)},
                                     expect=["UZ"]))
     return eq, curves

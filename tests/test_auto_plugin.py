@@ -43,7 +43,7 @@ def hopf_and_jacobian_parity():
     for jac in (1, 0):
         po[jac] = dg.periodic_from(RUNDIR, f"po_jac{jac}", eq[jac]("HB1"), stop={"V": 370.0},
                                    UZR={"V": [355.0, 365.0]}, expect=["UZ"], JAC=jac,
-                                   nmx=200)
+                                   NMX=200)
     for label in ("UZ1", "UZ2"):
         a, b = po[1](label), po[0](label)
         for measure in ("V", "psi_amp", "delta_amp", "freq"):

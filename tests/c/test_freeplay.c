@@ -42,6 +42,24 @@ int main(void)
     check(odd <= 1e-9 * k * yfp, "eq15_odd", "max |F(y) + F(-y)| = %.3g N", odd);
     check(lin <= 1e-14, "zero_freeplay_linear", "max rel. deviation from k y = %.2e", lin);
 
+    /* zero freeplay: the Jacobian at straight rolling (y_tlk = 0 exactly) does
+     * not depend on whether epsilon is zero or not */
+    {
+        mlg_params p0 = mlg_params_table(), p1 = mlg_params_table();
+        p0.V = p1.V = 100.0;
+        p0.eps_abs = p0.eps_rel = 0.0;
+        p1.eps_abs = 0.1;
+        double u[MLG_NX], f0[MLG_NX], f1[MLG_NX], J0[MLG_NX * MLG_NX], J1[MLG_NX * MLG_NX];
+        mlg_equilibrium(&p0, -1.0, u);
+        mlg_rhs_jacobian(&p0, u, f0, J0, NULL);
+        mlg_rhs_jacobian(&p1, u, f1, J1, NULL);
+        double worst = 0.0;
+        for (int k = 0; k < MLG_NX * MLG_NX; k++)
+            worst = fmax(worst, fabs(J0[k] - J1[k]) / (fabs(J1[k]) + 1e-12));
+        check(worst <= 1e-12, "zero_freeplay_jacobian_eps_independent",
+              "max rel. difference %.2e between epsilon = 0 and 0.1 mm", worst);
+    }
+
     /* r_tlk: value at the F* = 1 equilibrium (model-notes 3), finite at z_tlk = 0 */
     mlg_params p = mlg_params_table();
     check_rel("r_tlk_eta_0.3982", mlg_r_tlk(&p, 0.398193), 0.47895, 5e-5);
