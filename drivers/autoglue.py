@@ -114,14 +114,20 @@ def run(rundir, name, data=None, constants=None, expect=(), **kw):
     # The diagram run() returns reads its files lazily, by relative path.
     bd = auto.bifDiag.bifDiag(*outputs)
 
+    check_diagram(bd, f"run {name} in {rundir}", expect)
+    return bd
+
+
+def check_diagram(bd, what, expect=()):
+    """Raise RunError about `what` if a branch of bd ends in MX or a special
+    point type listed in expect does not occur."""
     points = special_points(bd)
     mx = [(br, lab) for br, lab, ty in points if ty == "MX"]
     if mx:
-        raise RunError(f"run {name} in {rundir}: no convergence (MX) at "
+        raise RunError(f"{what}: no convergence (MX) at "
                        + ", ".join(f"branch {br} label {lab}" for br, lab in mx))
     found = {ty for _, _, ty in points}
     missing = [ty for ty in expect if ty not in found]
     if missing:
-        raise RunError(f"run {name} in {rundir}: expected special points "
-                       f"{missing} missing (found {sorted(found)})")
-    return bd
+        raise RunError(f"{what}: expected special points {missing} missing"
+                       f" (found {sorted(found)})")

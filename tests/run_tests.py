@@ -11,6 +11,7 @@ exit status is non-zero if anything failed.
 """
 import argparse
 import os
+import signal
 import subprocess
 import sys
 import time
@@ -21,14 +22,21 @@ def run_program(program, timeout):
     path = os.path.abspath(program)
     command = [sys.executable, path] if path.endswith(".py") else [path]
     print(f"=== {program}", flush=True)
+    # A session of its own, so that a timeout also ends what the program
+    # started (an AUTO executable that never stops, for instance).
     try:
-        proc = subprocess.run(command, stdout=subprocess.PIPE,
-                              stderr=subprocess.STDOUT, timeout=timeout)
-        output, status = proc.stdout, proc.returncode
-    except subprocess.TimeoutExpired as exc:
-        output, status = exc.stdout or b"", None
+        proc = subprocess.Popen(command, stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, start_new_session=True)
     except OSError as exc:
-        output, status = f"cannot run: {exc}\n".encode(), 127
+        print(f"not ok {program} - cannot run: {exc}")
+        return 0, 1
+    try:
+        output, _ = proc.communicate(timeout=timeout)
+        status = proc.returncode
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        output, _ = proc.communicate()
+        status = None
 
     passed = failed = 0
     for line in output.decode(errors="replace").splitlines():

@@ -20,6 +20,38 @@ RUNDIR = os.path.join(autoglue.BUILD, "tests", "smoke-run")
 HOPF = math.sqrt(2.0)
 
 
+def raises_run_error(func):
+    try:
+        func()
+    except autoglue.RunError as exc:
+        return str(exc)
+    return None
+
+
+def check_failure_detection(eq):
+    """autoglue flags MX points and missing special points."""
+    message = raises_run_error(lambda: autoglue.check_diagram(eq, "eq", ["LP"]))
+    check("autoglue: missing LP detected", message and "LP" in message,
+          f"RunError message: {message!r}")
+
+    # b.eq with the UZ point (label 3) retyped as MX (type -9).
+    lines = []
+    with open(os.path.join(RUNDIR, "b.eq")) as f:
+        for line in f:
+            fields = line.split()
+            if len(fields) > 4 and fields[0] != "0" and fields[3] == "3":
+                fields[2] = "-9"
+                line = " ".join(fields) + "\n"
+            lines.append(line)
+    doctored = os.path.join(RUNDIR, "b.eq-mx")
+    with open(doctored, "w") as f:
+        f.writelines(lines)
+    bd = autoglue.auto.bifDiag.bifDiag(doctored)
+    message = raises_run_error(lambda: autoglue.check_diagram(bd, "eq-mx"))
+    check("autoglue: MX detected", message and "MX" in message and
+          "label 3" in message, f"RunError message: {message!r}")
+
+
 def main():
     built = os.stat(MODEL + ".exe").st_mtime_ns
     try:
@@ -34,6 +66,7 @@ def main():
     check("AUTO used the Makefile-built executable",
           os.stat(MODEL + ".exe").st_mtime_ns == built,
           f"{MODEL}.exe was rebuilt by AUTO")
+    check_failure_detection(eq)
 
     try:
         po = autoglue.run(RUNDIR, "po", data=hb, constants=CONSTANTS, e=MODEL,
