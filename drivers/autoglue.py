@@ -15,7 +15,10 @@ import numpy
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.path.join(ROOT, "build")
-FIGURES_DIR = os.path.join(BUILD, "figures")
+# Run directories and figures go under MLG_RUN_ROOT (default build/); `make
+# regress` points it at build/regress/ so that build/<fig>/ stays as it was.
+RUN_ROOT = os.path.abspath(os.environ.get("MLG_RUN_ROOT", BUILD))
+FIGURES_DIR = os.path.join(RUN_ROOT, "figures")
 AUTO_DIR = os.environ.get("AUTO_DIR", os.path.join(BUILD, "auto", "07p"))
 
 if not os.path.isdir(os.path.join(AUTO_DIR, "python", "auto")):

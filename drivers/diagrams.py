@@ -114,6 +114,7 @@ def save(fig, name):
 
 
 def rundir(name):
-    path = os.path.join(autoglue.BUILD, name)
+    """$MLG_RUN_ROOT/<name> (default build/<name>), created if needed."""
+    path = os.path.join(autoglue.RUN_ROOT, name)
     os.makedirs(path, exist_ok=True)
     return path
