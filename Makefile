@@ -3,6 +3,8 @@
 #   make test      set up (Debian packages, AUTO-07p), build and run all tests
 #   make figures   set up and produce every registered figure in build/figures/
 #   make bench     set up and run the benchmark programs
+#   make regress   run every figure with a reference and compare (tests/regression/)
+#   make refs      regenerate the reference diagrams in tests/reference/
 #   make setup     only the set-up steps
 #   make clean     remove build/
 #
@@ -13,6 +15,9 @@
 #   TEST_DEPS       other files the tests need built first (e.g. model .exe)
 #   FIGURES         make targets (e.g. fig05) built by `make figures`
 #   BENCH_PROGRAMS  programs run by `make bench` (executables or .py scripts)
+#   REGRESS_FIGURES figure targets compared with tests/reference/<fig>/ by
+#                   `make regress` (tests/regression/regression.mk)
+#   REGRESS_QUICK   those of them `make test` also compares (fast ones)
 #
 # Settings (command line or environment):
 #   AUTO_DIR=<dir>  use an already built AUTO-07p instead of building one
@@ -40,6 +45,8 @@ TEST_PROGRAMS :=
 TEST_DEPS :=
 FIGURES :=
 BENCH_PROGRAMS :=
+REGRESS_FIGURES :=
+REGRESS_QUICK :=
 
 .PHONY: all setup packages auto test figures bench clean
 all: test
@@ -49,6 +56,7 @@ include mk/auto.mk
 -include c/simulate/simulate.mk
 -include models/models.mk
 -include drivers/figures.mk
+-include tests/regression/regression.mk
 
 setup: packages auto
 

@@ -1,7 +1,8 @@
 # Figure targets that run AUTO on the MLG model; included by ../Makefile.
 # Each driver computes its runs under build/<name>/ and writes
-# build/figures/<name>.png and .pdf; it exits non-zero on MX or a missing
-# special point, naming the run.
+# build/figures/<name>.png and .pdf (with MLG_RUN_ROOT=<dir> set: <dir>/<name>/
+# and <dir>/figures/); it exits non-zero on MX or a missing special point,
+# naming the run.
 AUTO_DRIVER_DEPS := $(MLG_MODEL).exe $(MLG_SHARED) | auto
 
 .PHONY: fig07 fig09 calibrate
@@ -16,6 +17,8 @@ calibrate: $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/calibrate_c_psi.py
 
 FIGURES += fig07 fig09
+REGRESS_FIGURES += fig07 fig09
+REGRESS_QUICK += fig07 fig09
 TEST_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
 TEST_PROGRAMS += tests/test_auto_plugin.py
 BENCH_PROGRAMS += tests/bench/bench_auto_jacobian.py
