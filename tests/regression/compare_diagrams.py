@@ -1,6 +1,6 @@
 """Compare AUTO-07p bifurcation diagrams (b-files) with stored references.
 
-    compare_diagrams.py REFERENCE_DIR RUN_DIR [--runs NAME ...] [--rtol R] [--atol A]
+    /usr/bin/python3 tests/regression/compare_diagrams.py REFERENCE_DIR RUN_DIR [--runs NAME ...] [--rtol R] [--atol A]
     compare_diagrams.py --figure FIG [RUN_DIR]
 
 Every b.<name> file of REFERENCE_DIR (or only the --runs names) is read with
