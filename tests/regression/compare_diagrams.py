@@ -1,7 +1,9 @@
 """Compare AUTO-07p bifurcation diagrams (b-files) with stored references.
 
-    /usr/bin/python3 tests/regression/compare_diagrams.py REFERENCE_DIR RUN_DIR [--runs NAME ...] [--rtol R] [--atol A]
+    compare_diagrams.py REFERENCE_DIR RUN_DIR [--runs NAME ...] [--rtol R] [--atol A]
     compare_diagrams.py --figure FIG [RUN_DIR]
+
+(run with /usr/bin/python3 or $PYTHON from the Makefile; AUTO_DIR as for the drivers)
 
 Every b.<name> file of REFERENCE_DIR (or only the --runs names) is read with
 AUTO's own reader (auto.parseB) and compared with b.<name> in RUN_DIR:
