@@ -123,8 +123,12 @@ def changed_sequence():
     result = compare(REFERENCE, changed)
     problem = " ".join(result.problems)
     check(f"special point {ty}{label} turned into UZ{label}: sequence mismatch reported",
-          len(result.problems) == 1 and f"UZ{label}]" in problem and f"{ty}{label}]" in problem
-          and not result.rows, problem or "no problem reported")
+          len(result.problems) == 1 and f"UZ{label}]" in problem and f"{ty}{label}]" in problem,
+          problem or "no problem reported")
+    check("... and the points before it still compared (and agree)",
+          result.points == len(cd.labelled_points(
+              cd.read_branches(os.path.join(REFERENCE, f"b.{RUN}"))[0])) - 1
+          and not result.rows, f"{result.points} points compared, rows {result.rows}")
 
 
 def file_errors():

@@ -43,13 +43,24 @@ def regress(figure):
               f"{len(result.problems)} structural, {len(result.rows)} values differ (table above)")
 
 
+def snapshot(directory):
+    """{path: (size, mtime)} of every file under directory."""
+    return {os.path.join(d, f): (os.stat(os.path.join(d, f)).st_size,
+                                 os.stat(os.path.join(d, f)).st_mtime_ns)
+            for d, _, files in os.walk(directory) for f in files}
+
+
 def main():
     figures = os.environ.get("REGRESS_QUICK", "").split()
     if not check("REGRESS_QUICK names the figures to compare (set by the Makefile)",
                  figures, "REGRESS_QUICK is empty or unset: run through `make test`"):
         return
+    before = snapshot(cd.REFERENCE_ROOT)
     for figure in figures:
         regress(figure)
+    after = snapshot(cd.REFERENCE_ROOT)
+    check("the regression runs left tests/reference/ untouched", before == after,
+          f"changed: {sorted(set(before.items()) ^ set(after.items()))}")
 
 
 if __name__ == "__main__":
