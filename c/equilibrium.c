@@ -39,6 +39,13 @@ static double smallest_axial_root(const mlg_params *p, double cos_phi)
     return -1.0;
 }
 
+static double residual_norm(const double f[MLG_NX])
+{
+    double sum = 0.0;
+    for (int i = 0; i < MLG_NX; i++) sum += f[i] * f[i];
+    return sqrt(sum);
+}
+
 int mlg_equilibrium(const mlg_params *p_in, double eta_guess, double u[MLG_NX])
 {
     /* The equilibrium does not depend on V (rates vanish, and V cancels from
@@ -54,24 +61,27 @@ int mlg_equilibrium(const mlg_params *p_in, double eta_guess, double u[MLG_NX])
     }
     u[MLG_ETA] = eta_guess;
 
+    /* Newton with backtracking on |f|: the oleo's stage switch is a step of
+     * width ~1/k_stage in eta, where full Newton steps overshoot. */
     double f[MLG_NX], J[MLG_NX * MLG_NX];
-    for (int it = 0; it < 60; it++) {
+    for (int it = 0; it < 100; it++) {
         int status = mlg_rhs_jacobian(&p, u, f, J, NULL);
         if (status != MLG_OK) return status;
         double step[MLG_NX];
         for (int i = 0; i < MLG_NX; i++) step[i] = -f[i];
         if (mlg_linear_solve(MLG_NX, J, step) != 0) return -1;
-        /* keep eta inside the stroke: halve the step until it is */
-        double scale = 1.0;
-        while (!(u[MLG_ETA] + scale * step[MLG_ETA] > 0.0 &&
-                 u[MLG_ETA] + scale * step[MLG_ETA] < p.z_tlk0) && scale > 1e-6)
-            scale *= 0.5;
-        double size = 0.0;
-        for (int i = 0; i < MLG_NX; i++) {
-            u[i] += scale * step[i];
-            size = fmax(size, fabs(scale * step[i]));
+        double norm = residual_norm(f), size = 0.0, trial[MLG_NX], f_trial[MLG_NX];
+        for (double scale = 1.0; scale > 1e-4; scale *= 0.5) {
+            for (int i = 0; i < MLG_NX; i++) trial[i] = u[i] + scale * step[i];
+            if (trial[MLG_ETA] > 0.0 && trial[MLG_ETA] < p.z_tlk0 &&
+                mlg_rhs(&p, trial, f_trial) == MLG_OK && residual_norm(f_trial) < norm)
+                break;
         }
-        if (size < 1e-13) return MLG_OK;
+        for (int i = 0; i < MLG_NX; i++) {
+            size = fmax(size, fabs(trial[i] - u[i]));
+            u[i] = trial[i];
+        }
+        if (size < 1e-13) return mlg_rhs(&p, u, f);
     }
     return -1;
 }

@@ -122,8 +122,12 @@ def run(rundir, name, data=None, constants=None, expect=(), **kw):
 
 
 def check_diagram(bd, what, expect=()):
-    """Raise RunError about `what` if a branch of bd ends in MX or a special
-    point type listed in expect does not occur."""
+    """Raise RunError about `what` if a branch of bd holds non-finite values,
+    ends in MX, or a special point type listed in expect does not occur."""
+    for branch in bd:
+        if not numpy.all(numpy.isfinite(branch.coordarray)):
+            raise RunError(f"{what}: non-finite values on branch {branch.BR} "
+                           "(AUTO continued past a rejected step)")
     points = special_points(bd)
     mx = [(br, lab) for br, lab, ty in points if ty == "MX"]
     if mx:

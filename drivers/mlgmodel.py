@@ -34,6 +34,7 @@ _lib.mlg_state_name.restype = ctypes.c_char_p
 _lib.mlg_params_check.argtypes = [_P, ctypes.c_char_p, ctypes.c_size_t]
 _lib.mlg_status_text.restype = ctypes.c_char_p
 _lib.mlg_equilibrium.argtypes = [_P, ctypes.c_double, _D]
+_lib.mlg_rhs_jacobian.argtypes = [_P, _D, _D, _D, _D]
 _lib.mlg_r_tlk.restype = ctypes.c_double
 _lib.mlg_r_tlk.argtypes = [_P, ctypes.c_double]
 _lib.mlg_epsilon_m.restype = ctypes.c_double
@@ -99,6 +100,19 @@ class Model:
             why = "no convergence" if status < 0 else _lib.mlg_status_text(status).decode()
             raise RuntimeError(f"straight-rolling equilibrium not found: {why}")
         return dict(zip(UNAMES, u))
+
+    def jacobian(self, u):
+        """df/du at the state u ({name: value} or a sequence in UNAMES order),
+        as a list of rows; raises if the state is outside the model's domain."""
+        if isinstance(u, dict):
+            u = [u[name] for name in UNAMES]
+        x = (ctypes.c_double * NX)(*u)
+        f = (ctypes.c_double * NX)()
+        J = (ctypes.c_double * (NX * NX))()   # column-major
+        status = _lib.mlg_rhs_jacobian(ctypes.byref(self._p), x, f, J, None)
+        if status != 0:
+            raise RuntimeError(f"jacobian: {_lib.mlg_status_text(status).decode()}")
+        return [[J[i + NX * j] for j in range(NX)] for i in range(NX)]
 
     def r_tlk(self, eta):
         return _lib.mlg_r_tlk(ctypes.byref(self._p), eta)

@@ -6,6 +6,7 @@
  * PAR(11): period (AUTO).  PAR(21..28): solution measures written by PVLS. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "auto_f2c.h"
 #include "mlg.h"
@@ -23,29 +24,17 @@ enum {
     PAR_PSI_MEAN         /* mean of psi [rad]: the yaw of off-centre equilibria */
 };
 
-/* Parameters in force; a parameter set that makes no physical sense stops
- * the run with a message naming the parameter. */
-static mlg_params parameters(const doublereal *par)
+/* Report a rejected evaluation once per kind, and answer it with a large
+ * residual so that AUTO's Newton iteration rejects the step (MX if it
+ * persists; the drivers report MX). */
+static void reject(const char *what, const char *detail, integer ndim, doublereal *f)
 {
-    mlg_params p = mlg_params_table();
-    char msg[256];
-    mlg_params_set_par(&p, par);
-    if (mlg_params_check(&p, msg, sizeof msg) != 0) {
-        fprintf(stderr, "mlg: invalid parameters: %s\n", msg);
-        exit(1);
-    }
-    return p;
-}
-
-/* A state outside the model's domain (wheel lift-off, strut out of stroke)
- * is reported once and answered with a large residual, so that AUTO's Newton
- * iteration rejects the step (MX if it persists; the drivers report MX). */
-static void out_of_domain(int status, integer ndim, doublereal *f)
-{
-    static int reported;
-    if (!reported) {
-        fprintf(stderr, "mlg: state outside the model's domain: %s\n", mlg_status_text(status));
-        reported = 1;
+    static char last[256];
+    char line[sizeof last];
+    snprintf(line, sizeof line, "mlg: %s: %s", what, detail);
+    if (strcmp(line, last) != 0) {
+        fprintf(stderr, "%s\n", line);
+        snprintf(last, sizeof last, "%s", line);
     }
     for (integer i = 0; i < ndim; i++) f[i] = 1e30;
 }
@@ -53,12 +42,20 @@ static void out_of_domain(int status, integer ndim, doublereal *f)
 int func(integer ndim, const doublereal *u, const integer *icp, const doublereal *par,
          integer ijac, doublereal *f, doublereal *dfdu, doublereal *dfdp)
 {
-    mlg_params p = parameters(par);
+    /* Drivers validate the starting parameters; a continuation step that
+     * leaves the physical range (V < 0, y_fp < 0, ...) is rejected here. */
+    mlg_params p = mlg_params_table();
+    char msg[200];
+    mlg_params_set_par(&p, par);
+    if (mlg_params_check(&p, msg, sizeof msg) != 0) {
+        reject("invalid parameters", msg, ndim, f);
+        return 0;
+    }
     double J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
     int status = ijac == 0 ? mlg_rhs(&p, u, f)
                            : mlg_rhs_jacobian(&p, u, f, J, ijac == 2 ? P : NULL);
     if (status != MLG_OK) {
-        out_of_domain(status, ndim, f);
+        reject("state outside the model's domain", mlg_status_text(status), ndim, f);
         return 0;
     }
     if (ijac == 0) return 0;

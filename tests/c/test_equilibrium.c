@@ -74,5 +74,24 @@ int main(void)
     for (int i = 0; i < MLG_NX; i++) res = fmax(res, fabs(f[i]));
     check(diff < 1e-12, "equilibrium_independent_of_V", "max |u(V=0) - u(V=450)| = %.2e", diff);
     check(res < 1e-8, "equilibrium_residual", "max |f(u*)| = %.2e", res);
+
+    /* Across the oleo's stage switch (eta near eta_stage, width 1/k_stage =
+     * 1e-5 m; F* about 0.62-0.70 with the monotone spring) full Newton steps
+     * overshoot: every load on a fine grid must converge, with f = 0. */
+    int failures = 0;
+    double worst = 0.0;
+    for (double Fstar = 0.02; Fstar <= 3.5; Fstar += 0.002) {
+        mlg_params q = mlg_params_figures();
+        q.Fstar = Fstar;
+        q.V = 50.0;
+        q.yfp = 1.0;
+        if (mlg_equilibrium(&q, -1.0, u) != MLG_OK || mlg_rhs(&q, u, f) != MLG_OK) {
+            failures++;
+            continue;
+        }
+        for (int i = 0; i < MLG_NX; i++) worst = fmax(worst, fabs(f[i]));
+    }
+    check(failures == 0 && worst < 1e-6, "equilibrium_across_stage_switch",
+          "%d of 1741 loads in [0.02, 3.5] failed; max |f(u*)| = %.2e", failures, worst);
     return unit_exit();
 }
