@@ -69,14 +69,17 @@ int mlg_equilibrium(const mlg_params *p_in, double eta_guess, double u[MLG_NX])
         if (status != MLG_OK) return status;
         double step[MLG_NX];
         for (int i = 0; i < MLG_NX; i++) step[i] = -f[i];
-        if (mlg_linear_solve(MLG_NX, J, step) != 0) return -1;
         double norm = residual_norm(f), size = 0.0, trial[MLG_NX], f_trial[MLG_NX];
-        for (double scale = 1.0; scale > 1e-4; scale *= 0.5) {
+        /* at a bifurcation point J is singular, and no step reduces a
+         * residual at rounding level: that is convergence */
+        if (mlg_linear_solve(MLG_NX, J, step) != 0) return norm < 1e-6 ? MLG_OK : -1;
+        int improved = 0;
+        for (double scale = 1.0; scale > 1e-4 && !improved; scale *= 0.5) {
             for (int i = 0; i < MLG_NX; i++) trial[i] = u[i] + scale * step[i];
-            if (trial[MLG_ETA] > 0.0 && trial[MLG_ETA] < p.z_tlk0 &&
-                mlg_rhs(&p, trial, f_trial) == MLG_OK && residual_norm(f_trial) < norm)
-                break;
+            improved = trial[MLG_ETA] > 0.0 && trial[MLG_ETA] < p.z_tlk0 &&
+                       mlg_rhs(&p, trial, f_trial) == MLG_OK && residual_norm(f_trial) < norm;
         }
+        if (!improved) return norm < 1e-6 ? MLG_OK : -1;
         for (int i = 0; i < MLG_NX; i++) {
             size = fmax(size, fabs(trial[i] - u[i]));
             u[i] = trial[i];

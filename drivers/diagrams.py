@@ -62,6 +62,57 @@ def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, **kw):
                UZSTOP=stop or {}, **kw)
 
 
+def stability_changes(parameter_set, parameter, grid, **values):
+    """Where straight rolling changes stability along `grid` of `parameter`,
+    from the eigenvalues of the exact Jacobian (c/ library), refined by
+    bisection: [(value, kind, omega)], kind "HB" (complex pair, omega its
+    imaginary part in rad/s) or "BP" (real eigenvalue).
+
+    AUTO's Hopf test function follows the eigenvalue nearest the imaginary
+    axis; on this model that is usually the lightly damped axial pair
+    (Re ~ -0.016), so AUTO misses a torsional crossing unless a step lands
+    within |Re| < 0.016 of it.  This scan finds every crossing; hopf_point()
+    then has AUTO locate it."""
+    def leading(value):
+        model = mlgmodel.Model(parameter_set, **{**values, parameter: value})
+        eig = numpy.linalg.eigvals(numpy.array(model.jacobian(model.equilibrium())))
+        return eig[numpy.argmax(eig.real)]
+
+    changes = []
+    previous, lead = grid[0], leading(grid[0])
+    for value in grid[1:]:
+        new = leading(value)
+        if (new.real > 0) != (lead.real > 0):
+            lo, hi, lead_lo = previous, value, lead
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                lead_mid = leading(mid)
+                if (lead_mid.real > 0) == (lead_lo.real > 0):
+                    lo, lead_lo = mid, lead_mid
+                else:
+                    hi = mid
+            at = leading(0.5 * (lo + hi))
+            kind = "HB" if abs(at.imag) > 1e-6 else "BP"
+            changes.append((0.5 * (lo + hi), kind, abs(at.imag)))
+        previous, lead = value, new
+    return changes
+
+
+def hopf_point(rundir, name, parameter_set, parameter, value, width=None, **values):
+    """AUTO's HB solution at the Hopf point near `value` (from
+    stability_changes): straight rolling continued through a narrow window
+    around it with steps small enough for AUTO's Hopf test."""
+    width = width or 0.01 * max(abs(value), 1.0)
+    start = Start(parameter_set, **{**values, parameter: value - width})
+    bd = equilibria(rundir, name, start, parameter, stop={parameter: value + width},
+                    DS=width / 100, DSMAX=width / 100, NMX=1000, expect=["HB"])
+    point = bd("HB1")
+    if abs(point[parameter] - value) > 1e-4 * max(abs(value), 1.0):
+        raise autoglue.RunError(f"run {name}: AUTO's HB at {parameter} = {point[parameter]:.6g}, "
+                                f"the eigenvalue scan's at {value:.6g}")
+    return point
+
+
 def stable_mask(branch):
     """Per point: True where stable.  AUTO's stability() lists the last point
     index of each run of equal stability, negative for stable runs."""
