@@ -62,6 +62,18 @@ def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, **kw):
                UZSTOP=stop or {}, **kw)
 
 
+def fold_curve(rundir, name, point, parameters=("V", "Fstar"), stop=None, **kw):
+    """Continue the fold of periodic orbits `point` (an LP label of an orbit
+    run) in two parameters.  AUTO 0.9.2 first only generates the extended
+    system's starting data (5 steps, ending in EP); the curve is continued
+    from there.  Listing the period (11) in ICP would freeze parameters[0]."""
+    icp = list(parameters) + MEASURES
+    first = run(rundir, f"{name}_start", "periodic", data=point, ISW=2, ICP=icp, DS=0.01,
+                DSMAX=0.05)
+    return run(rundir, name, "periodic", data=first("EP1"), ISW=2, ICP=icp,
+               UZSTOP=stop or {}, **kw)
+
+
 def stability_changes(parameter_set, parameter, grid, **values):
     """Where straight rolling changes stability along `grid` of `parameter`,
     from the eigenvalues of the exact Jacobian (c/ library), refined by
@@ -73,29 +85,33 @@ def stability_changes(parameter_set, parameter, grid, **values):
     (Re ~ -0.016), so AUTO misses a torsional crossing unless a step lands
     within |Re| < 0.016 of it.  This scan finds every crossing; hopf_point()
     then has AUTO locate it."""
-    def leading(value):
+    def unstable(value):
+        """(number of real, number of complex eigenvalues with Re > 0)."""
         model = mlgmodel.Model(parameter_set, **{**values, parameter: value})
         eig = numpy.linalg.eigvals(numpy.array(model.jacobian(model.equilibrium())))
-        return eig[numpy.argmax(eig.real)]
+        real = numpy.abs(eig.imag) <= 1e-9 * numpy.maximum(1.0, numpy.abs(eig.real))
+        return int(numpy.sum(real & (eig.real > 0))), int(numpy.sum(~real & (eig.real > 0))), eig
 
     changes = []
-    previous, lead = grid[0], leading(grid[0])
+    previous, counts = grid[0], unstable(grid[0])[:2]
     for value in grid[1:]:
-        new = leading(value)
-        if (new.real > 0) != (lead.real > 0):
-            lo, hi, lead_lo = previous, value, lead
+        new = unstable(value)[:2]
+        for kind, k in (("BP", 0), ("HB", 1)):
+            if new[k] == counts[k]:
+                continue
+            lo, hi = previous, value
             for _ in range(60):
                 mid = 0.5 * (lo + hi)
-                lead_mid = leading(mid)
-                if (lead_mid.real > 0) == (lead_lo.real > 0):
-                    lo, lead_lo = mid, lead_mid
+                if unstable(mid)[k] == counts[k]:
+                    lo = mid
                 else:
                     hi = mid
-            at = leading(0.5 * (lo + hi))
-            kind = "HB" if abs(at.imag) > 1e-6 else "BP"
-            changes.append((0.5 * (lo + hi), kind, abs(at.imag)))
-        previous, lead = value, new
-    return changes
+            at = 0.5 * (lo + hi)
+            eig = unstable(at)[2]
+            critical = eig[numpy.argmin(numpy.abs(eig.real))]
+            changes.append((at, kind, abs(critical.imag) if kind == "HB" else 0.0))
+        previous, counts = value, new
+    return sorted(changes)
 
 
 def hopf_point(rundir, name, parameter_set, parameter, value, width=None, **values):

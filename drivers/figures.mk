@@ -22,3 +22,15 @@ REGRESS_QUICK += fig07 fig09
 TEST_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
 TEST_PROGRAMS += tests/test_auto_plugin.py
 BENCH_PROGRAMS += tests/bench/bench_auto_jacobian.py
+
+# Freeplay figures (y_fp = 1 mm, epsilon = 0.1 y_fp); fig06 needs no AUTO.
+.PHONY: fig06 fig10 fig11 fig12
+fig06: $(MLG_SHARED) | packages
+	$(PYTHON) drivers/fig06.py
+
+fig10 fig11 fig12: $(AUTO_DRIVER_DEPS)
+	$(PYTHON) drivers/$@.py
+
+FIGURES += fig06 fig10 fig11 fig12
+REGRESS_FIGURES += fig10 fig12
+TEST_PROGRAMS += tests/test_freeplay_diagrams.py

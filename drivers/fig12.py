@@ -1,0 +1,135 @@
+"""Fig. 12: V = 50 m/s, +-1 mm of freeplay (epsilon = 0.1 y_fp), F* in
+[0, 3.5]: straight rolling with its two pitchforks, the stationary non-zero
+yaw branches between them, the Hopf point and the periodic orbits born
+there; panels torsional amplitude (with the freeplay boundary
+psi_fp = y_fp / r_tlk(eta*) in grey) and frequency.  Also a_12 and b_12: the
+loads at V = 50 between which stable straight rolling coexists with stable
+torsional shimmy, separated by the unstable orbits."""
+import sys
+
+import matplotlib.pyplot as plt
+import numpy
+
+import autoglue
+import diagrams as dg
+import mlgmodel
+import paper_table
+
+DEG = 180 / numpy.pi
+F_MIN, F_MAX = 0.02, 3.5
+VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
+
+
+def compute(parameter_set="figures", where="fig12"):
+    rundir = dg.rundir(where)
+    start = dg.Start(parameter_set, Fstar=F_MIN, **VALUES)
+    # MXBF = 0: the stationary yaw branches are computed explicitly below
+    eq = dg.equilibria(rundir, "eq", start, "Fstar", stop={"Fstar": F_MAX}, DS=0.002,
+                       DSMAX=0.01, MXBF=0, NMX=5000, expect=["BP"])
+    changes = dg.stability_changes(parameter_set, "Fstar", numpy.linspace(F_MIN, F_MAX, 1000),
+                                   **VALUES)
+    pitchforks = [p["Fstar"] for p in eq("BP")]
+    yaw = []
+    for k, point in enumerate(eq("BP")[:1]):
+        # from the first pitchfork to the second, both signs of psi
+        for sign in (1, -1):
+            yaw.append(dg.run(rundir, f"yaw{'pm'[sign < 0]}", "equilibria", data=point, ISW=-1,
+                              ICP=["Fstar"] + dg.MEASURES, DS=0.001 * sign, DSMAX=0.005,
+                              NMX=3000, MXBF=0,
+                              UZSTOP={"Fstar": [F_MIN, F_MAX, pitchforks[-1] + 1e-3]}))
+    hopf = [v for v, kind, _ in changes if kind == "HB"]
+    orbits = []
+    for k, v in enumerate(hopf):
+        point = dg.hopf_point(rundir, f"hb{k + 1}", parameter_set, "Fstar", v, **VALUES)
+        orbits.append(dg.periodic_from(rundir, f"po{k + 1}", point, "Fstar",
+                                       stop={"Fstar": [F_MIN, F_MAX]}, DS=0.002, DSMAX=0.02,
+                                       NMX=3000))
+    return eq, pitchforks, yaw, hopf, orbits
+
+
+def bistable_interval(pitchforks, hopf, orbits):
+    """(a_12, b_12): the loads where straight rolling is stable (between the
+    last pitchfork and the Hopf point) and a stable orbit coexists with it,
+    separated from it by unstable orbits.  The orbit branch leaves the Hopf
+    point stable (low frequency); the stable orbits that coexist with stable
+    straight rolling are on its later stable segments."""
+    lower, upper = pitchforks[-1], hopf[0]
+    pieces = [piece for diagram in orbits for branch in diagram
+              for piece in dg.segments(branch, "Fstar", "psi_amp")]
+    coexisting = [min(xs) for xs, _, stable in pieces[1:] if stable]
+    separating = [max(xs) for xs, _, stable in pieces if not stable]
+    if not coexisting or not separating:
+        return None, None
+    return max(lower, min(coexisting)), min(upper, max(separating))
+
+
+def numbers(result):
+    eq, pitchforks, yaw, hopf, orbits = result
+    out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(pitchforks)}
+    out.update({f"H{k + 1} F*": f for k, f in enumerate(hopf)})
+    for diagram in orbits:
+        out.update({f"fold {k + 1} F*": p["Fstar"] for k, p in enumerate(diagram("LP"))})
+        out["orbits: lowest F* (turning point)"] = min(min(b["Fstar"]) for b in diagram)
+    a12, b12 = bistable_interval(pitchforks, hopf, orbits)
+    out.update({"a_12": a12, "b_12": b12})
+    return out
+
+
+def freeplay_boundary(parameter_set, loads):
+    """psi_fp = y_fp / r_tlk(eta*) [rad] along straight rolling."""
+    out = []
+    for F in loads:
+        model = mlgmodel.Model(parameter_set, Fstar=F, **VALUES)
+        out.append(1e-3 * VALUES["yfp"] / model.r_tlk(model.equilibrium()["eta"]))
+    return numpy.array(out)
+
+
+def plot(result, parameter_set="figures"):
+    eq, pitchforks, yaw, hopf, orbits = result
+    fig, (amp, freq) = plt.subplots(2, 1, figsize=(8, 8), sharex=True)
+    loads = numpy.linspace(F_MIN, F_MAX, 200)
+    boundary = freeplay_boundary(parameter_set, loads) * DEG
+    amp.plot(loads, boundary, color="0.6", lw=3, label=r"$\psi_{fp}$")
+    amp.plot(loads, -boundary, color="0.6", lw=3)
+    dg.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
+    for diagram in yaw:
+        for branch in diagram:
+            for xs, ys, stable in dg.segments(branch, "Fstar", "psi_mean"):
+                amp.plot(xs, ys * DEG, "-." if stable else ":",
+                         color=dg.STABLE if stable else dg.UNSTABLE, lw=1.4)
+    for diagram in orbits:
+        dg.plot_branch(amp, diagram, "Fstar", "psi_amp", scale=DEG)
+        dg.plot_branch(freq, diagram, "Fstar", "freq")
+        dg.mark_points(amp, diagram, "LP", "Fstar", "psi_amp", scale=DEG, text="S")
+        dg.mark_points(freq, diagram, "LP", "Fstar", "freq", text="S")
+    for f in pitchforks:
+        amp.plot(f, 0, "ks", ms=4)
+        amp.annotate("P", (f, 0), textcoords="offset points", xytext=(2, -10))
+    for f in hopf:
+        amp.plot(f, 0, "ko", ms=3.5)
+        amp.annotate("H", (f, 0), textcoords="offset points", xytext=(2, 4))
+    amp.set_ylabel(r"$\psi$ amplitude; yaw of stationary branches [deg]")
+    amp.set_title("(a) torsional amplitude (dash-dot: stationary non-zero yaw; grey: "
+                  r"freeplay boundary $\pm\psi_{fp}$)")
+    amp.set_ylim(-0.3, 2.0)
+    freq.set_ylabel("frequency [Hz]")
+    freq.set_xlabel(r"$F_z^*$")
+    freq.set_title("(b) frequency")
+    freq.set_xlim(0, F_MAX)
+    fig.suptitle(r"Fig. 12: V = 50 m/s, $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm "
+                 "(solid stable, dashed unstable)")
+    fig.tight_layout()
+    dg.save(fig, "fig12")
+
+
+def main():
+    try:
+        result = compute()
+    except (autoglue.RunError, ValueError, RuntimeError) as exc:
+        sys.exit(f"fig12: {exc}")
+    paper_table.report("fig12", numbers(result))
+    plot(result)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,42 @@
+"""The paper's printed numbers next to ours: one table per figure, printed
+and stored as build/tables/<fig>.txt.
+
+    paper_table.report("fig10", ours_figures, ours_table)
+
+ours_* map a quantity (e.g. "H1 [m/s]") to a value; quantities the paper
+does not print are listed with "-" in its column."""
+import os
+
+import autoglue
+
+# Section IV of the paper (the `figures` set is calibrated on the first one).
+PAPER = {
+    "fig07": {"H, F* = 1 [m/s]": 346.1},
+    "fig10": {"H1 [m/s]": 1.5, "H2 [m/s]": 28.1, "H3 [m/s]": 142.5, "S1 [m/s]": 41.5},
+}
+
+
+def _cell(value):
+    return "-" if value is None else f"{value:.6g}"
+
+
+def report(figure, ours, ours_table=None):
+    """Print and store the table; returns its text."""
+    paper = PAPER.get(figure, {})
+    ours_table = ours_table or {}
+    rows = [("quantity", "paper", "ours (figures)", "ours (table)", "rel. error")]
+    for quantity in list(paper) + [q for q in ours if q not in paper]:
+        value, printed = ours.get(quantity), paper.get(quantity)
+        error = (f"{(value - printed) / printed:+.2%}"
+                 if value is not None and printed is not None else "-")
+        rows.append((quantity, _cell(printed), _cell(value), _cell(ours_table.get(quantity)),
+                     error))
+    widths = [max(len(row[k]) for row in rows) for k in range(5)]
+    lines = ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in rows]
+    text = f"{figure}: paper vs ours (rel. error of the figures set)\n" + "\n".join(lines) + "\n"
+    directory = os.path.join(autoglue.RUN_ROOT, "tables")
+    os.makedirs(directory, exist_ok=True)
+    with open(os.path.join(directory, f"{figure}.txt"), "w") as out:
+        out.write(text)
+    print(text, end="")
+    return text
