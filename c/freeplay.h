@@ -14,6 +14,22 @@ static inline dual torque_link_radius(const mlg_params *c, dual z_tlk)
     return d_addc(d_mulc(d_sin(angle), c->l_tlk), c->a_tlk);
 }
 
+/* d r_tlk / d z_tlk, from the formula above (d z_tlk / d eta = -1); the
+ * complete equations need d r_tlk / d eta (docs/model.md, section 8). */
+static inline dual torque_link_radius_slope(const mlg_params *c, dual z_tlk)
+{
+    double ab = c->a_tlk - c->b_tlk;
+    dual chord2 = d_addc(d_sq(z_tlk), ab * ab);
+    dual chord = d_sqrt(chord2);
+    dual x = d_mulc(chord, 0.5 / c->l_tlk);
+    dual angle = d_sub(d_acos(x), d_atan2(d_const(ab), z_tlk));
+    /* d acos(chord / 2l)/dz = -(z / chord) / (2l sqrt(1 - x^2));  d atan2(ab, z)/dz = -ab / chord^2 */
+    dual dacos = d_neg(d_div(d_mulc(d_div(z_tlk, chord), 0.5 / c->l_tlk),
+                             d_sqrt(d_sub(d_const(1.0), d_sq(x)))));
+    dual dangle = d_add(dacos, d_div(d_const(ab), chord2));
+    return d_mul(d_mulc(d_cos(angle), c->l_tlk), dangle);
+}
+
 /* Lateral torque-link force [N] at apex deflection y [m]: eq. (15) for
  * eps > 0, the non-smooth eq. (14) for eps == 0 (its limit; with zero
  * freeplay both are k_tlk y).  The vector field is only used with eps > 0
@@ -30,6 +46,29 @@ static inline dual torque_link_force(dual k_tlk, dual y, dual yfp, dual eps)
     dual t1 = d_mul(yp, d_addc(d_atan(d_neg(d_div(yp, eps))), 0.5 * MLG_PI));
     dual t2 = d_mul(ym, d_addc(d_atan(d_div(ym, eps)), 0.5 * MLG_PI));
     return d_mulc(d_mul(k_tlk, d_add(t1, t2)), 1.0 / MLG_PI);
+}
+
+/* Potential of the torque links [J] at apex deflection y [m]: the integral of
+ * torque_link_force from 0 to y, in closed form (eq. 15; eq. 14 for eps == 0). */
+static inline dual torque_link_energy(dual k_tlk, dual y, dual yfp, dual eps)
+{
+    if (eps.v == 0.0) {
+        dual out = d_sub(d_abs(y), yfp);
+        return out.v > 0.0 ? d_mulc(d_mul(k_tlk, d_sq(out)), 0.5) : d_const(0.0);
+    }
+    /* x (pi/2 - atan(x/eps)) integrates to pi x^2/4 - (x^2 + eps^2) atan(x/eps)/2 + eps x/2,
+     * x (pi/2 + atan(x/eps)) to pi x^2/4 + (x^2 + eps^2) atan(x/eps)/2 - eps x/2 */
+#define MLG_ATAN_PART(x) d_mulc(d_add(d_mul(d_add(d_sq(x), d_sq(eps)), d_atan(d_div(x, eps))),  \
+                                      d_neg(d_mul(eps, x))), 0.5)
+#define MLG_SQUARE_PART(x) d_mulc(d_sq(x), 0.25 * MLG_PI)
+    dual yp = d_add(y, yfp), ym = d_sub(y, yfp), yfp_neg = d_neg(yfp);
+    dual lower = d_sub(MLG_SQUARE_PART(yp), MLG_ATAN_PART(yp));
+    lower = d_sub(lower, d_sub(MLG_SQUARE_PART(yfp), MLG_ATAN_PART(yfp)));
+    dual upper = d_add(MLG_SQUARE_PART(ym), MLG_ATAN_PART(ym));
+    upper = d_sub(upper, d_add(MLG_SQUARE_PART(yfp_neg), MLG_ATAN_PART(yfp_neg)));
+#undef MLG_ATAN_PART
+#undef MLG_SQUARE_PART
+    return d_mulc(d_mul(k_tlk, d_add(lower, upper)), 1.0 / MLG_PI);
 }
 
 /* M_kpsi = r_tlk * force(y_tlk), y_tlk = r_tlk psi_s (eq. 15) */

@@ -40,7 +40,7 @@ typedef struct {
     dual I_a;
     dual I_beta, dI_beta_deta;      /* I_beta and dI_beta/deta */
     dual I_delta, dI_delta_deta;    /* I_delta (at the current theta_a) and dI_delta/deta */
-    dual k_delta, c_delta;
+    dual k_delta, dk_delta_deta, c_delta;
 } strut_geometry;
 
 static inline strut_geometry strut_geometry_at(const model_parameters *mp, const sidestay *g,
@@ -71,6 +71,11 @@ static inline strut_geometry strut_geometry_at(const model_parameters *mp, const
         den = d_add(den, d_addc(d_mulc(d_mul(cc, d_sq(cc)), c->R_kdelta), b * b * b));
         den = d_add(den, d_mulc(cc, 2.0 * a * b));
         s.k_delta = d_div(d_mulc(d_sq(s.L_delta), c->K_kdelta), den);
+        /* dk_delta/deta, with dL_d/deta = dc/deta = -1 (complete equations, docs/model.md 8) */
+        dual dden = d_addc(d_mulc(cc, 6.0 * b + 2.0 * a), 3.0 * b * b + 2.0 * a * b);
+        dden = d_add(dden, d_mulc(d_sq(cc), 3.0 * c->R_kdelta));
+        dual num = d_sub(d_mul(d_sq(s.L_delta), dden), d_mulc(d_mul(s.L_delta, den), 2.0));
+        s.dk_delta_deta = d_div(d_mulc(num, c->K_kdelta), d_sq(den));
     }
     /* c_delta: constant fraction of critical damping (model-notes item 1) */
     s.c_delta = d_mulc(d_sqrt(d_mul(s.I_delta, s.k_delta)), c->zeta_delta);

@@ -32,10 +32,24 @@ enum mlg_par_index {
 /* Derivative columns of mlg_rhs_jacobian: the states, then PAR(1..MLG_NPAR). */
 enum { MLG_NDIR = MLG_NX + MLG_NPAR };
 
+/* PAR slots read and written by mlg_params_set_par / _get_par: the
+ * continuation parameters and the switches with an AUTO slot (PAR(13)). */
+enum { MLG_PAR_SLOTS = 13 };
+
+/* Values of the eom_terms switch (docs/model.md, section 8). */
+enum mlg_eom_terms {
+    MLG_EOM_PRINTED = 0,     /* eqs. (1)-(4), (9), (12), (16) as printed */
+    MLG_EOM_SIDESTAY = 1,    /* + the terms that vanish for p = 0 (identical at rho = mu = 0) */
+    MLG_EOM_COMPLETE = 2     /* + the p-independent completions: the full Lagrangian */
+};
+
 typedef struct {
 #define X(name, value, unit, doc) double name;
     MLG_CONTINUATION_PARAMETERS(X)
     MLG_CONSTANTS(X)
+#undef X
+#define X(name, par, value, unit, doc) double name;
+    MLG_SWITCHES(X)
 #undef X
 } mlg_params;
 
@@ -58,8 +72,10 @@ int mlg_params_field_count(void);                  /* doubles in mlg_params */
 const char *mlg_state_name(int index);             /* "psi", ...; NULL if out of range */
 double *mlg_param_ref(mlg_params *p, const char *name);
 int mlg_par_index(const char *name);               /* 0-based, or -1 */
-const char *mlg_par_name(int index);               /* NULL if out of range */
-void mlg_params_set_par(mlg_params *p, const double *par);   /* par[0..MLG_NPAR-1] */
+const char *mlg_par_name(int index);               /* NULL if out of range or unused */
+int mlg_par_slot_count(void);                      /* MLG_PAR_SLOTS */
+/* par[0..MLG_PAR_SLOTS-1]: the continuation parameters and the AUTO switches */
+void mlg_params_set_par(mlg_params *p, const double *par);
 void mlg_params_get_par(const mlg_params *p, double *par);
 
 /* 0 if physically meaningful; otherwise nonzero, with a message naming the
@@ -87,6 +103,17 @@ typedef struct {
     double m, p;                                   /* side-stay angles (Fig. 3) */
 } mlg_diagnostics;
 int mlg_diagnose(const mlg_params *p, const double u[MLG_NX], mlg_diagnostics *out);
+
+/* ---- mechanical energy of the model's Lagrangian (energy.c; docs/model.md 8) ---- */
+/* T and V of the reduced model; V's strut part is the integral of F_keta from
+ * eta_ref.  The complete equations (eom_terms = 2) conserve T + V when the
+ * tyres (tyre_forces = 0) and the dampers (c_psi, c_beta, zeta_delta, c_eta*)
+ * are off.  Returns an mlg_status. */
+typedef struct {
+    double kinetic, potential;
+} mlg_energy_parts;
+int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
+               mlg_energy_parts *out);
 
 /* ---- freeplay, in plain doubles for plots and boundaries (freeplay_value.c) ---- */
 double mlg_r_tlk(const mlg_params *p, double eta);                 /* m */

@@ -13,7 +13,7 @@ typedef struct {
 
 static inline dual par_var(const mlg_params *p, int index)
 {
-    double par[MLG_NPAR];
+    double par[MLG_PAR_SLOTS];
     mlg_params_get_par(p, par);
     return d_var(par[index], MLG_NX + index);
 }

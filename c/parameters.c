@@ -18,6 +18,9 @@ mlg_params mlg_params_table(void)
         MLG_CONTINUATION_PARAMETERS(X)
         MLG_CONSTANTS(X)
 #undef X
+#define X(name, par, value, unit, doc) .name = (value),
+        MLG_SWITCHES(X)
+#undef X
     };
     return p;
 }
@@ -34,6 +37,13 @@ static const char *const par_names[MLG_NPAR] = {
     MLG_CONTINUATION_PARAMETERS(X)
 #undef X
 };
+
+/* a switch's AUTO slot must lie after the continuation parameters, within MLG_PAR_SLOTS */
+#define X(name, par, value, unit, doc)                                                   \
+    _Static_assert((par) == 0 || ((par) > MLG_NPAR + 2 && (par) <= MLG_PAR_SLOTS),       \
+                   "PAR slot of switch " #name);
+MLG_SWITCHES(X)
+#undef X
 
 int mlg_params_field_count(void)
 {
@@ -54,19 +64,33 @@ double *mlg_param_ref(mlg_params *p, const char *name)
     MLG_CONTINUATION_PARAMETERS(X)
     MLG_CONSTANTS(X)
 #undef X
+#define X(field, par, value, unit, doc) if (strcmp(name, #field) == 0) return &p->field;
+    MLG_SWITCHES(X)
+#undef X
     return NULL;
 }
 
 int mlg_par_index(const char *name)
 {
-    for (int k = 0; k < MLG_NPAR; k++)
-        if (strcmp(name, par_names[k]) == 0) return k;
+    for (int k = 0; k < MLG_PAR_SLOTS; k++) {
+        const char *known = mlg_par_name(k);
+        if (known != NULL && strcmp(name, known) == 0) return k;
+    }
     return -1;
 }
 
 const char *mlg_par_name(int index)
 {
-    return index >= 0 && index < MLG_NPAR ? par_names[index] : NULL;
+    if (index >= 0 && index < MLG_NPAR) return par_names[index];
+#define X(name, slot, value, unit, doc) if ((slot) > 0 && index == (slot) - 1) return #name;
+    MLG_SWITCHES(X)
+#undef X
+    return NULL;
+}
+
+int mlg_par_slot_count(void)
+{
+    return MLG_PAR_SLOTS;
 }
 
 void mlg_params_set_par(mlg_params *p, const double *par)
@@ -74,12 +98,18 @@ void mlg_params_set_par(mlg_params *p, const double *par)
 #define X(name, value, unit, doc) p->name = par[MLG_PAR_##name];
     MLG_CONTINUATION_PARAMETERS(X)
 #undef X
+#define X(name, slot, value, unit, doc) if ((slot) > 0) p->name = par[(slot) - 1];
+    MLG_SWITCHES(X)
+#undef X
 }
 
 void mlg_params_get_par(const mlg_params *p, double *par)
 {
 #define X(name, value, unit, doc) par[MLG_PAR_##name] = p->name;
     MLG_CONTINUATION_PARAMETERS(X)
+#undef X
+#define X(name, slot, value, unit, doc) if ((slot) > 0) par[(slot) - 1] = p->name;
+    MLG_SWITCHES(X)
 #undef X
 }
 
@@ -107,6 +137,11 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
         return reject(msg, n, "parameter %s is not finite (%g)", #name, p->name);
     MLG_CONTINUATION_PARAMETERS(X)
     MLG_CONSTANTS(X)
+#undef X
+#define X(name, par, value, unit, doc)                                          \
+    if (!isfinite(p->name))                                                     \
+        return reject(msg, n, "parameter %s is not finite (%g)", #name, p->name);
+    MLG_SWITCHES(X)
 #undef X
     if (p->V < 0.0)
         return reject(msg, n, "parameter V = %g m/s: forward velocity must be >= 0", p->V);
@@ -141,6 +176,12 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
                           "rad makes the gear geometry degenerate (cos p ~ 0)",
                           p->rho, p->mu, asin(fmax(-1.0, fmin(1.0, sp))));
     }
+    if (p->eom_terms != MLG_EOM_PRINTED && p->eom_terms != MLG_EOM_SIDESTAY &&
+        p->eom_terms != MLG_EOM_COMPLETE)
+        return reject(msg, n, "parameter eom_terms = %g must be 0 (as printed), 1 (side-stay "
+                      "corrections) or 2 (complete Lagrangian)", p->eom_terms);
+    if (p->tyre_forces != 0.0 && p->tyre_forces != 1.0)
+        return reject(msg, n, "parameter tyre_forces = %g must be 0 or 1", p->tyre_forces);
     if (p->strut_variant != 0.0 && p->strut_variant != 1.0)
         return reject(msg, n, "parameter strut_variant = %g must be 0 (monotone) or 1 "
                       "(as printed)", p->strut_variant);

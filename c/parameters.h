@@ -6,6 +6,10 @@
  * the names in `parnames` and a test checks that the two agree.
  * MLG_CONSTANTS lists every fixed constant of the paper (Table 1, II.A, II.B)
  * under the paper's symbol, with its `table` value.
+ * MLG_SWITCHES lists the model switches: discrete choices between variants
+ * of the equations, never differentiated.  A switch with an AUTO slot
+ * (par > 0) is read from PAR(par), outside PAR(1-10) because PAR(11) is the
+ * period; par = 0 marks an option for tests only (docs/model.md, section 8).
  *
  * X(name, value, unit, description)
  */
@@ -25,6 +29,13 @@
     X(mu,       0.0,    "rad",      "side-stay horizontal orientation")          \
     X(k_tlk,    3.90e7, "N/m",      "torque-link lateral stiffness")             \
     X(strut_variant, 0.0, "-",      "F_keta stage order: 0 monotone (swapped), 1 as printed")
+
+/* X(name, par, value, unit, description); par: AUTO PAR number, 0 for none */
+#define MLG_SWITCHES(X)                                                             \
+    X(eom_terms,   13, 0.0, "-",  "equations of motion: 0 as printed, 1 with the "   \
+                                  "side-stay corrections, 2 complete Lagrangian")  \
+    X(tyre_forces,  0, 1.0, "-",  "1: tyre forces act on the gear; 0 (tests): "     \
+                                  "ideal frictionless support under the axle")
 
 #define MLG_CONSTANTS(X)                                                            \
     /* Table 1: geometry */                                                          \

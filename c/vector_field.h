@@ -56,17 +56,34 @@ static inline int vector_field(const mlg_params *c, const dual u[MLG_NX], dual f
 
     model_parameters mp = model_parameters_seed(c);
     sidestay g = sidestay_geometry(&mp);
+    const int eom = (int)c->eom_terms;       /* enum mlg_eom_terms; docs/model.md 8 */
     dual theta_a = d_add(d_add(psi, d_mul(beta, g.sin_p)), g.m);     /* after eq. (6) */
     dual theta_a_dot = d_add(psi_dot, d_mul(beta_dot, g.sin_p));
     dual psi_s = d_add(psi, d_mul(beta, g.sin_p));
+    /* psi_s' = psi' + beta_twist is the axle's rate relative to the strut; as
+     * printed, eqs. (9), (16) and V_iCF use psi' (beta_twist = 0) */
+    dual beta_twist = eom >= MLG_EOM_SIDESTAY ? d_mul(beta_dot, g.sin_p) : d_const(0.0);
+    dual twist_rate = d_add(psi_dot, beta_twist);
     strut_geometry s = strut_geometry_at(&mp, &g, eta, theta_a);
     pose q = pose_at(&mp, &g, &s, psi, delta, beta);
+
+    /* torque links: eqs. (15), (16) */
+    dual r_tlk = torque_link_radius(c, s.z_tlk);
+    dual M_kpsi = torsional_stiffness_moment(&mp, r_tlk, psi_s);
+    dual M_cpsi = torsional_damping_moment(&mp, twist_rate);
 
     /* eq. (4) solved for the dynamic load: F_dyn = M H'' + F_z (model-notes 6) */
     dual F_keta = strut_spring_force(c, eta), F_ceta = strut_damper_force(c, eta, eta_dot);
     dual axial = d_add(F_keta, F_ceta);
     axial = d_sub(axial, d_mulc(d_mul(s.dI_beta_deta, d_sq(beta_dot)), 0.5));
     axial = d_sub(axial, d_mulc(d_mul(s.dI_delta_deta, d_sq(delta_dot)), 0.5));
+    if (eom == MLG_EOM_COMPLETE) {
+        /* d/deta of the potentials 1/2 k_delta(eta) delta^2 and of the torque links,
+         * whose apex deflection r_tlk(eta) psi_s gives M_kpsi psi_s (dr_tlk/deta) / r_tlk */
+        axial = d_add(axial, d_mulc(d_mul(s.dk_delta_deta, d_sq(delta)), 0.5));
+        dual dr_deta = d_neg(torque_link_radius_slope(c, s.z_tlk));
+        axial = d_add(axial, d_mul(M_kpsi, d_mul(psi_s, d_div(dr_deta, r_tlk))));
+    }
     dual F_dyn = d_div(axial, q.cos_phi);
     dual MH_ddot = d_sub(F_dyn, mp.F_z);
 
@@ -77,7 +94,7 @@ static inline int vector_field(const mlg_params *c, const dual u[MLG_NX], dual f
         return status;
     }
 
-    dvec Omega = axle_angular_velocity(psi_dot, q.u_psi, delta_dot, q.u_delta, beta_dot,
+    dvec Omega = axle_angular_velocity(twist_rate, q.u_psi, delta_dot, q.u_delta, beta_dot,
                                        g.u_beta);
     dvec e_Z = v_const(0.0, 0.0, 1.0);
     tyre_loads loads = {v_const(0, 0, 0), v_const(0, 0, 0), v_const(0, 0, 0)};
@@ -86,12 +103,15 @@ static inline int vector_field(const mlg_params *c, const dual u[MLG_NX], dual f
         if (status != MLG_OK) break;
         dvec P_C = v_add(q.P_wheel[i], v_scale(q.u_r, d_addc(d_neg(t.d), c->r)));
         dvec P_CF = v_add(P_C, v_scale(q.u_f, d_mulc(t.h, 0.5)));
-        /* contact-point velocities V*_iCF and V_iCF (after eq. 6) */
+        /* contact-point velocities V*_iCF and V_iCF (after eq. 6); V* leaves out
+         * the yaw psi' of the torsional DoF, not the twist that beta carries */
+        dvec twist_arm = v_cross(q.u_psi, v_sub(P_CF, q.P_0));
         dvec V_star = v_add(v_scale(v_cross(q.u_delta, P_CF), delta_dot),
                             v_scale(v_cross(g.u_beta, v_sub(P_CF, q.P_beta)), beta_dot));
         V_star = v_add(V_star, v_scale(q.u_eta, eta_dot));
         V_star.c[0] = d_add(V_star.c[0], mp.V);
-        dvec V_CF = v_add(V_star, v_scale(v_cross(q.u_psi, v_sub(P_CF, q.P_0)), psi_dot));
+        V_star = v_add(V_star, v_scale(twist_arm, beta_twist));
+        dvec V_CF = v_add(V_star, v_scale(twist_arm, psi_dot));
         dual rolling = v_dot(V_CF, q.u_f);
         dual lambda = u[MLG_LAMBDA_L + i];
         /* eqs. (5), (6) */
@@ -101,10 +121,12 @@ static inline int vector_field(const mlg_params *c, const dual u[MLG_NX], dual f
         dual F_y = tyre_lateral_force(c, F[i], alpha);
         dual M_z = tyre_aligning_moment(c, F[i], alpha);
         dvec M_gyr = gyroscopic_moment(Omega, c->I, rolling, t.r_eff, q.u_a);
-        dvec force = v_add(v_scale(e_Z, F[i]), v_scale(q.u_lambda, F_y));
-        loads.sum_F = v_add(loads.sum_F, force);
-        loads.sum_PxF = v_add(loads.sum_PxF, v_cross(P_C, force));
-        loads.sum_G = v_sub(loads.sum_G, v_add(v_scale(e_Z, M_z), M_gyr));
+        if (c->tyre_forces != 0.0) {
+            dvec force = v_add(v_scale(e_Z, F[i]), v_scale(q.u_lambda, F_y));
+            loads.sum_F = v_add(loads.sum_F, force);
+            loads.sum_PxF = v_add(loads.sum_PxF, v_cross(P_C, force));
+            loads.sum_G = v_sub(loads.sum_G, v_add(v_scale(e_Z, M_z), M_gyr));
+        }
         if (diag != NULL) {
             diag->F[i] = F[i].v;
             diag->d[i] = t.d.v;
@@ -121,16 +143,13 @@ static inline int vector_field(const mlg_params *c, const dual u[MLG_NX], dual f
         return status;
     }
 
-    /* generalised moments, eqs. (10)-(12); P_delta is the origin */
+    /* generalised moments, eqs. (10)-(12); P_delta is the origin.  Eq. (12)
+     * turns beta with psi held, i.e. twists the axle by sin p per unit beta;
+     * as printed it uses -u_beta . u_psi for sin p, exact only at delta = 0 */
     dual M_psi = moment_about(&loads, q.P_0, q.u_psi);
     dual M_delta = moment_about(&loads, v_const(0, 0, 0), q.u_delta);
-    dual M_beta = d_sub(moment_about(&loads, q.P_beta, g.u_beta),
-                        d_mul(M_psi, v_dot(g.u_beta, q.u_psi)));
-
-    /* torque links: eqs. (15), (16) */
-    dual r_tlk = torque_link_radius(c, s.z_tlk);
-    dual M_kpsi = torsional_stiffness_moment(&mp, r_tlk, psi_s);
-    dual M_cpsi = torsional_damping_moment(&mp, psi_dot);
+    dual twist_per_beta = eom == MLG_EOM_COMPLETE ? g.sin_p : d_neg(v_dot(g.u_beta, q.u_psi));
+    dual M_beta = d_add(moment_about(&loads, q.P_beta, g.u_beta), d_mul(M_psi, twist_per_beta));
 
     dual s_ta = d_sin(theta_a), c_ta = d_cos(theta_a);
     dual cos_2ta = d_addc(d_mulc(d_sq(c_ta), 2.0), -1.0);            /* 2 cos^2 ta - 1 */
@@ -147,17 +166,36 @@ static inline int vector_field(const mlg_params *c, const dual u[MLG_NX], dual f
     dual rhs_delta = d_add(M_delta, gyro_delta);
     rhs_delta = d_sub(rhs_delta, d_mul(s.dI_delta_deta, d_mul(eta_dot, delta_dot)));
     rhs_delta = d_sub(rhs_delta, d_add(d_mul(s.c_delta, delta_dot), d_mul(s.k_delta, delta)));
-    dual delta_ddot = d_div(rhs_delta, s.I_delta);
 
-    /* eq. (3), with the printed "sin theta_s" read as sin theta_a */
-    dual gyro_beta = d_mul(s.I_a, d_mul(d_sub(d_mul(delta_dot, cos_2ta),
-                                               d_mul(d_mul(beta_dot, sc2), g.cos_p)), theta_a_dot));
+    /* eq. (3), with the printed "sin theta_s" read as sin theta_a; the theta_a'
+     * bracket carries cos p in the derived equations (it is d/dt of -I_a W sin ta cos p) */
+    dual bracket = d_sub(d_mul(delta_dot, cos_2ta), d_mul(d_mul(beta_dot, sc2), g.cos_p));
+    if (eom >= MLG_EOM_SIDESTAY) bracket = d_mul(bracket, g.cos_p);
+    dual gyro_beta = d_mul(s.I_a, d_mul(bracket, theta_a_dot));
     dual rhs_beta = d_add(d_sub(M_beta, d_mul(coupling, g.sin_p)), gyro_beta);
-    rhs_beta = d_sub(rhs_beta, d_mul(MH_ddot, d_mul(s.L_beta, q.dcos_phi)));
+    /* the vertical load's moment about the side-stay axis, arm dH/dbeta = L_beta cos'(phi):
+     * as printed, eq. (3) adds M H'' there although F_dyn = M H'' + F_z already acts in
+     * M_beta (counted twice, model-notes 2C); an ideal support carries F_dyn on that arm */
+    dual beta_load = eom == MLG_EOM_COMPLETE ? d_const(0.0) : MH_ddot;
+    if (c->tyre_forces == 0.0) beta_load = d_add(beta_load, F_dyn);
+    rhs_beta = d_sub(rhs_beta, d_mul(beta_load, d_mul(s.L_beta, q.dcos_phi)));
     rhs_beta = d_sub(rhs_beta, d_mul(s.dI_beta_deta, d_mul(eta_dot, beta_dot)));
     rhs_beta = d_sub(rhs_beta, d_add(d_mulc(beta_dot, c->c_beta), d_mul(M_cpsi, g.sin_p)));
     rhs_beta = d_sub(rhs_beta, d_add(d_mulc(beta, c->k_beta), d_mul(M_kpsi, g.sin_p)));
-    dual beta_ddot = d_div(rhs_beta, s.I_beta);
+
+    dual delta_ddot, beta_ddot;
+    if (eom == MLG_EOM_COMPLETE) {
+        /* the axle's kinetic energy 1/2 I_a W^2, W = delta' cos ta - beta' sin ta cos p,
+         * couples the accelerations: [I_delta, -k; -k, I_beta + I_a sin^2 ta cos^2 p] */
+        dual k = d_mul(s.I_a, d_mul(d_mul(s_ta, c_ta), g.cos_p));
+        dual m_bb = d_add(s.I_beta, d_mul(s.I_a, d_sq(d_mul(s_ta, g.cos_p))));
+        dual det = d_sub(d_mul(s.I_delta, m_bb), d_sq(k));
+        delta_ddot = d_div(d_add(d_mul(m_bb, rhs_delta), d_mul(k, rhs_beta)), det);
+        beta_ddot = d_div(d_add(d_mul(s.I_delta, rhs_beta), d_mul(k, rhs_delta)), det);
+    } else {
+        delta_ddot = d_div(rhs_delta, s.I_delta);
+        beta_ddot = d_div(rhs_beta, s.I_beta);
+    }
 
     /* H'' = cos'(phi)(L_b b'' - 2 eta' b') + cos''(phi) L_b b'^2 - eta'' cos(phi)
      * (model-notes 5: the printed last term eta' is eta''), solved for eta'' */

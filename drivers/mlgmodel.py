@@ -43,16 +43,24 @@ _lib.mlg_torque_link_force.restype = ctypes.c_double
 _lib.mlg_torque_link_force.argtypes = [ctypes.c_double] * 4
 
 
-def _names(getter):
-    names, k = [], 0
-    while getter(k) is not None:
-        names.append(getter(k).decode())
-        k += 1
-    return names
+class _Energy(ctypes.Structure):
+    _fields_ = [("kinetic", ctypes.c_double), ("potential", ctypes.c_double)]
 
 
-PARNAMES = _names(_lib.mlg_par_name)      # PARNAMES[k] is PAR(k+1)
-UNAMES = _names(_lib.mlg_state_name)      # UNAMES[i] is U(i+1)
+_lib.mlg_energy.argtypes = [_P, _D, ctypes.c_double, ctypes.POINTER(_Energy)]
+
+
+def _name(getter, k):
+    name = getter(k)
+    return None if name is None else name.decode()
+
+
+# PARNAMES[k] is PAR(k+1): the continuation parameters PAR(1-10), then the
+# model switches AUTO reads (eom_terms, PAR(13)); None where AUTO owns the slot.
+PARNAMES = [_name(_lib.mlg_par_name, k) for k in range(_lib.mlg_par_slot_count())]
+UNAMES = []                               # UNAMES[i] is U(i+1)
+while _name(_lib.mlg_state_name, len(UNAMES)) is not None:
+    UNAMES.append(_name(_lib.mlg_state_name, len(UNAMES)))
 NX = len(UNAMES)
 C_PSI_FIGURES = ctypes.c_double.in_dll(_lib, "MLG_C_PSI_FIGURES").value
 
@@ -83,8 +91,8 @@ class Model:
         return self
 
     def par(self):
-        """The continuation parameters as {name: value}, in PAR order."""
-        return {name: self[name] for name in PARNAMES}
+        """The PAR values the model reads, as {name: value}, in PAR order."""
+        return {name: self[name] for name in PARNAMES if name is not None}
 
     def check(self):
         msg = ctypes.create_string_buffer(256)
@@ -113,6 +121,16 @@ class Model:
         if status != 0:
             raise RuntimeError(f"jacobian: {_lib.mlg_status_text(status).decode()}")
         return [[J[i + NX * j] for j in range(NX)] for i in range(NX)]
+
+    def energy(self, u, eta_ref):
+        """(kinetic, potential) of the model's Lagrangian at the state u (a
+        sequence in U order); the oleo potential counts from eta_ref."""
+        x = (ctypes.c_double * NX)(*u)
+        out = _Energy()
+        status = _lib.mlg_energy(ctypes.byref(self._p), x, eta_ref, ctypes.byref(out))
+        if status != 0:
+            raise RuntimeError(f"energy: {_lib.mlg_status_text(status).decode()}")
+        return out.kinetic, out.potential
 
     def r_tlk(self, eta):
         return _lib.mlg_r_tlk(ctypes.byref(self._p), eta)

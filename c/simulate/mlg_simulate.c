@@ -56,6 +56,8 @@ static void usage(FILE *stream)
         "  --eps-rel X           smoothing epsilon, part proportional to yfp\n"
         "  --c-psi X             torsional damping [N m s/rad]\n"
         "  --strut-variant 0|1   F_keta stage order (0 monotone, 1 as printed)\n"
+        "  --param NAME=X        any parameter, constant or switch by its name in\n"
+        "                        c/parameters.h (e.g. rho=0.1, eom_terms=2)\n"
         "  --t-end X             final time [s] (default 15)\n"
         "  --dt-out X            output interval [s] (default 1e-3)\n"
         "  --rtol X, --atol X    CVODE tolerances (default 1e-8, 1e-10)\n"
@@ -75,6 +77,26 @@ static double parse_number(const char *option, const char *text)
         exit(2);
     }
     return value;
+}
+
+/* --param NAME=VALUE: any field of mlg_params, by name */
+static void set_named(mlg_params *p, const char *arg)
+{
+    char name[64];
+    const char *eq = strchr(arg, '=');
+    size_t len = eq != NULL ? (size_t)(eq - arg) : 0;
+    if (len == 0 || len >= sizeof name) {
+        fprintf(stderr, "mlg_simulate: --param needs NAME=VALUE, got '%s'\n", arg);
+        exit(2);
+    }
+    memcpy(name, arg, len);
+    name[len] = '\0';
+    double *ref = mlg_param_ref(p, name);
+    if (ref == NULL) {
+        fprintf(stderr, "mlg_simulate: --param: no parameter named '%s'\n", name);
+        exit(2);
+    }
+    *ref = parse_number("--param", eq + 1);
 }
 
 static options parse_options(int argc, char **argv)
@@ -117,6 +139,7 @@ static options parse_options(int argc, char **argv)
         else if (strcmp(opt, "--eps-rel") == 0) o.p.eps_rel = parse_number(opt, arg);
         else if (strcmp(opt, "--c-psi") == 0) o.p.c_psi = parse_number(opt, arg);
         else if (strcmp(opt, "--strut-variant") == 0) o.p.strut_variant = parse_number(opt, arg);
+        else if (strcmp(opt, "--param") == 0) set_named(&o.p, arg);
         else if (strcmp(opt, "--t-end") == 0) o.t_end = parse_number(opt, arg);
         else if (strcmp(opt, "--dt-out") == 0) o.dt_out = parse_number(opt, arg);
         else if (strcmp(opt, "--rtol") == 0) o.rtol = parse_number(opt, arg);
@@ -257,9 +280,9 @@ static double seconds_now(void)
 
 static void write_row(FILE *csv, double t, const double *u)
 {
-    fprintf(csv, "%.9g", t);
+    fprintf(csv, "%.12g", t);
     for (int i = 0; i < MLG_NX; i++)
-        fprintf(csv, ",%.12e", u[i]);
+        fprintf(csv, ",%.17e", u[i]);
     fputc('\n', csv);
 }
 

@@ -29,7 +29,7 @@ static void difference(const sample *s, int j, double h, double *df)
         if (j < MLG_NX) {
             t.u[j] += sign * h;
         } else {
-            double par[MLG_NPAR];
+            double par[MLG_PAR_SLOTS];
             mlg_params_get_par(&t.p, par);
             par[j - MLG_NX] += sign * h;
             mlg_params_set_par(&t.p, par);

@@ -69,7 +69,7 @@ int main(void)
     double *k = mlg_param_ref(&p, "k_tlk"), *ad = mlg_param_ref(&p, "a_d");
     check(k == &p.k_tlk && ad == &p.a_d && *ad == 4.221e-4, "param_ref_by_name",
           "k_tlk and a_d reachable by name");
-    double par[MLG_NPAR];
+    double par[MLG_PAR_SLOTS];
     p = table;
     p.c_psi = 555.0;
     mlg_params_get_par(&p, par);

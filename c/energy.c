@@ -1,0 +1,60 @@
+/* Mechanical energy of the model's Lagrangian (docs/model.md, section 8):
+ * the quantity that the complete equations (eom_terms = 2) conserve when
+ * the tyres and all dampers are switched off. */
+#include "mlg.h"
+#define DUAL_N 0
+#include "freeplay.h"
+#include "geometry.h"
+#include "strut.h"
+
+/* Integral of F_keta from eta_ref to eta: 5-point Gauss-Legendre on panels of
+ * at most 0.1 mm (the integrand has no closed-form antiderivative). */
+static double strut_potential(const mlg_params *p, double eta_ref, double eta)
+{
+    static const double node[5] = {-0.9061798459386640, -0.5384693101056831, 0.0,
+                                   0.5384693101056831, 0.9061798459386640};
+    static const double weight[5] = {0.2369268850561891, 0.4786286704993665,
+                                     0.5688888888888889, 0.4786286704993665,
+                                     0.2369268850561891};
+    int panels = 1 + (int)(fabs(eta - eta_ref) / 1e-4);
+    double h = (eta - eta_ref) / panels, sum = 0.0;
+    for (int k = 0; k < panels; k++) {
+        double mid = eta_ref + (k + 0.5) * h;
+        for (int j = 0; j < 5; j++)
+            sum += weight[j] * strut_spring_force(p, d_const(mid + 0.5 * h * node[j])).v;
+    }
+    return 0.5 * h * sum;
+}
+
+int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
+               mlg_energy_parts *out)
+{
+    const double psi = u[MLG_PSI], delta = u[MLG_DELTA], beta = u[MLG_BETA], eta = u[MLG_ETA];
+    const double psi_dot = u[MLG_PSI_DOT], delta_dot = u[MLG_DELTA_DOT];
+    const double beta_dot = u[MLG_BETA_DOT], eta_dot = u[MLG_ETA_DOT];
+    if (!(eta > 0.0 && eta < p->z_tlk0) || !(eta_ref > 0.0 && eta_ref < p->z_tlk0))
+        return MLG_ETA_OUT_OF_STROKE;
+    model_parameters mp = model_parameters_seed(p);
+    sidestay g = sidestay_geometry(&mp);
+    double sin_p = g.sin_p.v, cos_p = g.cos_p.v;
+    double psi_s = psi + beta * sin_p, theta_a = psi_s + g.m.v;       /* after eq. (6) */
+    strut_geometry s = strut_geometry_at(&mp, &g, d_const(eta), d_const(theta_a));
+    pose q = pose_at(&mp, &g, &s, d_const(psi), d_const(delta), d_const(beta));
+    double I_a = s.I_a.v, L_beta = s.L_beta.v;
+
+    /* kinetic: torsion, strut bending about u_delta and about u_beta, the axle's
+     * rotation W normal to itself in the plane normal to the strut, modal mass */
+    double I_delta_strut = s.I_delta.v - I_a * cos(theta_a) * cos(theta_a);
+    double W = delta_dot * cos(theta_a) - beta_dot * sin(theta_a) * cos_p;
+    double H_dot = -eta_dot * q.cos_phi.v + L_beta * q.dcos_phi.v * beta_dot;
+    out->kinetic = 0.5 * (p->I_psi * psi_dot * psi_dot + I_delta_strut * delta_dot * delta_dot
+                          + s.I_beta.v * beta_dot * beta_dot + I_a * W * W
+                          + p->M * H_dot * H_dot);
+
+    /* potential: lateral and longitudinal springs, torque links, oleo, load F_z at height H */
+    double r_tlk = torque_link_radius(p, s.z_tlk).v;
+    double links = torque_link_energy(mp.k_tlk, d_const(r_tlk * psi_s), mp.yfp, mp.eps).v;
+    out->potential = 0.5 * (s.k_delta.v * delta * delta + p->k_beta * beta * beta) + links
+                     + strut_potential(p, eta_ref, eta) + mp.F_z.v * L_beta * q.cos_phi.v;
+    return MLG_OK;
+}
