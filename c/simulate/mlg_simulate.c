@@ -33,6 +33,7 @@ static const char *const STATE_NAMES[MLG_NX] = {
 typedef struct {
     mlg_params p;
     double t_end, dt_out, rtol, atol, psi0, delta0;
+    int lmm;                    /* CV_BDF or CV_ADAMS */
     const char *out;
 } options;
 
@@ -61,6 +62,8 @@ static void usage(FILE *stream)
         "  --t-end X             final time [s] (default 15)\n"
         "  --dt-out X            output interval [s] (default 1e-3)\n"
         "  --rtol X, --atol X    CVODE tolerances (default 1e-8, 1e-10)\n"
+        "  --method bdf|adams    CVODE multistep method (default bdf; adams keeps the\n"
+        "                        energy of conservative runs best)\n"
         "  --psi0 X              perturbation of psi added to the equilibrium [rad]\n"
         "                        (default 1e-3)\n"
         "  --delta0 X            perturbation of delta [rad] (default 0)\n"
@@ -102,7 +105,7 @@ static void set_named(mlg_params *p, const char *arg)
 static options parse_options(int argc, char **argv)
 {
     options o = {.t_end = 15.0, .dt_out = 1e-3, .rtol = 1e-8, .atol = 1e-10,
-                 .psi0 = 1e-3, .delta0 = 0.0, .out = NULL};
+                 .psi0 = 1e-3, .delta0 = 0.0, .lmm = CV_BDF, .out = NULL};
     o.p = mlg_params_figures();
     o.p.V = 300.0;
     o.p.Fstar = 0.2;
@@ -140,6 +143,13 @@ static options parse_options(int argc, char **argv)
         else if (strcmp(opt, "--c-psi") == 0) o.p.c_psi = parse_number(opt, arg);
         else if (strcmp(opt, "--strut-variant") == 0) o.p.strut_variant = parse_number(opt, arg);
         else if (strcmp(opt, "--param") == 0) set_named(&o.p, arg);
+        else if (strcmp(opt, "--method") == 0) {
+            if (strcmp(arg, "bdf") != 0 && strcmp(arg, "adams") != 0) {
+                fprintf(stderr, "mlg_simulate: --method must be bdf or adams, got '%s'\n", arg);
+                exit(2);
+            }
+            o.lmm = strcmp(arg, "bdf") == 0 ? CV_BDF : CV_ADAMS;
+        }
         else if (strcmp(opt, "--t-end") == 0) o.t_end = parse_number(opt, arg);
         else if (strcmp(opt, "--dt-out") == 0) o.dt_out = parse_number(opt, arg);
         else if (strcmp(opt, "--rtol") == 0) o.rtol = parse_number(opt, arg);
@@ -326,7 +336,7 @@ int main(int argc, char **argv)
     memcpy(N_VGetArrayPointer(y), u0, sizeof u0);
     SUNMatrix J = SUNDenseMatrix(MLG_NX, MLG_NX, ctx);
     SUNLinearSolver LS = SUNLinSol_Dense(y, J, ctx);
-    void *cvode = CVodeCreate(CV_BDF, ctx);   /* default nonlinear solver: Newton */
+    void *cvode = CVodeCreate(o.lmm, ctx);    /* default nonlinear solver: Newton */
     if (y == NULL || J == NULL || LS == NULL || cvode == NULL) {
         fprintf(stderr, "mlg_simulate: cannot create the CVODE solver\n");
         return 1;

@@ -14,7 +14,7 @@ fig08: $(MLG_SIMULATE)
 	$(PYTHON) drivers/fig08.py
 
 FIGURES += fig08
-TEST_PROGRAMS += tests/test_simulate.py
+TEST_PROGRAMS += tests/test_simulate.py tests/test_energy.py
 TEST_DEPS += $(MLG_SIMULATE)
 BENCH_PROGRAMS += tests/bench/bench_fig08.py
 # The bench script needs the simulator: build it when `make bench` lists it.

@@ -67,6 +67,8 @@ static sample draw(int n)
         s.p.mu = unit_between(-0.3, 0.3);
     }
     s.p.strut_variant = (n / 7) % 2;
+    s.p.eom_terms = (n / 3) % 3;              /* every level with and without side-stay angles */
+    s.p.tyre_forces = n % 13 == 5 ? 0.0 : 1.0;
     mlg_equilibrium(&s.p, -1.0, s.u);
 
     /* place the torque-link deflection inside, at the edge of, or outside the freeplay */
@@ -122,8 +124,8 @@ static void scales(const sample *s, double *scale)
 
 int main(void)
 {
-    double worst_u = 0.0, worst_p = 0.0;
-    int outside_domain = 0, counted = 0, per_region[4] = {0, 0, 0, 0};
+    double worst_u = 0.0, worst_p = 0.0, worst_level[3] = {0.0, 0.0, 0.0};
+    int outside_domain = 0, counted = 0, per_region[4] = {0, 0, 0, 0}, angled[3] = {0, 0, 0};
     const char *worst_where = "";
     for (int n = 0; n < NSAMPLES; n++) {
         sample s = draw(n);
@@ -139,6 +141,8 @@ int main(void)
         mlg_rhs_jacobian(&s.p, s.u, f2, Jx, NULL);
         if (memcmp(J, Jx, sizeof J) != 0 || memcmp(f, f2, sizeof f) != 0) worst_u = INFINITY;
         counted++;
+        int level = (int)s.p.eom_terms;
+        if (s.p.rho != 0.0) angled[level]++;
         per_region[s.region[0] == 'i' ? 0 : s.region[0] == 'e' ? 1 : s.region[0] == 'o' ? 2 : 3]++;
 
         double scale[MLG_NDIR], fd[MLG_NDIR][MLG_NX], row[MLG_NX];
@@ -158,6 +162,7 @@ int main(void)
                 if (scale[j] == 0.0) continue;
                 double an = j < MLG_NX ? J[i + MLG_NX * j] : P[i + MLG_NX * (j - MLG_NX)];
                 double err = fabs(an - fd[j][i]) * scale[j] / row[i];
+                if (s.p.rho != 0.0) worst_level[level] = fmax(worst_level[level], err);
                 if (j < MLG_NX && err > worst_u) {
                     worst_u = err;
                     worst_where = s.region;
@@ -173,6 +178,13 @@ int main(void)
     check(per_region[0] > 200 && per_region[1] > 200 && per_region[2] > 200,
           "all_freeplay_regions_sampled", "inside %d, edge %d, outside %d", per_region[0],
           per_region[1], per_region[2]);
+    for (int level = 0; level < 3; level++) {
+        char name[64];
+        snprintf(name, sizeof name, "jacobian_at_side_stay_angles_eom_terms_%d", level);
+        check(angled[level] > 200 && worst_level[level] <= 1e-6, name,
+              "eom_terms %d: %d samples with rho, mu != 0, max row-scaled error %.2e (df/du "
+              "and df/dp)", level, angled[level], worst_level[level]);
+    }
     check(worst_u <= 1e-6, "dfdu_matches_finite_differences",
           "max row-scaled error %.2e (worst sample: %s)", worst_u, worst_where);
     check(worst_p <= 1e-6, "dfdp_matches_finite_differences", "max row-scaled error %.2e",

@@ -51,6 +51,19 @@ int main(void)
     p.strut_variant = 0.5;
     expect_rejected("strut_variant_not_a_switch", p, "parameter strut_variant = 0.5");
     p = table;
+    p.eom_terms = 3.0;
+    expect_rejected("eom_terms_out_of_range", p, "parameter eom_terms = 3");
+    p = table;
+    p.tyre_forces = 0.5;
+    expect_rejected("tyre_forces_not_a_switch", p, "parameter tyre_forces = 0.5");
+    p = table;
+    p.rho = 0.5;
+    p.mu = -1.4;     /* sin p = sin(rho) cos(phi0) - cos(rho) sin(mu) sin(phi0) = 0.36: valid */
+    check(mlg_params_check(&p, msg, sizeof msg) == 0, "large_valid_angles_accepted", "%s", msg);
+    p.rho = 1.52;    /* side-stay axis almost along the strut: |sin p| = 0.991 */
+    p.mu = 0.0;
+    expect_rejected("side_stay_along_strut", p, "parameters rho = 1.52");
+    p = table;
     p.c_psi = -1.0;
     expect_rejected("negative_damping", p, "parameter c_psi = -1");
     p = table;
@@ -75,6 +88,16 @@ int main(void)
     mlg_params_get_par(&p, par);
     check(par[MLG_PAR_c_psi] == 555.0 && strcmp(mlg_par_name(MLG_PAR_c_psi), "c_psi") == 0,
           "par_round_trip", "PAR(%d) = %g", MLG_PAR_c_psi + 1, par[MLG_PAR_c_psi]);
+    /* the switch eom_terms lives in PAR(13); PAR(11), PAR(12) (AUTO's) have no name */
+    p.eom_terms = 2.0;
+    par[10] = par[11] = -7.0;
+    mlg_params_get_par(&p, par);
+    mlg_params q = table;
+    mlg_params_set_par(&q, par);
+    check(mlg_par_index("eom_terms") == 12 && par[12] == 2.0 && q.eom_terms == 2.0 &&
+          par[10] == -7.0 && mlg_par_name(10) == NULL && mlg_par_name(11) == NULL &&
+          mlg_par_index("tyre_forces") == -1, "switch_par_slot",
+          "eom_terms at index %d, PAR(13) = %g", mlg_par_index("eom_terms"), par[12]);
 
     /* states outside the model's domain give a status, never NaN */
     double u[MLG_NX], f[MLG_NX], J[MLG_NX * MLG_NX];
