@@ -12,6 +12,12 @@ fig07: $(AUTO_DRIVER_DEPS)
 fig09: $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/fig09.py
 
+# Side-stay geometry (angles in degrees): make sidestay RHO=10 MU=10
+.PHONY: sidestay
+sidestay: $(AUTO_DRIVER_DEPS)
+	$(if $(and $(RHO),$(MU)),,$(error make sidestay needs RHO=<deg> MU=<deg>))
+	$(PYTHON) drivers/sidestay.py --rho $(RHO) --mu $(MU)
+
 # The c_psi of the `figures` set (MLG_C_PSI_FIGURES in c/parameters.c).
 calibrate: $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/calibrate_c_psi.py

@@ -1,0 +1,150 @@
+"""make sidestay RHO=<deg> MU=<deg>: the gear with side-stay angles (rho, mu).
+
+For that geometry and for rho = mu = 0 (overlaid), at F* = 1 with the
+`figures` set and the complete equations of motion (eom_terms = 2,
+docs/model.md section 8; --eom-terms picks another level):
+  (a, b) straight rolling in V, its Hopf points and the periodic orbits born
+         there, for zero freeplay and for y_fp = 1 mm, eps = 0.1 mm
+         (eps_rel = 0.1);
+  (c)    the Hopf curves in (V, F*) continued from those Hopf points.
+Runs go to build/sidestay_rho<deg>_mu<deg>/ (one AUTO run per b./s./d. file);
+the figure to build/figures/sidestay_rho<deg>_mu<deg>.png and .pdf.
+Angles outside the model's range stop the driver before any AUTO run.
+"""
+import argparse
+import math
+import os
+import sys
+
+import matplotlib.pyplot as plt
+
+import autoglue
+import diagrams as dg
+
+V_START, V_STOP = 0.5, 600.0      # at V = 0 the tyre states are undetermined (docs 4.20)
+FSTAR_RANGE = [0.1, 3.5]
+PSI_AMP_STOP = 0.2                 # rad: larger orbits approach wheel lift-off
+# Orbits of the freeplay case live down to V ~ 1 m/s: steps small enough that
+# no predictor step leaves V >= 0 (the AUTO plugin stops on V < 0).
+ORBIT_STEPS = {"fp0": {}, "fp1": {"DS": 0.1, "DSMAX": 0.4, "NMX": 2000}}
+CASES = (("zero freeplay", "fp0", {"yfp": 0.0}),
+         ("$y_{fp}$ = 1 mm, $\\epsilon$ = 0.1 mm", "fp1", {"yfp": 1.0, "eps_abs": 0.0,
+                                                          "eps_rel": 0.1}))
+
+
+def name_of(rho_deg, mu_deg):
+    return f"sidestay_rho{rho_deg:g}_mu{mu_deg:g}"
+
+
+def starts(rho_deg, mu_deg, eom_terms):
+    """{case tag: Start}; validates every parameter set first (ValueError)."""
+    angles = {"rho": math.radians(rho_deg), "mu": math.radians(mu_deg), "eom_terms": eom_terms}
+    return {tag: dg.Start("figures", Fstar=1.0, V=V_START, **angles, **values)
+            for _, tag, values in CASES}
+
+
+def attempt(rundir, name, run, notes):
+    """run() -> diagram.  A branch that ends without convergence (MX) is kept up
+    to there; a run AUTO could not finish gives None.  Either is noted."""
+    try:
+        return run()
+    except autoglue.RunError as exc:
+        files = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
+        kept = all(map(os.path.exists, files))
+        notes.append(f"{exc}" + (" (kept up to there)" if kept else ""))
+        return autoglue.auto.bifDiag.bifDiag(*files) if kept else None
+
+
+def compute(rho_deg, mu_deg, eom_terms):
+    """{case tag: (equilibria, [HB points], [orbits], [Hopf curves], [notes])}."""
+    where = starts(rho_deg, mu_deg, eom_terms)
+    rundir = dg.rundir(name_of(rho_deg, mu_deg))
+    result = {}
+    for _, tag, _ in CASES:
+        start = where[tag]
+        eq = dg.equilibria(rundir, f"eq_{tag}", start, stop={"V": V_STOP})
+        hopf = dg.hopf_points(rundir, f"hb_{tag}", start, V_STOP)
+        orbits, curves, notes = [], [], []
+        for k, point in enumerate(hopf, 1):
+            name = f"po_{tag}_{k}"
+            orbits.append(attempt(rundir, name, lambda: dg.periodic_from(
+                rundir, name, point, stop={"V": [V_START, V_STOP], "psi_amp": PSI_AMP_STOP},
+                **ORBIT_STEPS[tag]), notes))
+            for direction, ds in (("up", 0.01), ("down", -0.01)):
+                name = f"hopf_{tag}_{k}_{direction}"
+                curves.append(attempt(rundir, name, lambda: dg.hopf_curve(
+                    rundir, name, point, DS=ds,
+                    stop={"Fstar": FSTAR_RANGE, "V": [V_START, V_STOP]}), notes))
+        result[tag] = (eq, hopf, [o for o in orbits if o is not None],
+                       [c for c in curves if c is not None], notes)
+    return result
+
+
+def plot(name, title, result, reference):
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
+    deg = 180.0 / math.pi
+    for ax, (label, tag, _) in zip(axes[:2], CASES):
+        for data, style in ((reference, {"color": "0.6", "lw": 1.0}), (result, {})):
+            eq, hopf, orbits, _, _ = data[tag]
+            dg.plot_branch(ax, eq, "V", "psi_amp", scale=deg, **style)
+            for orbit in orbits:
+                dg.plot_branch(ax, orbit, "V", "psi_amp", scale=deg, **style)
+            for point in hopf:
+                ax.plot(point["V"], 0.0, "o", ms=4, color=style.get("color", "k"))
+        ax.set_title(f"F* = 1, {label}")
+        ax.set_xlabel("V [m/s]")
+        ax.set_ylabel(r"$\psi$ amplitude [deg] (linear below 0.05)")
+        ax.set_yscale("symlog", linthresh=0.05)
+        ax.set_ylim(0, 20)
+        ax.set_xlim(0, V_STOP)
+    ax = axes[2]
+    for data, width, dashes in ((reference, 1.0, "--"), (result, 1.6, "-")):
+        for (label, tag, _), color in zip(CASES, ("tab:blue", "tab:orange")):
+            for curve in data[tag][3]:
+                for branch in curve:
+                    ax.plot(branch["V"], branch["Fstar"], dashes, color=color, lw=width,
+                            label=label if data is result else None)
+                    label = None
+    ax.set_xlim(0, V_STOP)
+    ax.set_ylim(0, FSTAR_RANGE[1])
+    ax.set_xlabel("V [m/s]")
+    ax.set_ylabel("$F_z^*$")
+    ax.set_title("Hopf curves (dashed: rho = mu = 0)")
+    ax.legend(fontsize=7, loc="upper right")
+    fig.suptitle(f"{title}; grey / dashed: rho = mu = 0; solid green stable, dashed red unstable")
+    dg.save(fig, name)
+
+
+def report(tag_label, result):
+    for label, tag, _ in CASES:
+        _, hopf, orbits, curves, failed = result[tag]
+        speeds = ", ".join(f"{p['V']:.3f}" for p in hopf) or "none"
+        print(f"sidestay: {tag_label}, {label}: Hopf points at V = {speeds} m/s; "
+              f"{len(orbits)} orbit families, {len(curves)} Hopf-curve runs")
+        for line in failed:
+            print(f"sidestay:   {line}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--rho", type=float, required=True, help="rho [deg]")
+    parser.add_argument("--mu", type=float, required=True, help="mu [deg]")
+    parser.add_argument("--eom-terms", type=int, default=2, help="0, 1 or 2 (default 2)")
+    args = parser.parse_args()
+    try:
+        starts(args.rho, args.mu, args.eom_terms)          # validate before any AUTO run
+        result = compute(args.rho, args.mu, args.eom_terms)
+        reference = compute(0.0, 0.0, args.eom_terms)
+    except ValueError as exc:
+        sys.exit(f"sidestay: rho = {args.rho:g} deg, mu = {args.mu:g} deg rejected: {exc}")
+    except (autoglue.RunError, RuntimeError) as exc:
+        sys.exit(f"sidestay: {exc}")
+    report(f"rho = {args.rho:g} deg, mu = {args.mu:g} deg", result)
+    report("rho = mu = 0", reference)
+    title = (f"Side-stay angles rho = {args.rho:g} deg, mu = {args.mu:g} deg "
+             f"(eom_terms = {args.eom_terms})")
+    plot(name_of(args.rho, args.mu), title, result, reference)
+
+
+if __name__ == "__main__":
+    main()
