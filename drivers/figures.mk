@@ -40,3 +40,24 @@ fig10 fig11 fig12: $(AUTO_DRIVER_DEPS)
 FIGURES += fig06 fig10 fig11 fig12
 REGRESS_FIGURES += fig10 fig12
 TEST_PROGRAMS += tests/test_freeplay_diagrams.py
+
+# Sweep over side-stay angles (drivers/sweep.py; degrees, comma-separated):
+#   make -j2 sweep SWEEP_RHO=-10,0,10 SWEEP_MU=-10,0,10
+SWEEP_RHO ?= -10,0,10
+SWEEP_MU ?= -10,0,10
+SWEEP_GRID := --rho=$(SWEEP_RHO) --mu=$(SWEEP_MU)
+SWEEP_RESULTS := $(shell $(PYTHON) drivers/sweep.py targets $(SWEEP_GRID))
+comma := ,
+SWEEP_CHECKED := build/sweep/grid$(subst $(comma),_,$(SWEEP_RHO))x$(subst $(comma),_,$(SWEEP_MU)).ok
+
+.PHONY: sweep
+sweep: $(SWEEP_RESULTS)
+	$(PYTHON) drivers/sweep.py summary $(SWEEP_GRID)
+
+$(SWEEP_CHECKED): $(AUTO_DRIVER_DEPS)
+	@mkdir -p $(@D)
+	$(PYTHON) drivers/sweep.py check $(SWEEP_GRID)
+	touch $@
+
+build/sweep/%/result.json: $(SWEEP_CHECKED) $(AUTO_DRIVER_DEPS)
+	$(PYTHON) drivers/sweep.py point $*

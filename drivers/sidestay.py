@@ -82,6 +82,7 @@ def compute(rho_deg, mu_deg, eom_terms):
 
 def plot(name, title, result, reference):
     fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
+    fig.subplots_adjust(wspace=0.3)
     deg = 180.0 / math.pi
     for ax, (label, tag, _) in zip(axes[:2], CASES):
         for data, style in ((reference, {"color": "0.6", "lw": 1.0}), (result, {})):
@@ -93,7 +94,7 @@ def plot(name, title, result, reference):
                 ax.plot(point["V"], 0.0, "o", ms=4, color=style.get("color", "k"))
         ax.set_title(f"F* = 1, {label}")
         ax.set_xlabel("V [m/s]")
-        ax.set_ylabel(r"$\psi$ amplitude [deg] (linear below 0.05)")
+        ax.set_ylabel(r"$\psi$ amplitude [deg] (symlog)")
         ax.set_yscale("symlog", linthresh=0.05)
         ax.set_ylim(0, 20)
         ax.set_xlim(0, V_STOP)

@@ -1,6 +1,8 @@
 /* Mirror symmetry of the gear for rho = mu = 0: with S the reflection Y -> -Y
  * (psi, delta, their rates and the tyre deflections change sign, left and
- * right tyres swap), f(S u) = S f(u). */
+ * right tyres swap), f(S u) = S f(u).  With side-stay angles the mirror image
+ * of the side-stay axis u_beta is the axis of (-rho, -mu), so
+ * f(S u; -rho, -mu) = S f(u; rho, mu), for every eom_terms level. */
 #include "mlg.h"
 #include "unit.h"
 
@@ -62,5 +64,39 @@ int main(void)
     double broken = 0.0;
     for (int i = 0; i < MLG_NX; i++) broken = fmax(broken, fabs(fs[i] - sf[i]) / (fabs(f[i]) + 1e-8));
     check(broken > 1e-3, "side_stay_breaks_symmetry", "relative asymmetry %.2e", broken);
+
+    double worst_angles = 0.0;
+    int n_angles = 0;
+    for (int n = 0; n < 600; n++) {
+        mlg_params a = mlg_params_table();
+        a.Fstar = unit_between(0.2, 3.5);
+        a.V = unit_between(0.0, 600.0);
+        a.yfp = n % 2 ? 1.0 : 0.0;
+        a.rho = unit_between(-0.5, 0.5);
+        a.mu = unit_between(-0.5, 0.5);
+        a.eom_terms = n % 3;
+        mlg_params b = a;
+        b.rho = -a.rho;
+        b.mu = -a.mu;
+        mlg_equilibrium(&a, -1.0, u);
+        u[MLG_PSI] += unit_between(-0.01, 0.01);
+        u[MLG_DELTA] += unit_between(-0.01, 0.01);
+        u[MLG_BETA] += unit_between(-0.002, 0.002);
+        u[MLG_PSI_DOT] = unit_between(-1.0, 1.0);
+        u[MLG_DELTA_DOT] = unit_between(-0.5, 0.5);
+        u[MLG_BETA_DOT] = unit_between(-0.2, 0.2);
+        u[MLG_ETA_DOT] = unit_between(-0.1, 0.1);
+        u[MLG_LAMBDA_L] = unit_between(-0.02, 0.02);
+        u[MLG_LAMBDA_R] = unit_between(-0.02, 0.02);
+        reflect(u, su);
+        if (mlg_rhs(&a, u, f) != MLG_OK || mlg_rhs(&b, su, fs) != MLG_OK) continue;
+        reflect(f, sf);
+        for (int i = 0; i < MLG_NX; i++)
+            worst_angles = fmax(worst_angles, fabs(fs[i] - sf[i]) / (fabs(f[i]) + 1e-8));
+        n_angles++;
+    }
+    check(n_angles >= 500 && worst_angles <= 1e-9, "mirror_symmetry_with_side_stay_angles",
+          "%d states, max |f(Su; -rho, -mu) - S f(u; rho, mu)| / |f(u)| = %.2e", n_angles,
+          worst_angles);
     return unit_exit();
 }

@@ -1,0 +1,142 @@
+"""Sweep over side-stay angles: the critical shimmy speed on a (rho, mu) grid.
+
+Each grid point is an independent job with its own run directory
+build/sweep/rho<deg>_mu<deg>/: the first Hopf point in V of straight rolling
+(zero freeplay, F* = 1, `figures` set, complete equations eom_terms = 2),
+written to result.json there.  Subcommands (angles in degrees, lists
+comma-separated; the default grid is 3 x 3):
+
+  sweep.py check   [--rho L --mu L]   validate every grid point (no AUTO run)
+  sweep.py targets [--rho L --mu L]   the result files, for make
+  sweep.py jobs    [--rho L --mu L]   one shell command per grid point, for
+                                      GNU parallel or a Slurm array (README)
+  sweep.py point rho<deg>_mu<deg>     run one grid point
+  sweep.py summary [--rho L --mu L]   plot build/figures/sweep_critical_speed.*
+
+`make sweep` (with -j N for N jobs at once) runs check, every point, summary.
+"""
+import argparse
+import json
+import math
+import os
+import shlex
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SWEEP_DIR = os.path.join(ROOT, "build", "sweep")
+DEFAULT_GRID = "-10,0,10"
+V_START, V_STOP = 0.5, 600.0
+
+
+def point_name(rho, mu):
+    return f"rho{rho:g}_mu{mu:g}"
+
+
+def parse_point(name):
+    rho, mu = name[len("rho"):].split("_mu")
+    return float(rho), float(mu)
+
+
+def grid(args):
+    values = [[float(x) for x in text.split(",")] for text in (args.rho, args.mu)]
+    return [(rho, mu) for rho in values[0] for mu in values[1]]
+
+
+def result_path(rho, mu):
+    return os.path.join(SWEEP_DIR, point_name(rho, mu), "result.json")
+
+
+def parameters(rho, mu, eom_terms=2):
+    return {"Fstar": 1.0, "V": V_START, "yfp": 0.0, "rho": math.radians(rho),
+            "mu": math.radians(mu), "eom_terms": eom_terms}
+
+
+def check(points):
+    import mlgmodel
+    bad = []
+    for rho, mu in points:
+        try:
+            mlgmodel.Model("figures", **parameters(rho, mu)).check()
+        except ValueError as exc:
+            bad.append(f"rho = {rho:g} deg, mu = {mu:g} deg: {exc}")
+    if bad:
+        sys.exit("sweep: grid rejected before any AUTO run:\n  " + "\n  ".join(bad))
+    print(f"sweep: {len(points)} grid points valid")
+
+
+def run_point(name):
+    import diagrams as dg
+    rho, mu = parse_point(name)
+    started = time.monotonic()
+    start = dg.Start("figures", **parameters(rho, mu))      # validates first
+    hopf = dg.hopf_points(dg.rundir(os.path.join("sweep", name)), "hb", start, V_STOP)
+    result = {"rho_deg": rho, "mu_deg": mu, "hopf_V": [p["V"] for p in hopf],
+              "critical_V": hopf[0]["V"] if hopf else None,
+              "seconds": round(time.monotonic() - started, 2)}
+    with open(result_path(rho, mu), "w") as out:
+        json.dump(result, out, indent=1)
+    print(f"sweep: {name}: critical speed "
+          + (f"{result['critical_V']:.3f} m/s" if hopf else f"> {V_STOP:g} m/s"))
+
+
+def summary(points):
+    import matplotlib.pyplot as plt
+    import numpy
+    import diagrams as dg
+    rhos = sorted({rho for rho, _ in points})
+    mus = sorted({mu for _, mu in points})
+    speed = numpy.full((len(mus), len(rhos)), numpy.nan)
+    for rho, mu in points:
+        with open(result_path(rho, mu)) as f:
+            value = json.load(f)["critical_V"]
+        speed[mus.index(mu), rhos.index(rho)] = numpy.nan if value is None else value
+        print(f"sweep: rho = {rho:6g} deg, mu = {mu:6g} deg: critical speed "
+              + (f"{value:.3f} m/s" if value is not None else f"> {V_STOP:g} m/s"))
+    fig, ax = plt.subplots(figsize=(5.5, 4.5))
+    mesh = ax.imshow(speed, origin="lower", cmap="viridis", aspect="auto",
+                     extent=(-0.5, len(rhos) - 0.5, -0.5, len(mus) - 0.5))
+    for i in range(len(mus)):
+        for j in range(len(rhos)):
+            text = "> 600" if numpy.isnan(speed[i, j]) else f"{speed[i, j]:.1f}"
+            ax.text(j, i, text, ha="center", va="center", color="w", fontsize=8)
+    ax.set_xticks(range(len(rhos)), [f"{r:g}" for r in rhos])
+    ax.set_yticks(range(len(mus)), [f"{m:g}" for m in mus])
+    ax.set_xlabel(r"$\rho$ [deg]")
+    ax.set_ylabel(r"$\mu$ [deg]")
+    ax.grid(False)
+    fig.colorbar(mesh, label="critical shimmy speed [m/s]")
+    ax.set_title("First Hopf point of straight rolling\n"
+                 "zero freeplay, F* = 1, `figures` set, eom_terms = 2")
+    dg.save(fig, "sweep_critical_speed")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("command", choices=["check", "targets", "jobs", "point", "summary"])
+    parser.add_argument("name", nargs="?", help="rho<deg>_mu<deg> (point only)")
+    parser.add_argument("--rho", default=DEFAULT_GRID, help="rho values [deg], comma-separated")
+    parser.add_argument("--mu", default=DEFAULT_GRID, help="mu values [deg], comma-separated")
+    args = parser.parse_args()
+    points = grid(args)
+    if args.command == "targets":
+        print(" ".join(os.path.relpath(result_path(*p), ROOT) for p in points))
+    elif args.command == "jobs":
+        for rho, mu in points:
+            print(f"cd {shlex.quote(ROOT)} && {shlex.quote(sys.executable)} drivers/sweep.py "
+                  f"point {point_name(rho, mu)}")
+    elif args.command == "check":
+        check(points)
+    elif args.command == "point":
+        if args.name is None:
+            parser.error("point needs rho<deg>_mu<deg>")
+        try:
+            run_point(args.name)
+        except ValueError as exc:
+            sys.exit(f"sweep: {args.name} rejected: {exc}")
+    else:
+        summary(points)
+
+
+if __name__ == "__main__":
+    main()
