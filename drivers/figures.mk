@@ -26,7 +26,7 @@ FIGURES += fig07 fig09
 REGRESS_FIGURES += fig07 fig09
 REGRESS_QUICK += fig07 fig09
 TEST_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
-TEST_PROGRAMS += tests/test_auto_plugin.py
+TEST_PROGRAMS += tests/test_auto_plugin.py tests/test_sidestay_drivers.py
 BENCH_PROGRAMS += tests/bench/bench_auto_jacobian.py
 
 # Freeplay figures (y_fp = 1 mm, epsilon = 0.1 y_fp); fig06 needs no AUTO.
