@@ -48,6 +48,18 @@ static inline dual torque_link_force(dual k_tlk, dual y, dual yfp, dual eps)
     return d_mulc(d_mul(k_tlk, d_add(t1, t2)), 1.0 / MLG_PI);
 }
 
+/* Antiderivatives of the two terms of eq. (15), with x = y +- y_fp:
+ * x (pi/2 - atan(x/eps)) -> pi x^2/4 - atan_part(x),  x (pi/2 + atan(x/eps)) -> pi x^2/4 + atan_part(x) */
+static inline dual atan_part(dual x, dual eps)
+{
+    return d_mulc(d_sub(d_mul(d_add(d_sq(x), d_sq(eps)), d_atan(d_div(x, eps))), d_mul(eps, x)), 0.5);
+}
+
+static inline dual square_part(dual x)
+{
+    return d_mulc(d_sq(x), 0.25 * MLG_PI);
+}
+
 /* Potential of the torque links [J] at apex deflection y [m]: the integral of
  * torque_link_force from 0 to y, in closed form (eq. 15; eq. 14 for eps == 0). */
 static inline dual torque_link_energy(dual k_tlk, dual y, dual yfp, dual eps)
@@ -56,18 +68,11 @@ static inline dual torque_link_energy(dual k_tlk, dual y, dual yfp, dual eps)
         dual out = d_sub(d_abs(y), yfp);
         return out.v > 0.0 ? d_mulc(d_mul(k_tlk, d_sq(out)), 0.5) : d_const(0.0);
     }
-    /* x (pi/2 - atan(x/eps)) integrates to pi x^2/4 - (x^2 + eps^2) atan(x/eps)/2 + eps x/2,
-     * x (pi/2 + atan(x/eps)) to pi x^2/4 + (x^2 + eps^2) atan(x/eps)/2 - eps x/2 */
-#define MLG_ATAN_PART(x) d_mulc(d_add(d_mul(d_add(d_sq(x), d_sq(eps)), d_atan(d_div(x, eps))),  \
-                                      d_neg(d_mul(eps, x))), 0.5)
-#define MLG_SQUARE_PART(x) d_mulc(d_sq(x), 0.25 * MLG_PI)
     dual yp = d_add(y, yfp), ym = d_sub(y, yfp), yfp_neg = d_neg(yfp);
-    dual lower = d_sub(MLG_SQUARE_PART(yp), MLG_ATAN_PART(yp));
-    lower = d_sub(lower, d_sub(MLG_SQUARE_PART(yfp), MLG_ATAN_PART(yfp)));
-    dual upper = d_add(MLG_SQUARE_PART(ym), MLG_ATAN_PART(ym));
-    upper = d_sub(upper, d_add(MLG_SQUARE_PART(yfp_neg), MLG_ATAN_PART(yfp_neg)));
-#undef MLG_ATAN_PART
-#undef MLG_SQUARE_PART
+    dual lower = d_sub(d_sub(square_part(yp), atan_part(yp, eps)),
+                       d_sub(square_part(yfp), atan_part(yfp, eps)));
+    dual upper = d_sub(d_add(square_part(ym), atan_part(ym, eps)),
+                       d_add(square_part(yfp_neg), atan_part(yfp_neg, eps)));
     return d_mulc(d_mul(k_tlk, d_add(lower, upper)), 1.0 / MLG_PI);
 }
 

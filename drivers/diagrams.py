@@ -31,7 +31,6 @@ class Start:
     validated by the c/ library before AUTO starts."""
 
     def __init__(self, parameter_set="figures", **values):
-        self.parameter_set, self.values = parameter_set, dict(values)
         self.model = mlgmodel.Model(parameter_set, **values)
         self.model.check()
         self.U = self.model.equilibrium()
@@ -49,37 +48,6 @@ def equilibria(rundir, name, start, parameter="V", stop=None, **kw):
     """Straight rolling continued in `parameter` from `start`."""
     return run(rundir, name, "equilibria", PAR=start.PAR, U=start.U,
                ICP=[parameter] + MEASURES, UZSTOP=stop or {}, **kw)
-
-
-def unstable_pairs(start, V):
-    """Number of complex eigenvalue pairs of straight rolling with Re > 0 at V
-    (the library's exact Jacobian; straight rolling does not depend on V)."""
-    model = mlgmodel.Model(**{"parameter_set": start.parameter_set, **start.values, "V": V})
-    eig = numpy.linalg.eigvals(numpy.array(model.jacobian([start.U[n] for n in mlgmodel.UNAMES])))
-    return int(numpy.sum((eig.real > 0) & (eig.imag > 0)))
-
-
-def hopf_points(rundir, name, start, stop, step=0.25):
-    """Every Hopf point of straight rolling in V in [start V, stop], as AUTO
-    HB points (a list of one-point diagrams, in V order).
-
-    AUTO's Hopf test function follows the eigenvalue nearest the imaginary
-    axis, which here is the lightly damped axial mode: crossings of other
-    pairs are missed unless a step lands within a few hundredths of a m/s.
-    So the library's eigenvalues bracket each crossing on a grid of `step`
-    m/s, and a short AUTO run with steps of step/100 through each bracket
-    locates it."""
-    grid = numpy.arange(start.PAR["V"], stop + step / 2, step)
-    counts = [unstable_pairs(start, V) for V in grid]
-    found = []
-    for k in range(1, len(grid)):
-        if counts[k] == counts[k - 1]:
-            continue
-        sub = Start(start.parameter_set, **{**start.values, "V": grid[k - 1]})
-        fine = equilibria(rundir, f"{name}_{len(found) + 1}", sub, stop={"V": grid[k]},
-                          DS=step / 100, DSMAX=step / 100, NMX=1000, expect=["HB"])
-        found.append(fine("HB1"))
-    return found
 
 
 def periodic_from(rundir, name, point, parameter="V", stop=None, **kw):

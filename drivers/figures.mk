@@ -47,8 +47,9 @@ SWEEP_RHO ?= -10,0,10
 SWEEP_MU ?= -10,0,10
 SWEEP_GRID := --rho=$(SWEEP_RHO) --mu=$(SWEEP_MU)
 SWEEP_RESULTS := $(shell $(PYTHON) drivers/sweep.py targets $(SWEEP_GRID))
+SWEEP_ROOT := $(abspath $(or $(MLG_RUN_ROOT),build))/sweep
 comma := ,
-SWEEP_CHECKED := build/sweep/grid$(subst $(comma),_,$(SWEEP_RHO))x$(subst $(comma),_,$(SWEEP_MU)).ok
+SWEEP_CHECKED := $(SWEEP_ROOT)/grid$(subst $(comma),_,$(SWEEP_RHO))x$(subst $(comma),_,$(SWEEP_MU)).ok
 
 .PHONY: sweep
 sweep: $(SWEEP_RESULTS)
@@ -59,5 +60,5 @@ $(SWEEP_CHECKED): $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/sweep.py check $(SWEEP_GRID)
 	touch $@
 
-build/sweep/%/result.json: $(SWEEP_CHECKED) $(AUTO_DRIVER_DEPS)
+$(SWEEP_ROOT)/%/result.json: $(SWEEP_CHECKED) $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/sweep.py point $*

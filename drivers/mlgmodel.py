@@ -133,15 +133,6 @@ class Model:
             raise RuntimeError(f"energy: {_lib.mlg_status_text(status).decode()}")
         return out.kinetic, out.potential
 
-    def jacobian(self, u):
-        """df/du at the state u (a sequence in U order), as rows: J[i][j] = df_i/du_j."""
-        x = (ctypes.c_double * NX)(*u)
-        f, J = (ctypes.c_double * NX)(), (ctypes.c_double * (NX * NX))()
-        status = _lib.mlg_rhs_jacobian(ctypes.byref(self._p), x, f, J, None)
-        if status != 0:
-            raise RuntimeError(f"jacobian: {_lib.mlg_status_text(status).decode()}")
-        return [[J[i + NX * j] for j in range(NX)] for i in range(NX)]
-
     def r_tlk(self, eta):
         return _lib.mlg_r_tlk(ctypes.byref(self._p), eta)
 

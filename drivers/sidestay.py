@@ -13,10 +13,10 @@ Angles outside the model's range stop the driver before any AUTO run.
 """
 import argparse
 import math
-import os
 import sys
 
 import matplotlib.pyplot as plt
+import numpy
 
 import autoglue
 import diagrams as dg
@@ -24,8 +24,7 @@ import diagrams as dg
 V_START, V_STOP = 0.5, 600.0      # at V = 0 the tyre states are undetermined (docs 4.20)
 FSTAR_RANGE = [0.1, 3.5]
 PSI_AMP_STOP = 0.2                 # rad: larger orbits approach wheel lift-off
-# Orbits of the freeplay case live down to V ~ 1 m/s: steps small enough that
-# no predictor step leaves V >= 0 (the AUTO plugin stops on V < 0).
+# Orbits of the freeplay case live down to V ~ 1 m/s: small steps there.
 ORBIT_STEPS = {"fp0": {}, "fp1": {"DS": 0.1, "DSMAX": 0.4, "NMX": 2000}}
 CASES = (("zero freeplay", "fp0", {"yfp": 0.0}),
          ("$y_{fp}$ = 1 mm, $\\epsilon$ = 0.1 mm", "fp1", {"yfp": 1.0, "eps_abs": 0.0,
@@ -36,44 +35,61 @@ def name_of(rho_deg, mu_deg):
     return f"sidestay_rho{rho_deg:g}_mu{mu_deg:g}"
 
 
+def case_values(rho_deg, mu_deg, eom_terms):
+    """{case tag: parameter values}."""
+    angles = {"rho": math.radians(rho_deg), "mu": math.radians(mu_deg), "eom_terms": eom_terms}
+    return {tag: {"Fstar": 1.0, **angles, **values} for _, tag, values in CASES}
+
+
 def starts(rho_deg, mu_deg, eom_terms):
     """{case tag: Start}; validates every parameter set first (ValueError)."""
-    angles = {"rho": math.radians(rho_deg), "mu": math.radians(mu_deg), "eom_terms": eom_terms}
-    return {tag: dg.Start("figures", Fstar=1.0, V=V_START, **angles, **values)
-            for _, tag, values in CASES}
+    return {tag: dg.Start("figures", V=V_START, **values)
+            for tag, values in case_values(rho_deg, mu_deg, eom_terms).items()}
 
 
-def attempt(rundir, name, run, notes):
-    """run() -> diagram.  A branch that ends without convergence (MX) is kept up
-    to there; a run AUTO could not finish gives None.  Either is noted."""
+def hopf_points(rundir, tag, values):
+    """AUTO's HB points of straight rolling in V in [V_START, V_STOP], each
+    found by the library's eigenvalue scan (0.2 m/s grid), located by AUTO."""
+    grid = numpy.linspace(V_START, V_STOP, 3000)
+    speeds = [v for v, kind, _ in dg.stability_changes("figures", "V", grid, **values)
+              if kind == "HB"]
+    return [dg.hopf_point(rundir, f"hb_{tag}_{k}", "figures", "V", v, **values)
+            for k, v in enumerate(speeds, 1)]
+
+
+def attempt(name, run, notes):
+    """run() -> diagram, run with allow_mx: a branch that ends without
+    convergence (MX) is kept up to there; a run that fails gives None.  Either
+    is noted."""
     try:
-        return run()
+        bd = run()
     except autoglue.RunError as exc:
-        files = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
-        kept = all(map(os.path.exists, files))
-        notes.append(f"{exc}" + (" (kept up to there)" if kept else ""))
-        return autoglue.auto.bifDiag.bifDiag(*files) if kept else None
+        notes.append(str(exc))
+        return None
+    if any(ty == "MX" for _, _, ty in autoglue.special_points(bd)):
+        notes.append(f"run {name}: ends without convergence (MX), kept up to there")
+    return bd
 
 
 def compute(rho_deg, mu_deg, eom_terms):
     """{case tag: (equilibria, [HB points], [orbits], [Hopf curves], [notes])}."""
     where = starts(rho_deg, mu_deg, eom_terms)
+    values = case_values(rho_deg, mu_deg, eom_terms)
     rundir = dg.rundir(name_of(rho_deg, mu_deg))
     result = {}
     for _, tag, _ in CASES:
-        start = where[tag]
-        eq = dg.equilibria(rundir, f"eq_{tag}", start, stop={"V": V_STOP})
-        hopf = dg.hopf_points(rundir, f"hb_{tag}", start, V_STOP)
+        eq = dg.equilibria(rundir, f"eq_{tag}", where[tag], stop={"V": V_STOP})
+        hopf = hopf_points(rundir, tag, values[tag])
         orbits, curves, notes = [], [], []
         for k, point in enumerate(hopf, 1):
             name = f"po_{tag}_{k}"
-            orbits.append(attempt(rundir, name, lambda: dg.periodic_from(
+            orbits.append(attempt(name, lambda: dg.periodic_from(
                 rundir, name, point, stop={"V": [V_START, V_STOP], "psi_amp": PSI_AMP_STOP},
-                **ORBIT_STEPS[tag]), notes))
+                allow_mx=True, **ORBIT_STEPS[tag]), notes))
             for direction, ds in (("up", 0.01), ("down", -0.01)):
                 name = f"hopf_{tag}_{k}_{direction}"
-                curves.append(attempt(rundir, name, lambda: dg.hopf_curve(
-                    rundir, name, point, DS=ds,
+                curves.append(attempt(name, lambda: dg.hopf_curve(
+                    rundir, name, point, DS=ds, allow_mx=True,
                     stop={"Fstar": FSTAR_RANGE, "V": [V_START, V_STOP]}), notes))
         result[tag] = (eq, hopf, [o for o in orbits if o is not None],
                        [c for c in curves if c is not None], notes)

@@ -24,7 +24,9 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SWEEP_DIR = os.path.join(ROOT, "build", "sweep")
+# as autoglue.RUN_ROOT, without importing AUTO (make reads `targets` at parse time)
+SWEEP_DIR = os.path.join(os.path.abspath(os.environ.get("MLG_RUN_ROOT",
+                                                        os.path.join(ROOT, "build"))), "sweep")
 DEFAULT_GRID = "-10,0,10"
 V_START, V_STOP = 0.5, 600.0
 
@@ -48,8 +50,8 @@ def result_path(rho, mu):
 
 
 def parameters(rho, mu, eom_terms=2):
-    return {"Fstar": 1.0, "V": V_START, "yfp": 0.0, "rho": math.radians(rho),
-            "mu": math.radians(mu), "eom_terms": eom_terms}
+    return {"Fstar": 1.0, "yfp": 0.0, "rho": math.radians(rho), "mu": math.radians(mu),
+            "eom_terms": eom_terms}
 
 
 def check(points):
@@ -57,7 +59,7 @@ def check(points):
     bad = []
     for rho, mu in points:
         try:
-            mlgmodel.Model("figures", **parameters(rho, mu)).check()
+            mlgmodel.Model("figures", V=V_START, **parameters(rho, mu)).check()
         except ValueError as exc:
             bad.append(f"rho = {rho:g} deg, mu = {mu:g} deg: {exc}")
     if bad:
@@ -66,13 +68,18 @@ def check(points):
 
 
 def run_point(name):
+    import numpy
     import diagrams as dg
     rho, mu = parse_point(name)
     started = time.monotonic()
-    start = dg.Start("figures", **parameters(rho, mu))      # validates first
-    hopf = dg.hopf_points(dg.rundir(os.path.join("sweep", name)), "hb", start, V_STOP)
-    result = {"rho_deg": rho, "mu_deg": mu, "hopf_V": [p["V"] for p in hopf],
-              "critical_V": hopf[0]["V"] if hopf else None,
+    values = parameters(rho, mu)
+    dg.Start("figures", V=V_START, **values)                 # validates first
+    grid = numpy.linspace(V_START, V_STOP, 3000)
+    first = [v for v, kind, _ in dg.stability_changes("figures", "V", grid, **values)
+             if kind == "HB"][:1]
+    hopf = [dg.hopf_point(dg.rundir(os.path.join("sweep", name)), "hb1", "figures", "V", v,
+                          **values) for v in first]
+    result = {"rho_deg": rho, "mu_deg": mu, "critical_V": hopf[0]["V"] if hopf else None,
               "seconds": round(time.monotonic() - started, 2)}
     with open(result_path(rho, mu), "w") as out:
         json.dump(result, out, indent=1)
@@ -120,7 +127,7 @@ def main():
     args = parser.parse_args()
     points = grid(args)
     if args.command == "targets":
-        print(" ".join(os.path.relpath(result_path(*p), ROOT) for p in points))
+        print(" ".join(result_path(*p) for p in points))
     elif args.command == "jobs":
         for rho, mu in points:
             print(f"cd {shlex.quote(ROOT)} && {shlex.quote(sys.executable)} drivers/sweep.py "
