@@ -48,7 +48,6 @@ class _Energy(ctypes.Structure):
 
 
 _lib.mlg_energy.argtypes = [_P, _D, ctypes.c_double, ctypes.POINTER(_Energy)]
-_lib.mlg_rhs_jacobian.argtypes = [_P, _D, _D, _D, _D]
 
 
 def _name(getter, k):
