@@ -18,6 +18,12 @@ sidestay: $(AUTO_DRIVER_DEPS)
 	$(if $(and $(RHO),$(MU)),,$(error make sidestay needs RHO=<deg> MU=<deg>))
 	$(PYTHON) drivers/sidestay.py --rho $(RHO) --mu $(MU)
 
+# The non-zero geometry with a regression reference (tests/reference/).
+.PHONY: sidestay_rho10_mu10
+sidestay_rho10_mu10: $(AUTO_DRIVER_DEPS)
+	$(PYTHON) drivers/sidestay.py --rho 10 --mu 10
+REGRESS_FIGURES += sidestay_rho10_mu10
+
 # The c_psi of the `figures` set (MLG_C_PSI_FIGURES in c/parameters.c).
 calibrate: $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/calibrate_c_psi.py
