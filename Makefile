@@ -56,6 +56,7 @@ include mk/auto.mk
 -include c/simulate/simulate.mk
 -include models/models.mk
 -include drivers/figures.mk
+-include drivers/magnitude.mk
 -include tests/regression/regression.mk
 
 setup: packages auto

@@ -1,0 +1,98 @@
+"""Fig. 14: freeplay magnitude at a fixed smoothing width eps = 0.1 mm
+(section IV.D.2), F* = 1: (a-f) diagrams in V for y_fp = 0.05, 0.098, 0.11,
+0.15, 0.35, 1.0 mm beside their stiffness profiles, (g, h) amplitude and
+frequency of the stable orbits at V = 15, 50, 80, 110 m/s continued in y_fp,
+with the Hopf curves in (y_fp, V) dot-dashed in (h)."""
+import sys
+
+import matplotlib.pyplot as plt
+import numpy
+
+import autoglue
+import diagrams as dg
+import magnitude as mg
+import mlgmodel
+
+FREEPLAYS = (0.05, 0.098, 0.11, 0.15, 0.35, 1.0)
+
+
+def compute(where="fig14"):
+    rundir = dg.rundir(where)
+    diagrams = {y: mg.diagram_in_V(rundir, f"y{y:g}", "fixed", y, figure="fig14")
+                for y in FREEPLAYS}
+    orbits = mg.orbits_in_yfp(rundir, diagrams[1.0], figure="fig14")
+    curves = mg.hopf_curves(rundir, "hopf", "fixed", figure="fig14")
+    return diagrams, orbits, curves
+
+
+def lowest_orbit(runs):
+    """(y_fp, kind) where the orbit family reaches its smallest y_fp: a fold
+    in y_fp ('LP') or the end of the continuation next to a Hopf point ('H')."""
+    ys, _, _ = mg.orbit_curve(runs, "psi_amp")
+    down = runs[0][0]
+    folds = [down["yfp"][i] for i, _ in mg.labelled(down, "LP")]
+    y_min = float(ys.min())
+    kind = "LP" if folds and abs(min(folds) - y_min) < 1e-9 else "H"
+    return y_min, kind
+
+
+def numbers(diagrams, orbits):
+    rows = []
+    for y, d in diagrams.items():
+        rows.append((f"Hopf speeds, y_fp = {y:g} mm [m/s]",
+                     ", ".join(f"{V:.4f}" for V, _ in d.hopf) or "none in (0.5, 200)", None))
+        rows.append((f"fold speeds, y_fp = {y:g} mm [m/s]",
+                     ", ".join(f"{V:.4f}" for *_, V, _ in d.folds()) or "none", None))
+    for V, runs in orbits.items():
+        y_min, kind = lowest_orbit(runs)
+        hopf = ", ".join(f"{y:.5f}" for y, k, _ in mg.yfp_thresholds("fixed", V) if k == "HB")
+        rows.append((f"V = {V:g}: orbits exist for y_fp above [mm]",
+                     f"{y_min:.5f} ({'fold' if kind == 'LP' else 'Hopf'})", "threshold (figure)"))
+        rows.append((f"V = {V:g}: Hopf points of straight rolling in y_fp [mm]", hopf, None))
+    return rows
+
+
+def plot(diagrams, orbits, curves):
+    fig = plt.figure(figsize=(12, 12))
+    grid = fig.add_gridspec(4, 6)
+    k_tlk = mlgmodel.Model("figures")["k_tlk"]
+    for n, (y, d) in enumerate(diagrams.items()):
+        row, col = divmod(n, 2)
+        ax = fig.add_subplot(grid[row, 3 * col:3 * col + 2])
+        mg.plot_diagram(ax, d, None, None)
+        ax.set(xlim=(0, mg.V_MAX), xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]",
+               title=f"({'abcdef'[n]}) $y_{{fp}}$ = {y:g} mm")
+        inset = fig.add_subplot(grid[row, 3 * col + 2])
+        ys, force = mg.profile(y, "fixed", k_tlk, span=max(3.0, 0.6 / y))
+        inset.plot(ys, force / 1e3, color="k", lw=1)
+        inset.set(xlabel="$y_{tlk}$ [mm]", ylabel=r"$M_{k\psi}/r_{tlk}$ [kN]")
+    ax_amp = fig.add_subplot(grid[3, 0:3])
+    ax_freq = fig.add_subplot(grid[3, 3:6])
+    mg.plot_orbits(ax_amp, ax_freq, orbits)
+    label = "Hopf curves"
+    for curve in curves:
+        for run in curve:
+            ax_freq.plot(run[0]["yfp"], 1.0 / numpy.asarray(run[0]["T"]), "k-.", lw=0.9,
+                         label=label)
+            label = None
+    ax_freq.legend(fontsize=7)
+    ax_amp.set(xscale="log", title="(g) orbits at fixed V continued in $y_{fp}$")
+    ax_freq.set(xscale="log", ylim=(0, 45), title="(h) their frequency; Hopf curves dot-dashed")
+    fig.suptitle(r"Fig. 14: $F^*$ = 1, $\epsilon$ = 0.1 mm (solid stable, dashed unstable; "
+                 "circles H, squares S)")
+    fig.tight_layout()
+    dg.save(fig, "fig14")
+
+
+def main():
+    try:
+        diagrams, orbits, curves = compute()
+        rows = numbers(diagrams, orbits)
+    except (autoglue.RunError, ValueError, RuntimeError) as exc:
+        sys.exit(f"fig14: {exc}")
+    mg.write_numbers("fig14", rows)
+    plot(diagrams, orbits, curves)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,147 @@
+"""Fig. 18: the points a, b, c of Fig. 17 continued in F* (eps = 0.1 mm), the
+regions of the (y_fp/eps, F*) plane by what straight rolling does for V up to
+120 m/s, and the largest envelope 0 < y_fp/eps < kappa*, F* in [0.1, 2],
+inside R1.  Writes kappa* to build/figures/fig18.json for Fig. 19.
+
+a, b, c and the region map come from the eigenvalues of straight rolling
+(magnitude.window_points, magnitude.growth) on an F* grid; a and b are also
+continued by AUTO as curves of Hopf points at V = 120 m/s in (y_fp, F*) as a
+check."""
+import json
+import os
+import sys
+
+import matplotlib.pyplot as plt
+import numpy
+from matplotlib.colors import ListedColormap
+
+import autoglue
+import diagrams as dg
+import magnitude as mg
+
+FSTARS = numpy.round(numpy.arange(0.1, 2.0001, 0.05), 3)   # F* = 0 lifts a wheel off
+MAP_KAPPA = numpy.geomspace(0.05, 8.0, 50)
+MAP_SPEEDS = numpy.linspace(mg.V_MIN, mg.V_LIMIT, 30)
+REGIONS = ("R1", "R2", "gentle oscillations", "high-frequency shimmy", "static yaw")
+COLOURS = ("white", "tab:cyan", "khaki", "salmon", "0.7")
+
+
+def region(Fstar, kappa, b):
+    """Index in REGIONS of what straight rolling does for V <= 120 m/s."""
+    worst = {band: max(mg.growth(Fstar, kappa * mg.EPSILON, V)[band] for V in MAP_SPEEDS)
+             for band in mg.BANDS}
+    if worst["high"] > 0:
+        return 3
+    if worst["real"] > 0:
+        return 4
+    if worst["low"] > 0:
+        return 2
+    return 0 if b is None or kappa * mg.EPSILON < b else 1
+
+
+def auto_check(rundir):
+    """a and b continued by AUTO in (y_fp, F*) at V = 120 from F* = 1:
+    {name: [runs]}; a run that fails is reported and left out."""
+    window = mg.window_points(mg.FSTAR)
+    vals = {"Fstar": mg.FSTAR, "V": mg.V_LIMIT, **mg.SCALINGS["fixed"]}
+    out = {}
+    for name in ("a", "b"):
+        hb = dg.hopf_point(rundir, f"{name}_hb", "figures", "yfp", window[name],
+                           width=0.05 * window[name], **vals)
+        out[name] = []
+        for d, ds in (("up", 0.01), ("down", -0.01)):
+            try:
+                out[name].append(dg.run(rundir, f"{name}_{d}", "hopf_curve", data=hb,
+                                        ICP=["Fstar", "yfp"] + dg.MEASURES + [11], DS=ds,
+                                        DSMAX=0.02, UZSTOP={"Fstar": [FSTARS[0], FSTARS[-1]]}))
+                mg.progress("fig18", f"AUTO: {name} continued {d} in F*")
+            except autoglue.RunError as exc:
+                mg.progress("fig18", f"AUTO: {name} continued {d} in F* FAILED: {exc}")
+    return out
+
+
+def compute(where="fig18"):
+    rundir = dg.rundir(where)
+    points = []
+    for Fstar in FSTARS:
+        points.append(mg.window_points(Fstar))
+        p = points[-1]
+        mg.progress("fig18", f"F* = {Fstar:.2f}: a {p['a']}, b {p['b']}, c {p['c']:.5g} "
+                             f"(V {p['V_c']:.3g}), pitchfork {p['p']:.5g}")
+    grid = numpy.array([[region(p["Fstar"], k, p["b"]) for k in MAP_KAPPA] for p in points])
+    mg.progress("fig18", "region map done")
+    return points, grid, auto_check(rundir)
+
+
+def kappa_star(points):
+    """min over F* of the smallest y_fp/eps with unstable straight rolling:
+    the grid minimum, refined on a grid 10 times finer around it."""
+    best = min(points, key=lambda p: p["first"])
+    step = FSTARS[1] - FSTARS[0]
+    fine = numpy.linspace(max(FSTARS[0], best["Fstar"] - step),
+                          min(FSTARS[-1], best["Fstar"] + step), 21)
+    best = min([best] + [mg.window_points(F) for F in fine], key=lambda p: p["first"])
+    return best["first"] / mg.EPSILON, best
+
+
+def numbers(points, auto, kappa, best):
+    rows = [("kappa* (envelope 0 < y_fp/eps < kappa*, F* in [0.1, 2])",
+             f"{kappa:.4f} at F* = {best['Fstar']:.2f} ({best['first_mode']} mode, "
+             f"V = {best['first_V']:.1f})", "not printed")]
+    for p in points:
+        if abs(p["Fstar"] - round(p["Fstar"], 1)) < 1e-9 and round(p["Fstar"] * 10) % 2 == 0:
+            rows.append((f"F* = {p['Fstar']:.1f}: a, b, c, pitchfork [y_fp/eps]",
+                         ", ".join("-" if p[k] is None or not numpy.isfinite(p[k])
+                                   else f"{p[k] / mg.EPSILON:.4f}" for k in "abcp"), None))
+    for name, runs in auto.items():
+        for run in runs:
+            Fs, ys = numpy.asarray(run[0]["Fstar"]), numpy.asarray(run[0]["yfp"])
+            scan = numpy.array([p[name] for p in points], dtype=float)
+            inside = (Fs >= FSTARS[0]) & (Fs <= FSTARS[-1])
+            diff = numpy.abs(numpy.interp(Fs[inside], FSTARS, scan) - ys[inside])
+            rows.append((f"check: AUTO curve {name}, F* {Fs.min():.3f}-{Fs.max():.3f}: "
+                         "largest |AUTO - eigenvalue scan| [mm]", f"{diff.max():.2e}", None))
+    return rows
+
+
+def plot(points, grid, auto, kappa):
+    fig, ax = plt.subplots(figsize=(7.5, 5.5))
+    edges_k = numpy.sqrt(MAP_KAPPA[1:] * MAP_KAPPA[:-1])
+    edges_k = numpy.r_[MAP_KAPPA[0] ** 2 / edges_k[0], edges_k, MAP_KAPPA[-1] ** 2 / edges_k[-1]]
+    edges_F = numpy.r_[FSTARS - 0.025, FSTARS[-1] + 0.025]
+    ax.pcolormesh(edges_k, edges_F, grid, cmap=ListedColormap(COLOURS), vmin=-0.5,
+                  vmax=len(REGIONS) - 0.5, alpha=0.8)
+    Fs = [p["Fstar"] for p in points]
+    for name, style in (("a", "b-"), ("b", "b--"), ("c", "g-"), ("p", "k:")):
+        ys = [numpy.nan if p[name] is None else p[name] / mg.EPSILON for p in points]
+        ax.plot(ys, Fs, style, lw=1.6, label=name if name != "p" else "pitchfork")
+    for name, runs in auto.items():
+        for run in runs:
+            ax.plot(numpy.asarray(run[0]["yfp"]) / mg.EPSILON, run[0]["Fstar"], "w:", lw=1)
+    ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
+                               FSTARS[-1] - FSTARS[0], fill=False, hatch="//", lw=1.2))
+    for colour, name in zip(COLOURS, REGIONS):
+        ax.fill_between([], [], color=colour, label=name)
+    ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0] - 0.025, 2.025),
+           xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$",
+           title=rf"Fig. 18: straight rolling for V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm "
+                 rf"(hatched: $y_{{fp}}/\epsilon < \kappa^*$ = {kappa:.3f})")
+    ax.legend(fontsize=7, loc="lower right", framealpha=0.9)
+    dg.save(fig, "fig18")
+
+
+def main():
+    try:
+        points, grid, auto = compute()
+    except (autoglue.RunError, ValueError, RuntimeError) as exc:
+        sys.exit(f"fig18: {exc}")
+    kappa, best = kappa_star(points)
+    mg.progress("fig18", "kappa* refined")
+    mg.write_numbers("fig18", numbers(points, auto, kappa, best))
+    with open(os.path.join(autoglue.FIGURES_DIR, "fig18.json"), "w") as out:
+        json.dump({"kappa_star": kappa, "Fstar": best["Fstar"]}, out)
+    plot(points, grid, auto, kappa)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,53 @@
+"""Fig. 19: the rescaled stiffness profiles allowed by y_fp/eps < kappa*
+(kappa* from Fig. 18, read from build/figures/fig18.json): every allowed
+profile lies between the kappa* profile and the eps -> infinity limit
+y* = x* (no freeplay felt)."""
+import json
+import os
+import sys
+
+import matplotlib.pyplot as plt
+import numpy
+
+import autoglue
+import diagrams as dg
+import magnitude as mg
+import mlgmodel
+
+SPAN = 3.0
+
+
+def rescaled(kappa, x):
+    """Eq. (15) rescaled (x* = y_tlk/y_fp, y* = M_kpsi/(r_tlk k_tlk y_fp)) for
+    y_fp/eps = kappa: the profile of y_fp = 1 mm, eps = 1/kappa mm."""
+    return numpy.array([mlgmodel.torque_link_force(1.0, 1e-3 * v, 1e-3, 1e-3 / kappa) / 1e-3
+                        for v in x])
+
+
+def main():
+    path = os.path.join(autoglue.FIGURES_DIR, "fig18.json")
+    if not os.path.exists(path):
+        sys.exit(f"fig19: {path} is missing (make fig18)")
+    with open(path) as source:
+        kappa = json.load(source)["kappa_star"]
+    x = numpy.linspace(-SPAN, SPAN, 601)
+    limit = rescaled(kappa, x)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    ax.fill_between(x, limit, x, color="tab:cyan", alpha=0.4,
+                    label=rf"allowed: $y_{{fp}}/\epsilon < \kappa^*$ = {kappa:.3f}")
+    ax.plot(x, limit, color="tab:blue", lw=1.4, label=r"$y_{fp}/\epsilon = \kappa^*$")
+    ax.plot(x, x, "k--", lw=1, label=r"$\epsilon \to \infty$")
+    ax.plot(x, rescaled(10.0, x), color="tab:red", lw=1,
+            label=r"$y_{fp}/\epsilon$ = 10 (section IV.B)")
+    ax.set(xlim=(-SPAN, SPAN), xlabel=r"$x^* = y_{tlk}/y_{fp}$",
+           ylabel=r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$",
+           title="Fig. 19: allowed rescaled freeplay profiles")
+    ax.legend(fontsize=8)
+    mg.write_numbers("fig19", [("kappa* used", f"{kappa:.4f}", "not printed"),
+                               ("rescaled stiffness at x* = 0 for kappa*, dy*/dx*",
+                                f"{numpy.gradient(limit, x)[len(x) // 2]:.4f}", None)])
+    dg.save(fig, "fig19")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,407 @@
+"""Shared pieces of the freeplay-magnitude figures (Figs. 13-19, sections
+IV.D-IV.E): the two ways of varying the freeplay y_fp, one-parameter
+diagrams in V at a given y_fp, the orbits at fixed V continued in y_fp, and
+the curves of Hopf points and folds of cycles in (y_fp, V).
+
+    d = diagram_in_V(rundir, "y1", "ratio", 1.0)     # Hopf points + orbits
+    for point in stable_orbits(d, 50.0): ...         # UZ labels at V = 50
+    curves = hopf_curves(rundir, "fixed")            # in (y_fp, V)
+
+Scalings (section III): "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1,
+eps_abs = 0), "fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).
+Everything is at F* = 1 unless Fstar is passed.
+"""
+import os
+
+import numpy
+
+import autoglue
+import diagrams as dg
+import mlgmodel
+
+SCALINGS = {"ratio": {"eps_abs": 0.0, "eps_rel": 0.1},
+            "fixed": {"eps_abs": 0.1, "eps_rel": 0.0}}
+EPSILON = 0.1        # eps/y_fp ("ratio") or eps in mm ("fixed")
+FSTAR = 1.0
+V_MIN, V_MAX = 0.5, 200.0    # V = 0 is degenerate (tyre states undetermined)
+V_LIMIT = 120.0              # the speed limit of section IV.E
+V_ORBITS = (15.0, 50.0, 80.0, 110.0)
+V_SCAN = numpy.linspace(V_MIN, V_MAX, 161)
+YFP_MIN, YFP_MAX = 0.005, 2.0
+HOPF_GAP = 0.01      # periodic branches stop this far (m/s) before another Hopf point
+# Arclength weights of the oscillating states (psi, delta and their rates):
+# the orbits are 1e-4..1e-2 rad wide beside a static eta ~ 0.4 m, and without
+# weights a step across a sharp fold of cycles overshoots onto a constant
+# solution (seen at y_fp = 0.15 mm, eps = 0.1 mm, V ~ 40 m/s).
+THU = {1: 1e4, 2: 1e4, 5: 1e4, 6: 1e4}
+DSMAX_V = 0.5      # periodic branches in V: larger steps jump past the other Hopf point
+
+
+def values(scaling, yfp, Fstar=FSTAR, **more):
+    return {"Fstar": Fstar, "yfp": yfp, **SCALINGS[scaling], **more}
+
+
+def progress(figure, text):
+    print(f"{figure}: {text}", flush=True)
+
+
+def write_numbers(figure, rows):
+    """Print the figure's numbers and store them in FIGURES_DIR/<figure>.txt:
+    rows of (quantity, ours, paper or None)."""
+    lines = [f"{q}\t{ours}\t{paper if paper is not None else '-'}" for q, ours, paper in rows]
+    path = os.path.join(autoglue.FIGURES_DIR, f"{figure}.txt")
+    os.makedirs(autoglue.FIGURES_DIR, exist_ok=True)
+    with open(path, "w") as out:
+        out.write("quantity\tours (figures set)\tpaper\n" + "\n".join(lines) + "\n")
+    for line in lines:
+        print(f"{figure}: " + line.replace("\t", " | "))
+
+
+def labelled(branch, kind):
+    """[(index, label)] of the special points of one type on one branch."""
+    found = []
+    for index in branch.labels.getIndices():
+        info = branch.labels[index].get(kind)
+        if info and "LAB" in info:
+            found.append((index, info["LAB"]))
+    return found
+
+
+class Diagram:
+    """Straight rolling and its periodic branches in V at one y_fp:
+    hopf = [(V, frequency in Hz)] from the eigenvalue scan, branches = the
+    periodic runs (bifDiags), bp = speeds where a real eigenvalue crosses."""
+
+    def __init__(self, scaling, yfp, hopf, bp, branches):
+        self.scaling, self.yfp = scaling, yfp
+        self.hopf, self.bp, self.branches = hopf, bp, branches
+
+    def folds(self):
+        """[(run, label, V, psi_amp)] of every fold of cycles."""
+        return [(run, lab, run(lab)["V"], run(lab)["psi_amp"])
+                for run in self.branches for branch in run
+                for _, lab in labelled(branch, "LP")]
+
+
+def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="magnitude"):
+    """Hopf points of straight rolling in V (eigenvalue scan) and the
+    periodic branches born there, with UZ labels at the speeds `uzr`.
+
+    A branch that ends on another Hopf point is stopped HOPF_GAP before it
+    (it would collapse onto straight rolling) and that Hopf point is not
+    started again.  Raises RunError if a branch stops near another Hopf
+    speed without having shrunk onto it."""
+    vals = values(scaling, yfp, Fstar)
+    changes = dg.stability_changes("figures", "V", V_SCAN, **vals)
+    hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]
+    bp = [v for v, kind, _ in changes if kind == "BP"]
+    branches, reached = [], set()
+    for i, (V, freq) in enumerate(hopf):
+        if i in reached:
+            continue
+        hb = dg.hopf_point(rundir, f"{tag}_hb{i}", "figures", "V", V, **vals)
+        others = {j: h for j, (h, _) in enumerate(hopf) if j != i}
+        stops = [V_MIN, V_MAX] + [h + s * HOPF_GAP for h in others.values() for s in (-1, 1)]
+        run = dg.periodic_from(rundir, f"{tag}_po{i}", hb, stop={"V": stops},
+                               UZR={"V": list(uzr)}, DS=1e-4, DSMAX=DSMAX_V, DSMIN=1e-9, NMX=2000, THU=THU)
+        end = run[0]
+        if numpy.max(numpy.abs(numpy.diff(end["V"]))) > 2 * DSMAX_V:
+            raise autoglue.RunError(f"run {tag}_po{i}: a step jumped by more than "
+                                    f"{2 * DSMAX_V} m/s (switched to another branch)")
+        V_end, amp_end = end["V"][-1], end["psi_amp"][-1]
+        for j, h in others.items():
+            if abs(V_end - h) < 2 * HOPF_GAP:
+                if amp_end > 0.3 * max(end["psi_amp"]) or \
+                        abs(end["freq"][-1] - hopf[j][1]) > 0.05 * hopf[j][1]:
+                    raise autoglue.RunError(
+                        f"run {tag}_po{i}: stopped at V = {V_end:.4f} next to the Hopf point "
+                        f"{h:.4f} without shrinking onto it (psi_amp {amp_end:.3g})")
+                reached.add(j)
+        progress(figure, f"{tag}: {scaling} y_fp = {yfp:g} mm: branch from Hopf V = {V:.4f} "
+                         f"({len(end)} points, ends V = {V_end:.3f})")
+        branches.append(run)
+    return Diagram(scaling, yfp, hopf, bp, branches)
+
+
+def stable_orbits(diagram, V):
+    """[(run, label)] of the stable orbits carrying a UZ label at speed V."""
+    found = []
+    for run in diagram.branches:
+        for branch in run:
+            stable = dg.stable_mask(branch)
+            for index, lab in labelled(branch, "UZ"):
+                if abs(branch["V"][index] - V) < 1e-3 and stable[index]:
+                    found.append((run, lab))
+    return found
+
+
+def yfp_thresholds(scaling, V, Fstar=FSTAR):
+    """[(y_fp, kind, omega)]: where straight rolling changes stability in y_fp
+    at speed V (eigenvalue scan over YFP_MIN..YFP_MAX)."""
+    grid = numpy.geomspace(YFP_MIN, YFP_MAX, 241)
+    return dg.stability_changes("figures", "yfp", grid, V=V, Fstar=Fstar, **SCALINGS[scaling])
+
+
+def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude"):
+    """A periodic orbit at fixed V continued in y_fp both ways, over
+    [YFP_MIN, YFP_MAX], stopped just before a Hopf point of straight rolling
+    in y_fp (it would collapse there).  Returns the two runs (down, up)."""
+    stops = [YFP_MIN, YFP_MAX]
+    for y, kind, _ in yfp_thresholds(scaling, V):
+        stops += [y * (1 - 1e-3), y * (1 + 1e-3)]
+    runs = []
+    for direction, ds in (("down", -0.005), ("up", 0.005)):
+        run = dg.run(rundir, f"{tag}_{direction}", "periodic", data=point,
+                     ICP=["yfp", 11] + dg.MEASURES, UZSTOP={"yfp": stops},
+                     DS=ds, DSMAX=1.0, NMX=1000, THU=THU)
+        progress(figure, f"{tag}: orbit at V = {V:g} continued {direction} in y_fp to "
+                         f"{run[0]['yfp'][-1]:.4f} mm ({len(run[0])} points)")
+        runs.append(run)
+    return runs
+
+
+def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="magnitude"):
+    """Curves of Hopf points of straight rolling in (y_fp, V), V in
+    [V_MIN, V_MAX], y_fp in [YFP_MIN, YFP_MAX], each continued both ways
+    from a Hopf point found at one of the seed y_fp values; a seed Hopf point
+    already on a computed curve is skipped.  [(run_down, run_up)]; the
+    frequency along a curve is 1/T (PAR(11), printed)."""
+    curves = []
+    for yfp in seeds:
+        vals = values(scaling, yfp, Fstar)
+        for V, kind, _ in dg.stability_changes("figures", "V", V_SCAN, **vals):
+            if kind != "HB" or any(_on_curve(c, yfp, V) for c in curves):
+                continue
+            name = f"{tag}_y{yfp:g}_V{V:.0f}"
+            hb = dg.hopf_point(rundir, f"{name}_hb", "figures", "V", V, **vals)
+            pair = tuple(dg.run(rundir, f"{name}_{d}", "hopf_curve", data=hb,
+                                ICP=["yfp", "V"] + dg.MEASURES + [11], DS=ds, DSMAX=0.2,
+                                UZSTOP={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]})
+                         for d, ds in (("a", 0.01), ("b", -0.01)))
+            progress(figure, f"{name}: Hopf curve through (y_fp, V) = ({yfp:g}, {V:.3f}), "
+                             f"{sum(len(r[0]) for r in pair)} points")
+            curves.append(pair)
+    return curves
+
+
+def _on_curve(curve, yfp, V):
+    for run in curve:
+        d = numpy.hypot((numpy.asarray(run[0]["yfp"]) - yfp) / yfp,
+                        (numpy.asarray(run[0]["V"]) - V) / max(V, 1.0))
+        if d.min() < 0.02:
+            return True
+    return False
+
+
+def fold_curve(rundir, tag, run, label, DS=0.01, stop=None, figure="magnitude"):
+    """The fold of cycles at `label` of the periodic run `run` (in V)
+    continued in (y_fp, V) both ways.  AUTO 0.9.2 first only generates the
+    starting data (ISW = 2 from an LP label ends with EP after a few steps),
+    then the curve is continued from that EP."""
+    icp = ["yfp", "V"] + dg.MEASURES + [11]
+    stop = stop or {"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]}
+    start = dg.run(rundir, f"{tag}_start", "periodic", data=run(label), ISW=2, ICP=icp)
+    pair = []
+    for d, ds in (("a", DS), ("b", -DS)):
+        pair.append(dg.run(rundir, f"{tag}_{d}", "periodic", data=start("EP1"), ISW=2,
+                           ICP=icp, DS=ds, DSMAX=0.5, NMX=1000, UZSTOP=stop, THU=THU))
+    progress(figure, f"{tag}: fold-of-cycles curve, {sum(len(r[0]) for r in pair)} points")
+    return tuple(pair)
+
+
+def profile(yfp, scaling, k_tlk, span=3.0, n=801):
+    """Eq. (15): (y_tlk [mm], M_kpsi/r_tlk [N]) over |y_tlk| <= span*y_fp."""
+    eps = SCALINGS[scaling]["eps_abs"] + SCALINGS[scaling]["eps_rel"] * yfp
+    y = numpy.linspace(-span * yfp, span * yfp, n)
+    force = [mlgmodel.torque_link_force(k_tlk, 1e-3 * v, 1e-3 * yfp, 1e-3 * eps) for v in y]
+    return y, numpy.array(force)
+
+
+def linear_fit(x, y):
+    """Least squares y = s x through the origin and y = s x + c:
+    (s0, max relative residual of the first, s, c)."""
+    x, y = numpy.asarray(x), numpy.asarray(y)
+    s0 = float(x @ y / (x @ x))
+    residual = float(numpy.max(numpy.abs(y - s0 * x) / numpy.abs(y)))
+    s, c = numpy.polyfit(x, y, 1)
+    return s0, residual, float(s), float(c)
+
+
+def orbits_in_yfp(rundir, diagram, figure="magnitude"):
+    """{V: (run down, run up)}: the stable orbit at each of V_ORBITS in
+    `diagram` continued in y_fp.  Raises RunError unless exactly one stable
+    orbit carries the UZ label at that speed."""
+    result = {}
+    for V in V_ORBITS:
+        found = stable_orbits(diagram, V)
+        if len(found) != 1:
+            raise autoglue.RunError(f"{figure}: {len(found)} stable orbits at V = {V:g} "
+                                    f"(y_fp = {diagram.yfp:g}), expected one")
+        run, lab = found[0]
+        result[V] = orbit_in_yfp(rundir, f"orbit_V{V:g}", run(lab), diagram.scaling, V, figure)
+    return result
+
+
+def orbit_curve(runs, measure):
+    """(y_fp, measure, stable mask) along the orbits of orbits_in_yfp, joined
+    at the starting orbit and sorted along the continuation."""
+    down, up = (run[0] for run in runs)
+    ys = numpy.r_[numpy.asarray(down["yfp"])[::-1], numpy.asarray(up["yfp"])[1:]]
+    ms = numpy.r_[numpy.asarray(down[measure])[::-1], numpy.asarray(up[measure])[1:]]
+    st = numpy.r_[dg.stable_mask(down)[::-1], dg.stable_mask(up)[1:]]
+    return ys, ms, st
+
+
+ORBIT_COLOURS = dict(zip(V_ORBITS, ("tab:blue", "tab:orange", "tab:green", "tab:purple")))
+
+
+def plot_orbits(ax_amp, ax_freq, orbits):
+    """Torsional amplitude [deg] and frequency [Hz] against y_fp of the orbits
+    of orbits_in_yfp (solid stable, dashed unstable)."""
+    for V, runs in orbits.items():
+        for ax, measure, scale in ((ax_amp, "psi_amp", numpy.degrees(1.0)), (ax_freq, "freq", 1.0)):
+            ys, ms, st = orbit_curve(runs, measure)
+            label = f"V = {V:g} m/s"
+            for sl in _runs_of(st):
+                ax.plot(ys[sl], ms[sl] * scale, color=ORBIT_COLOURS[V],
+                        ls="-" if st[sl.start] else "--", label=label)
+                label = None
+    ax_amp.set_ylabel(r"$\psi$ amplitude [deg]")
+    ax_freq.set_ylabel("frequency [Hz]")
+    for ax in (ax_amp, ax_freq):
+        ax.set_xlabel("$y_{fp}$ [mm]")
+    ax_amp.legend(fontsize=7)
+
+
+def _runs_of(mask):
+    """Slices of equal values of a boolean array, overlapping by one point."""
+    out, start = [], 0
+    for i in range(1, len(mask) + 1):
+        if i == len(mask) or mask[i] != mask[start]:
+            out.append(slice(start, min(i + 1, len(mask))))
+            start = i
+    return out
+
+
+def plot_diagram(ax_amp, diagram, colour, label):
+    """psi amplitude [deg] against V of a Diagram: its Hopf points on the
+    axis, the periodic branches (solid stable, dashed unstable; in `colour`,
+    else green/red) and their folds."""
+    deg = numpy.degrees(1.0)
+    style = {"color": colour} if colour else {}
+    dg.plot_branch(ax_amp, _merge(diagram.branches), "V", "psi_amp", scale=deg, **style)
+    if label:
+        ax_amp.plot([], [], color=colour, label=label)
+    for V, _ in diagram.hopf:
+        ax_amp.plot(V, 0.0, "o", color=colour or "k", ms=3)
+    for _, _, V, amp in diagram.folds():
+        ax_amp.plot(V, amp * deg, "s", color=colour or "k", ms=3)
+
+
+def _merge(runs):
+    return [branch for run in runs for branch in run]
+
+
+# Section IV.E: where straight rolling is stable for all V up to V_LIMIT.
+# The modes are told apart by frequency: the low-frequency torsional mode
+# ('gentle' oscillations, 1.5-5 Hz at F* = 1), the high-frequency torsional
+# mode (13-30 Hz) and real eigenvalues (pitchforks, static yaw).  The
+# lightly damped axial pair (1.6 Hz, Re ~ -0.016) never crosses.
+BANDS = {"low": (1e-6, 8.0), "high": (8.0, numpy.inf), "real": (-1.0, 1e-6)}
+KAPPA_GRID = numpy.geomspace(YFP_MIN, YFP_MAX, 61)
+
+
+def growth(Fstar, yfp, V, scaling="fixed"):
+    """{band: largest real part of the eigenvalues of straight rolling whose
+    frequency |Im|/2pi lies in the band} (-inf if none)."""
+    model = mlgmodel.Model("figures", **values(scaling, yfp, Fstar, V=V))
+    eig = numpy.linalg.eigvals(numpy.array(model.jacobian(model.equilibrium())))
+    freq = numpy.abs(eig.imag) / (2 * numpy.pi)
+    out = {}
+    for band, (lo, hi) in BANDS.items():
+        inside = (freq > lo) & (freq <= hi)
+        out[band] = float(eig.real[inside].max()) if inside.any() else -numpy.inf
+    return out
+
+
+def crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed"):
+    """y_fp values where the growth of `band` changes sign along `grid`
+    (bisection to 1e-10 mm)."""
+    def g(y):
+        return growth(Fstar, y, V, scaling)[band]
+    found, previous, g_prev = [], grid[0], g(grid[0])
+    for y in grid[1:]:
+        g_y = g(y)
+        if (g_y > 0) != (g_prev > 0):
+            lo, hi = previous, y
+            while hi - lo > 1e-10:
+                mid = 0.5 * (lo + hi)
+                if (g(mid) > 0) == (g_prev > 0):
+                    lo = mid
+                else:
+                    hi = mid
+            found.append(0.5 * (lo + hi))
+        previous, g_prev = y, g_y
+    return found
+
+
+def lowest_crossing(Fstar, band, speeds=numpy.linspace(V_MIN, V_LIMIT, 25)):
+    """(y_fp, V): the smallest y_fp at which the mode `band` is unstable for
+    some V in [V_MIN, V_LIMIT] -- the turning point in y_fp of its Hopf curve
+    (or an end at V_LIMIT); minimised on a V grid refined three times.
+    (inf, nan) if the mode never crosses."""
+    best = (numpy.inf, numpy.nan)
+    for _ in range(4):
+        for V in speeds:
+            found = crossings(Fstar, V, band)
+            if found and found[0] < best[0]:
+                best = (found[0], V)
+        if not numpy.isfinite(best[0]):
+            return best
+        step = speeds[1] - speeds[0]
+        speeds = numpy.linspace(max(V_MIN, best[1] - step), min(V_LIMIT, best[1] + step), 9)
+    return best
+
+
+def window_points(Fstar):
+    """The points bounding the windows of stable straight rolling up to
+    V_LIMIT at this F* (eps = 0.1 mm), as y_fp [mm]:
+      a: where the high-frequency Hopf curve crosses V = V_LIMIT at smaller
+         y_fp (the end of R1),
+      b: where it crosses V = V_LIMIT again at larger y_fp (the start of R2),
+      c: the smallest y_fp of the low-frequency Hopf curve for V <= V_LIMIT
+         (its turning point in y_fp; the end of R2),
+      p: the smallest y_fp with a real eigenvalue > 0 (pitchfork, static yaw),
+      first: the smallest y_fp at which straight rolling is unstable for some
+         V <= V_LIMIT, and the mode and V there.
+    Returns a dict; a/b are None if the high mode is stable at V_LIMIT."""
+    high = crossings(Fstar, V_LIMIT, "high")
+    a, b = (high + [None, None])[:2]
+    c, V_c = lowest_crossing(Fstar, "low")
+    first_high, V_high = lowest_crossing(Fstar, "high")
+    real = crossings(Fstar, 0.5 * V_LIMIT, "real")
+    p = real[0] if real else numpy.inf
+    first = min((first_high, "high", V_high), (c, "low", V_c), (p, "real", numpy.nan),
+                key=lambda t: t[0])
+    return {"Fstar": Fstar, "a": a, "b": b, "c": c, "V_c": V_c, "p": p,
+            "first": first[0], "first_mode": first[1], "first_V": first[2],
+            "high_V": V_high}
+
+
+def fold_curves(rundir, tag, diagrams, figure="magnitude"):
+    """Curves of folds of cycles in (y_fp, V) through the folds of the given
+    Diagrams; a fold already on a computed curve is not started again."""
+    curves = []
+    for d in diagrams:
+        for n, (run, lab, V, _) in enumerate(d.folds()):
+            if any(_on_curve(c, d.yfp, V) for c in curves):
+                continue
+            curves.append(fold_curve(rundir, f"{tag}_y{d.yfp:g}_{n}", run, lab, figure=figure))
+    return curves
+
+
+def curve_points(curve, x, y):
+    """The two runs of a curve joined into one (x, y) polyline."""
+    a, b = (run[0] for run in curve)
+    return (numpy.r_[numpy.asarray(b[x])[::-1], numpy.asarray(a[x])],
+            numpy.r_[numpy.asarray(b[y])[::-1], numpy.asarray(a[y])])
