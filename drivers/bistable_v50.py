@@ -15,13 +15,13 @@ import magnitude as mg
 
 V = 50.0
 YFP = 1.0
-FSTAR_RANGE = (0.05, 3.0)
+FSTAR_RANGE = (0.005, 3.0)   # F* = 0 lifts a wheel off
 
 
 def compute(where="bistable_v50"):
     rundir = dg.rundir(where)
     vals = {"V": V, "yfp": YFP, **mg.SCALINGS["ratio"]}
-    changes = dg.stability_changes("figures", "Fstar", numpy.linspace(*FSTAR_RANGE, 296), **vals)
+    changes = dg.stability_changes("figures", "Fstar", numpy.linspace(*FSTAR_RANGE, 600), **vals)
     icp = ["Fstar", 11] + dg.MEASURES
     runs = {}
     for n, (Fstar, kind, _) in enumerate(changes):
@@ -52,13 +52,25 @@ def stable_rolling(changes):
 
 
 def stable_orbit_intervals(runs):
-    """F* intervals covered by stable orbits, per run: [(lo, hi, run name)]."""
-    out = []
-    for name, run in runs.items():
+    """F* intervals covered by stable orbits, merged over the runs:
+    {"low": [...], "high": [...]} by frequency (magnitude.BANDS)."""
+    pieces = {"low": [], "high": []}
+    for run in runs.values():
         for branch in run:
-            for xs, _, stable in dg.segments(branch, "Fstar", "freq"):
+            for xs, fs, stable in dg.segments(branch, "Fstar", "freq"):
                 if stable:
-                    out.append((float(min(xs)), float(max(xs)), name))
+                    band = "low" if numpy.mean(fs) <= mg.BANDS["low"][1] else "high"
+                    pieces[band].append((float(min(xs)), float(max(xs))))
+    return {band: merge(found) for band, found in pieces.items()}
+
+
+def merge(intervals):
+    out = []
+    for lo, hi in sorted(intervals):
+        if out and lo <= out[-1][1] + 1e-9:
+            out[-1] = (out[-1][0], max(out[-1][1], hi))
+        else:
+            out.append((lo, hi))
     return out
 
 
@@ -69,15 +81,15 @@ def main():
         sys.exit(f"bistable_v50: {exc}")
     rolling = stable_rolling(changes)
     orbits = stable_orbit_intervals(runs)
-    high = [(lo, hi) for lo, hi, name in orbits if name.startswith("stable orbit")]
-    both = [(max(r[0], o[0]), min(r[1], o[1])) for r in rolling for o in high
+    both = [(max(r[0], o[0]), min(r[1], o[1])) for r in rolling for o in orbits["high"]
             if max(r[0], o[0]) < min(r[1], o[1])]
     rows = [("stability changes of straight rolling in F* (V = 50)",
              ", ".join(f"{F:.4f} {k}" for F, k, _ in changes), "2 pitchforks, then Hopf")]
     rows += [("straight rolling stable for F* in", ", ".join(f"({lo:.4f}, {hi:.4f})"
                                                            for lo, hi in rolling), None)]
-    rows += [(f"stable orbits ({name}) for F* in", f"({lo:.4f}, {hi:.4f})", None)
-             for lo, hi, name in orbits]
+    rows += [(f"stable {band}-frequency orbits for F* in",
+              ", ".join(f"({lo:.4f}, {hi:.4f})" for lo, hi in found), None)
+             for band, found in orbits.items()]
     rows += [("(a_12, b_12): stable straight rolling and stable high-frequency shimmy",
               ", ".join(f"({lo:.4f}, {hi:.4f})" for lo, hi in both) or "empty", "not printed")]
     mg.write_numbers("bistable_v50", rows)
@@ -92,7 +104,8 @@ def main():
             ax.axvspan(lo, hi, color="tab:cyan", alpha=0.3)
     axes[0].set(xlabel="$F_z^*$", ylabel=r"$\psi$ amplitude [deg]")
     axes[1].set(xlabel="$F_z^*$", ylabel="frequency [Hz]")
-    fig.suptitle(r"V = 50 m/s, $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm: shaded ($a_{12}$, $b_{12}$)")
+    fig.suptitle(r"V = 50 m/s, $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 $y_{fp}$: shaded ($a_{12}$, $b_{12}$); "
+                 "thick: stable straight rolling")
     fig.tight_layout()
     dg.save(fig, "bistable_v50")
 

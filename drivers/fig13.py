@@ -5,7 +5,6 @@ orbits at V = 15, 50, 80, 110 m/s continued in y_fp."""
 import sys
 
 import matplotlib.pyplot as plt
-import numpy
 
 import autoglue
 import diagrams as dg

@@ -29,8 +29,7 @@ def lowest_orbit(runs):
     """(y_fp, kind) where the orbit family reaches its smallest y_fp: a fold
     in y_fp ('LP') or the end of the continuation next to a Hopf point ('H')."""
     ys, _, _ = mg.orbit_curve(runs, "psi_amp")
-    down = runs[0][0]
-    folds = [down["yfp"][i] for i, _ in mg.labelled(down, "LP")]
+    folds = [r[0]["yfp"][i] for r in runs[0] for i, _ in mg.labelled(r[0], "LP")]
     y_min = float(ys.min())
     kind = "LP" if folds and abs(min(folds) - y_min) < 1e-9 else "H"
     return y_min, kind

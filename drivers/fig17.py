@@ -9,7 +9,7 @@ import autoglue
 import diagrams as dg
 import magnitude as mg
 
-SEEDS = (1.0, 0.15)   # y_fp [mm] of the diagrams whose folds start the fold curves
+SEEDS = (0.15,)   # y_fp [mm] of the diagram whose fold starts the fold curve
 
 
 def compute(where="fig17"):
@@ -37,9 +37,10 @@ def plot(hopf, folds, window):
     for lo, hi, name in ((0.0, window["a"], "R1"), (window["b"], window["c"], "R2")):
         ax.fill_between([0, mg.V_LIMIT], lo / eps, hi / eps, color="tab:cyan", alpha=0.35)
         ax.text(60, 0.5 * (lo + hi) / eps, name, ha="center", va="center")
-    for name, V in (("a", mg.V_LIMIT), ("b", mg.V_LIMIT), ("c", window["V_c"])):
-        ax.plot(V, window[name] / eps, "ko", ms=4)
-        ax.annotate(name, (V, window[name] / eps), textcoords="offset points", xytext=(4, 4))
+    for name in "abc":
+        V, y = window[f"V_{name}"], window[name] / eps
+        ax.plot(V, y, "ko", ms=4)
+        ax.annotate(name, (V, y), textcoords="offset points", xytext=(4, 4))
     ax.axvline(mg.V_LIMIT, color="0.4", ls=":", lw=1)
     ax.set(xlim=(0, mg.V_MAX), ylim=(0, 6), xlabel="V [m/s]", ylabel=r"$y_{fp}/\epsilon$",
            title=r"Fig. 17: bifurcation curves in (V, $y_{fp}/\epsilon$), $F^*$ = 1, "
@@ -55,9 +56,8 @@ def main():
         sys.exit(f"fig17: {exc}")
     eps = mg.EPSILON
     mg.write_numbers("fig17", [
-        ("a = (V, y_fp/eps)", f"({mg.V_LIMIT:g}, {window['a'] / eps:.4f})", "not printed"),
-        ("b = (V, y_fp/eps)", f"({mg.V_LIMIT:g}, {window['b'] / eps:.4f})", "not printed"),
-        ("c = (V, y_fp/eps)", f"({window['V_c']:.2f}, {window['c'] / eps:.4f})", "not printed")])
+        (f"{name} = (V, y_fp/eps)", f"({window['V_' + name]:.2f}, {window[name] / eps:.4f})",
+         "not printed") for name in "abc"])
     plot(hopf, folds, window)
 
 

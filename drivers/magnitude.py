@@ -28,6 +28,8 @@ V_LIMIT = 120.0              # the speed limit of section IV.E
 V_ORBITS = (15.0, 50.0, 80.0, 110.0)
 V_SCAN = numpy.linspace(V_MIN, V_MAX, 161)
 YFP_MIN, YFP_MAX = 0.005, 2.0
+FOLD_YFP_MAX = 1.0   # fold-of-cycles curves (~0.5 s a point) end here
+START_POINTS = 5
 HOPF_GAP = 0.01      # periodic branches stop this far (m/s) before another Hopf point
 # Arclength weights of the oscillating states (psi, delta and their rates):
 # the orbits are 1e-4..1e-2 rad wide beside a static eta ~ 0.4 m, and without
@@ -77,10 +79,13 @@ class Diagram:
         self.hopf, self.bp, self.branches = hopf, bp, branches
 
     def folds(self):
-        """[(run, label, V, psi_amp)] of every fold of cycles."""
+        """[(run, label, V, psi_amp)] of every fold of cycles, except LP
+        labels within the first START_POINTS points of a branch: AUTO's fold
+        test fires spuriously on the first steps from a Hopf point (seen at
+        y_fp = 0.35 and 1 mm, eps = 0.1 mm)."""
         return [(run, lab, run(lab)["V"], run(lab)["psi_amp"])
                 for run in self.branches for branch in run
-                for _, lab in labelled(branch, "LP")]
+                for index, lab in labelled(branch, "LP") if index >= START_POINTS]
 
 
 def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="magnitude"):
@@ -103,7 +108,7 @@ def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="m
         others = {j: h for j, (h, _) in enumerate(hopf) if j != i}
         stops = [V_MIN, V_MAX] + [h + s * HOPF_GAP for h in others.values() for s in (-1, 1)]
         run = dg.periodic_from(rundir, f"{tag}_po{i}", hb, stop={"V": stops},
-                               UZR={"V": list(uzr)}, DS=1e-4, DSMAX=DSMAX_V, DSMIN=1e-9, NMX=2000, THU=THU)
+                               UZR={"V": list(uzr)} if uzr else {}, DS=1e-4, DSMAX=DSMAX_V, DSMIN=1e-9, NMX=2000, THU=THU)
         end = run[0]
         if numpy.max(numpy.abs(numpy.diff(end["V"]))) > 2 * DSMAX_V:
             raise autoglue.RunError(f"run {tag}_po{i}: a step jumped by more than "
@@ -143,21 +148,38 @@ def yfp_thresholds(scaling, V, Fstar=FSTAR):
 
 
 def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude"):
-    """A periodic orbit at fixed V continued in y_fp both ways, over
-    [YFP_MIN, YFP_MAX], stopped just before a Hopf point of straight rolling
-    in y_fp (it would collapse there).  Returns the two runs (down, up)."""
-    stops = [YFP_MIN, YFP_MAX]
-    for y, kind, _ in yfp_thresholds(scaling, V):
-        stops += [y * (1 - 1e-3), y * (1 + 1e-3)]
-    runs = []
+    """A periodic orbit at fixed V continued in y_fp both ways over
+    [YFP_MIN, YFP_MAX].  Where straight rolling has a Hopf point in y_fp the
+    run stops just before it; if the orbit has shrunk onto it (amplitude
+    below 30% of the largest so far, frequency within 5% of the Hopf
+    frequency) it ends there (it would collapse onto straight rolling),
+    otherwise it is continued past it.  Returns
+    (down, up): the lists of runs in each direction, in order."""
+    hopf = {y: w / (2 * numpy.pi) for y, kind, w in yfp_thresholds(scaling, V) if kind == "HB"}
+    result = []
     for direction, ds in (("down", -0.005), ("up", 0.005)):
-        run = dg.run(rundir, f"{tag}_{direction}", "periodic", data=point,
-                     ICP=["yfp", 11] + dg.MEASURES, UZSTOP={"yfp": stops},
-                     DS=ds, DSMAX=1.0, NMX=1000, THU=THU)
-        progress(figure, f"{tag}: orbit at V = {V:g} continued {direction} in y_fp to "
-                         f"{run[0]['yfp'][-1]:.4f} mm ({len(run[0])} points)")
-        runs.append(run)
-    return runs
+        runs, start, left = [], point, list(hopf)
+        while True:
+            stops = [YFP_MIN, YFP_MAX] + [y * (1 + s * 1e-3) for y in left for s in (-1, 1)]
+            run = dg.run(rundir, f"{tag}_{direction}{len(runs)}", "periodic", data=start,
+                         ICP=["yfp", 11] + dg.MEASURES, UZSTOP={"yfp": stops},
+                         DS=ds, DSMAX=1.0, NMX=1000, THU=THU)
+            runs.append(run)
+            end = run[0]
+            y_end, amp_end = end["yfp"][-1], end["psi_amp"][-1]
+            near = [y for y in left if abs(y_end - y) < 2e-3 * y]
+            largest = max(max(r[0]["psi_amp"]) for r in runs)
+            progress(figure, f"{tag}: orbit at V = {V:g} continued {direction} in y_fp to "
+                             f"{y_end:.5f} mm ({len(end)} points)")
+            if not near or (amp_end < 0.3 * largest
+                            and abs(end["freq"][-1] - hopf[near[0]]) < 0.05 * hopf[near[0]]):
+                break
+            progress(figure, f"{tag}: passing the Hopf point y_fp = {near[0]:.5f} mm "
+                             f"(orbit amplitude {amp_end:.3g} rad there)")
+            left.remove(near[0])
+            start = run(labelled(end, "UZ")[-1][1])
+        result.append(runs)
+    return tuple(result)
 
 
 def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="magnitude"):
@@ -174,23 +196,43 @@ def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="ma
                 continue
             name = f"{tag}_y{yfp:g}_V{V:.0f}"
             hb = dg.hopf_point(rundir, f"{name}_hb", "figures", "V", V, **vals)
-            pair = tuple(dg.run(rundir, f"{name}_{d}", "hopf_curve", data=hb,
-                                ICP=["yfp", "V"] + dg.MEASURES + [11], DS=ds, DSMAX=0.2,
-                                UZSTOP={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]})
-                         for d, ds in (("a", 0.01), ("b", -0.01)))
+            pair = _hopf_runs(rundir, name, hb, figure)
             progress(figure, f"{name}: Hopf curve through (y_fp, V) = ({yfp:g}, {V:.3f}), "
                              f"{sum(len(r[0]) for r in pair)} points")
             curves.append(pair)
     return curves
 
 
+def _hopf_runs(rundir, name, hb, figure):
+    """Both directions of a Hopf curve in (y_fp, V) from the point hb.  AUTO
+    0.9.2 stops (MX) where the curve turns back in its first parameter (seen
+    at the turn in V of the high-frequency curve, y_fp ~ 0.10 mm, and at the
+    turn in y_fp of the low-frequency one, y_fp ~ 0.32 mm), so if one
+    direction fails both are repeated with the parameters swapped.  The steps
+    are bounded in the first parameter (AUTO's steps on these curves follow
+    it): 0.005 mm in y_fp, 0.1 m/s in V."""
+    for order, step in ((["yfp", "V"], 0.005), (["V", "yfp"], 0.1)):
+        try:
+            return tuple(dg.run(rundir, f"{name}_{d}", "hopf_curve", data=hb,
+                                ICP=order + dg.MEASURES + [11], DS=sign * step / 5,
+                                DSMAX=step, NMX=4000,
+                                UZSTOP={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]})
+                         for d, sign in (("a", 1), ("b", -1)))
+        except autoglue.RunError as exc:
+            progress(figure, f"{name}: Hopf curve with ICP {order} failed ({exc})"
+                     + ("; repeating with the parameters swapped" if order[0] == "yfp" else ""))
+    raise autoglue.RunError(f"{name}: Hopf curve failed with both parameter orders")
+
+
 def _on_curve(curve, yfp, V):
-    for run in curve:
-        d = numpy.hypot((numpy.asarray(run[0]["yfp"]) - yfp) / yfp,
-                        (numpy.asarray(run[0]["V"]) - V) / max(V, 1.0))
-        if d.min() < 0.02:
-            return True
-    return False
+    """True if (yfp, V) lies within 2% (relative) of the polyline of a curve."""
+    ys, Vs = curve_points(curve, "yfp", "V")
+    p = numpy.c_[ys / yfp, Vs / max(V, 1.0)]
+    q = numpy.array([1.0, V / max(V, 1.0)])
+    a, b = p[:-1], p[1:]
+    t = numpy.clip(numpy.sum((q - a) * (b - a), axis=1)
+                   / numpy.maximum(numpy.sum((b - a) ** 2, axis=1), 1e-300), 0.0, 1.0)
+    return numpy.min(numpy.hypot(*(a + t[:, None] * (b - a) - q).T)) < 0.02
 
 
 def fold_curve(rundir, tag, run, label, DS=0.01, stop=None, figure="magnitude"):
@@ -199,8 +241,9 @@ def fold_curve(rundir, tag, run, label, DS=0.01, stop=None, figure="magnitude"):
     starting data (ISW = 2 from an LP label ends with EP after a few steps),
     then the curve is continued from that EP."""
     icp = ["yfp", "V"] + dg.MEASURES + [11]
-    stop = stop or {"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]}
-    start = dg.run(rundir, f"{tag}_start", "periodic", data=run(label), ISW=2, ICP=icp)
+    stop = stop or {"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, FOLD_YFP_MAX]}
+    start = dg.run(rundir, f"{tag}_start", "periodic", data=run(label), ISW=2, ICP=icp,
+                   THU=THU)
     pair = []
     for d, ds in (("a", DS), ("b", -DS)):
         pair.append(dg.run(rundir, f"{tag}_{d}", "periodic", data=start("EP1"), ISW=2,
@@ -245,10 +288,16 @@ def orbits_in_yfp(rundir, diagram, figure="magnitude"):
 def orbit_curve(runs, measure):
     """(y_fp, measure, stable mask) along the orbits of orbits_in_yfp, joined
     at the starting orbit and sorted along the continuation."""
-    down, up = (run[0] for run in runs)
-    ys = numpy.r_[numpy.asarray(down["yfp"])[::-1], numpy.asarray(up["yfp"])[1:]]
-    ms = numpy.r_[numpy.asarray(down[measure])[::-1], numpy.asarray(up[measure])[1:]]
-    st = numpy.r_[dg.stable_mask(down)[::-1], dg.stable_mask(up)[1:]]
+    def joined(pieces, column):
+        return numpy.concatenate([numpy.asarray(r[0][column])[1:] for r in pieces])
+    down, up = runs
+
+    def stable(pieces):
+        return numpy.concatenate([dg.stable_mask(r[0])[1:] for r in pieces])
+    first = up[0][0]
+    ys = numpy.r_[joined(down, "yfp")[::-1], first["yfp"][0], joined(up, "yfp")]
+    ms = numpy.r_[joined(down, measure)[::-1], first[measure][0], joined(up, measure)]
+    st = numpy.r_[stable(down)[::-1], dg.stable_mask(first)[0], stable(up)]
     return ys, ms, st
 
 
@@ -345,17 +394,18 @@ def crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed"):
     return found
 
 
-def lowest_crossing(Fstar, band, speeds=numpy.linspace(V_MIN, V_LIMIT, 25)):
-    """(y_fp, V): the smallest y_fp at which the mode `band` is unstable for
-    some V in [V_MIN, V_LIMIT] -- the turning point in y_fp of its Hopf curve
-    (or an end at V_LIMIT); minimised on a V grid refined three times.
-    (inf, nan) if the mode never crosses."""
-    best = (numpy.inf, numpy.nan)
+def extreme_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN, V_LIMIT, 25)):
+    """(y_fp, V): the smallest (or, with highest, the largest) y_fp at which
+    the mode `band` changes stability for some V in [V_MIN, V_LIMIT] -- a
+    turning point in y_fp of its Hopf curve or its end at V_LIMIT; optimised
+    on a V grid refined three times.  (inf or -inf, nan) if it never does."""
+    sign = -1.0 if highest else 1.0
+    best = (sign * numpy.inf, numpy.nan)
     for _ in range(4):
         for V in speeds:
             found = crossings(Fstar, V, band)
-            if found and found[0] < best[0]:
-                best = (found[0], V)
+            if found and sign * (found[-1] if highest else found[0]) < sign * best[0]:
+                best = (found[-1] if highest else found[0], V)
         if not numpy.isfinite(best[0]):
             return best
         step = speeds[1] - speeds[0]
@@ -366,26 +416,27 @@ def lowest_crossing(Fstar, band, speeds=numpy.linspace(V_MIN, V_LIMIT, 25)):
 def window_points(Fstar):
     """The points bounding the windows of stable straight rolling up to
     V_LIMIT at this F* (eps = 0.1 mm), as y_fp [mm]:
-      a: where the high-frequency Hopf curve crosses V = V_LIMIT at smaller
-         y_fp (the end of R1),
-      b: where it crosses V = V_LIMIT again at larger y_fp (the start of R2),
-      c: the smallest y_fp of the low-frequency Hopf curve for V <= V_LIMIT
-         (its turning point in y_fp; the end of R2),
-      p: the smallest y_fp with a real eigenvalue > 0 (pitchfork, static yaw),
-      first: the smallest y_fp at which straight rolling is unstable for some
-         V <= V_LIMIT, and the mode and V there.
-    Returns a dict; a/b are None if the high mode is stable at V_LIMIT."""
-    high = crossings(Fstar, V_LIMIT, "high")
-    a, b = (high + [None, None])[:2]
-    c, V_c = lowest_crossing(Fstar, "low")
-    first_high, V_high = lowest_crossing(Fstar, "high")
+      a: the smallest y_fp at which the high-frequency mode is unstable for
+         some V <= V_LIMIT (the end of R1; at F* = 1 where its Hopf curve
+         crosses V = V_LIMIT),
+      b: the largest such y_fp (the start of R2; at F* = 1 the second
+         crossing of V = V_LIMIT),
+      c: the smallest y_fp at which the low-frequency mode is unstable for
+         some V <= V_LIMIT (the turning point in y_fp of its Hopf curve; the
+         end of R2),
+      p: the smallest y_fp with a real eigenvalue > 0 (pitchfork, static yaw;
+         independent of V),
+      first: the smallest of a, c, p, with its mode and speed.
+    y_fp is scanned over KAPPA_GRID (up to YFP_MAX); inf where a mode never
+    crosses there.  Also the speeds V_a, V_b, V_c of a, b, c."""
+    a, V_a = extreme_crossing(Fstar, "high")
+    b, V_b = extreme_crossing(Fstar, "high", highest=True)
+    c, V_c = extreme_crossing(Fstar, "low")
     real = crossings(Fstar, 0.5 * V_LIMIT, "real")
     p = real[0] if real else numpy.inf
-    first = min((first_high, "high", V_high), (c, "low", V_c), (p, "real", numpy.nan),
-                key=lambda t: t[0])
-    return {"Fstar": Fstar, "a": a, "b": b, "c": c, "V_c": V_c, "p": p,
-            "first": first[0], "first_mode": first[1], "first_V": first[2],
-            "high_V": V_high}
+    first = min((a, "high", V_a), (c, "low", V_c), (p, "real", numpy.nan), key=lambda t: t[0])
+    return {"Fstar": Fstar, "a": a, "b": b, "c": c, "p": p, "V_a": V_a, "V_b": V_b, "V_c": V_c,
+            "first": first[0], "first_mode": first[1], "first_V": first[2]}
 
 
 def fold_curves(rundir, tag, diagrams, figure="magnitude"):
