@@ -10,6 +10,7 @@ import autoglue
 import diagrams as dg
 import magnitude as mg
 import mlgmodel
+import paper_table
 
 FREEPLAYS = (0.2, 0.5, 1.0, 2.0)
 COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red")
@@ -25,26 +26,28 @@ def compute(where="fig13"):
 
 
 def numbers(diagrams, orbits):
-    rows = []
-    paper_hopf = {1.0: "1.5, 28.1, 142.5"}
+    """{quantity: value}: Hopf and fold speeds per y_fp, and per orbit speed
+    the slope of psi_amp against y_fp (fit through 0), its largest relative
+    residual, the intercept of a free linear fit, and the frequency range."""
+    out = {}
     for y, d in diagrams.items():
-        rows.append((f"Hopf speeds, y_fp = {y:g} mm [m/s]",
-                     ", ".join(f"{V:.4f}" for V, _ in d.hopf), paper_hopf.get(y)))
-        rows.append((f"fold speeds, y_fp = {y:g} mm [m/s]",
-                     ", ".join(f"{V:.4f}" for *_, V, _ in d.folds()), "41.5" if y == 1.0 else None))
+        for k, (V, _) in enumerate(d.hopf):
+            out[f"y_fp = {y:g}: H{k + 1} [m/s]"] = V
+        for k, (*_, V, _) in enumerate(d.folds()):
+            out[f"y_fp = {y:g}: S{k + 1} [m/s]"] = V
     for V, runs in orbits.items():
         ys, amp, stable = mg.orbit_curve(runs, "psi_amp")
         _, freq, _ = mg.orbit_curve(runs, "freq")
         inside = (ys >= FIT_RANGE[0]) & (ys <= FIT_RANGE[1])
         if not stable[inside].all():
             raise autoglue.RunError(f"fig13: orbit at V = {V:g} loses stability in y_fp")
-        s0, residual, s, c = mg.linear_fit(ys[inside], amp[inside])
-        rows.append((f"V = {V:g}: psi_amp / y_fp, fit through 0 [rad/mm]",
-                     f"{s0:.6g} (max rel. residual {residual:.2e})", "linear (figure)"))
-        rows.append((f"V = {V:g}: fit with intercept [rad/mm, rad]", f"{s:.6g}, {c:.3g}", None))
-        rows.append((f"V = {V:g}: frequency over y_fp in {FIT_RANGE} [Hz]",
-                     f"{freq[inside].min():.4f} - {freq[inside].max():.4f}", "nearly constant"))
-    return rows
+        s0, residual, _, c = mg.linear_fit(ys[inside], amp[inside])
+        out[f"V = {V:g}: psi_amp/y_fp [rad/mm]"] = s0
+        out[f"V = {V:g}: largest rel. residual"] = residual
+        out[f"V = {V:g}: intercept of free fit [rad]"] = c
+        out[f"V = {V:g}: freq min [Hz]"] = freq[inside].min()
+        out[f"V = {V:g}: freq max [Hz]"] = freq[inside].max()
+    return out
 
 
 def plot(diagrams, orbits):
@@ -74,10 +77,10 @@ def plot(diagrams, orbits):
 def main():
     try:
         diagrams, orbits = compute()
-        rows = numbers(diagrams, orbits)
+        ours = numbers(diagrams, orbits)
     except (autoglue.RunError, ValueError, RuntimeError) as exc:
         sys.exit(f"fig13: {exc}")
-    mg.write_numbers("fig13", rows)
+    paper_table.report("fig13", ours)
     plot(diagrams, orbits)
 
 

@@ -12,6 +12,7 @@ import autoglue
 import diagrams as dg
 import magnitude as mg
 import mlgmodel
+import paper_table
 
 FREEPLAYS = (0.05, 0.098, 0.11, 0.15, 0.35, 1.0)
 
@@ -36,19 +37,21 @@ def lowest_orbit(runs):
 
 
 def numbers(diagrams, orbits):
-    rows = []
+    """{quantity: value}: Hopf and fold speeds per y_fp; per orbit speed the
+    smallest y_fp the orbits reach and the Hopf points in y_fp there."""
+    out = {}
     for y, d in diagrams.items():
-        rows.append((f"Hopf speeds, y_fp = {y:g} mm [m/s]",
-                     ", ".join(f"{V:.4f}" for V, _ in d.hopf) or "none in (0.5, 200)", None))
-        rows.append((f"fold speeds, y_fp = {y:g} mm [m/s]",
-                     ", ".join(f"{V:.4f}" for *_, V, _ in d.folds()) or "none", None))
+        for k, (V, _) in enumerate(d.hopf):
+            out[f"y_fp = {y:g}: H{k + 1} [m/s]"] = V
+        for k, (*_, V, _) in enumerate(d.folds()):
+            out[f"y_fp = {y:g}: S{k + 1} [m/s]"] = V
     for V, runs in orbits.items():
         y_min, kind = lowest_orbit(runs)
-        hopf = ", ".join(f"{y:.5f}" for y, k, _ in mg.yfp_thresholds("fixed", V) if k == "HB")
-        rows.append((f"V = {V:g}: orbits exist for y_fp above [mm]",
-                     f"{y_min:.5f} ({'fold' if kind == 'LP' else 'Hopf'})", "threshold (figure)"))
-        rows.append((f"V = {V:g}: Hopf points of straight rolling in y_fp [mm]", hopf, None))
-    return rows
+        out[f"V = {V:g}: orbits down to y_fp [mm] ({'fold' if kind == 'LP' else 'Hopf'})"] = y_min
+        hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V) if k == "HB"]
+        for k, y in enumerate(hopf):
+            out[f"V = {V:g}: Hopf point {k + 1} in y_fp [mm]"] = y
+    return out
 
 
 def plot(diagrams, orbits, curves):
@@ -86,10 +89,10 @@ def plot(diagrams, orbits, curves):
 def main():
     try:
         diagrams, orbits, curves = compute()
-        rows = numbers(diagrams, orbits)
+        ours = numbers(diagrams, orbits)
     except (autoglue.RunError, ValueError, RuntimeError) as exc:
         sys.exit(f"fig14: {exc}")
-    mg.write_numbers("fig14", rows)
+    paper_table.report("fig14", ours)
     plot(diagrams, orbits, curves)
 
 

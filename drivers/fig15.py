@@ -10,6 +10,7 @@ import fig13
 import fig14
 import magnitude as mg
 import mlgmodel
+import paper_table
 
 SPAN = 3.0   # x* range: |x*| <= SPAN
 
@@ -28,7 +29,7 @@ def spread(scaling, freeplays, k_tlk):
 def main():
     k_tlk = mlgmodel.Model("figures")["k_tlk"]
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
-    rows = []
+    ours = {}
     for ax, scaling, freeplays, title in (
             (axes[0], "ratio", fig13.FREEPLAYS, r"(a) $\epsilon$ = 0.1 $y_{fp}$ (Fig. 13)"),
             (axes[1], "fixed", fig14.FREEPLAYS, r"(b) $\epsilon$ = 0.1 mm (Fig. 14)")):
@@ -38,10 +39,9 @@ def main():
                 label=r"$\epsilon$ = 0 (eq. 14)")
         ax.set(title=title, xlabel=r"$x^* = y_{tlk}/y_{fp}$", xlim=(-SPAN, SPAN))
         ax.legend(fontsize=7)
-        rows.append((f"{title[:3]} largest spread of the rescaled profiles (|x*| <= {SPAN:g})",
-                     f"{spread(scaling, freeplays, k_tlk):.3g}",
-                     "they coincide" if scaling == "ratio" else "they differ"))
-    mg.write_numbers("fig15", rows)
+        ours[f"{title[:3]} largest spread of the rescaled profiles"] = \
+            spread(scaling, freeplays, k_tlk)
+    paper_table.report("fig15", ours)
     axes[0].set_ylabel(r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$")
     fig.suptitle("Fig. 15: rescaled torque-link stiffness profiles")
     fig.tight_layout()

@@ -12,6 +12,7 @@ import autoglue
 import diagrams as dg
 import fig14
 import magnitude as mg
+import paper_table
 
 FAMILY = {
     "ratio": (0.5, 1.0, 1.5, 2.0),   # a pure scaling (Fig. 13): few slices suffice
@@ -44,22 +45,22 @@ def crossing(curves, V):
 
 
 def numbers(family, curves, window):
-    hopf_120 = crossing(curves["hopf"], mg.V_LIMIT)
-    low_min = min(mg.curve_points(c, "yfp", "V")[0].min() for c in curves["hopf"]
-                  if _is_low(c))
-    rows = [(f"r{k + 1} = {name} [mm] (V there)",
-             f"{window[name]:.5f} ({window['V_' + name]:.2f} m/s)", "not printed")
-            for k, name in enumerate("abc")]
-    rows += [("check: AUTO Hopf curves cross V = 120 at y_fp [mm]",
-              ", ".join(f"{y:.5f}" for y in hopf_120), None),
-             ("check: smallest y_fp of AUTO's low-frequency Hopf curve [mm]", f"{low_min:.5f}",
-              None)]
+    """{quantity: value}: r1, r2, r3 (= a, b, c of magnitude.window_points)
+    with AUTO's Hopf curves as a check, and the Hopf and fold speeds of
+    every slice."""
+    out = {f"r{k + 1} = {name} [mm]": window[name] for k, name in enumerate("abc")}
+    out.update({f"V at {name} [m/s]": window["V_" + name] for name in "abc"})
+    for k, y in enumerate(crossing(curves["hopf"], mg.V_LIMIT)):
+        out[f"check: AUTO Hopf curves at V = 120, y_fp {k + 1} [mm]"] = y
+    out["check: smallest y_fp of AUTO's low-frequency Hopf curve [mm]"] = min(
+        mg.curve_points(c, "yfp", "V")[0].min() for c in curves["hopf"] if _is_low(c))
     for scaling, diagrams in family.items():
         for d in diagrams:
-            rows.append((f"{scaling} y_fp = {d.yfp:g}: Hopf / fold speeds [m/s]",
-                         ", ".join(f"{V:.3f}" for V, _ in d.hopf) + " / "
-                         + ", ".join(f"{V:.3f}" for *_, V, _ in d.folds()), None))
-    return rows
+            for k, (V, _) in enumerate(d.hopf):
+                out[f"{scaling} y_fp = {d.yfp:g}: H{k + 1} [m/s]"] = V
+            for k, (*_, V, _) in enumerate(d.folds()):
+                out[f"{scaling} y_fp = {d.yfp:g}: S{k + 1} [m/s]"] = V
+    return out
 
 
 def _is_low(curve):
@@ -114,10 +115,10 @@ def plot(family, curves, window):
 def main():
     try:
         family, curves, window = compute()
-        rows = numbers(family, curves, window)
+        ours = numbers(family, curves, window)
     except (autoglue.RunError, ValueError, RuntimeError) as exc:
         sys.exit(f"fig16: {exc}")
-    mg.write_numbers("fig16", rows)
+    paper_table.report("fig16", ours)
     plot(family, curves, window)
 
 

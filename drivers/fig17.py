@@ -8,6 +8,7 @@ import matplotlib.pyplot as plt
 import autoglue
 import diagrams as dg
 import magnitude as mg
+import paper_table
 
 SEEDS = (0.15,)   # y_fp [mm] of the diagram whose fold starts the fold curve
 
@@ -55,9 +56,11 @@ def main():
     except (autoglue.RunError, ValueError, RuntimeError) as exc:
         sys.exit(f"fig17: {exc}")
     eps = mg.EPSILON
-    mg.write_numbers("fig17", [
-        (f"{name} = (V, y_fp/eps)", f"({window['V_' + name]:.2f}, {window[name] / eps:.4f})",
-         "not printed") for name in "abc"])
+    ours = {}
+    for name in "abc":
+        ours[f"{name}: V [m/s]"] = window["V_" + name]
+        ours[f"{name}: y_fp/eps"] = window[name] / eps
+    paper_table.report("fig17", ours)
     plot(hopf, folds, window)
 
 

@@ -18,6 +18,7 @@ from matplotlib.colors import ListedColormap
 import autoglue
 import diagrams as dg
 import magnitude as mg
+import paper_table
 
 FSTARS = numpy.round(numpy.arange(0.1, 2.0001, 0.05), 3)   # F* = 0 lifts a wheel off
 MAP_KAPPA = numpy.geomspace(0.05, 8.0, 50)
@@ -85,23 +86,21 @@ def kappa_star(points):
 
 
 def numbers(points, auto, kappa, best):
-    rows = [("kappa* (envelope 0 < y_fp/eps < kappa*, F* in [0.1, 2])",
-             f"{kappa:.4f} at F* = {best['Fstar']:.2f} ({best['first_mode']} mode, "
-             f"V = {best['first_V']:.1f})", "not printed")]
+    out = {"kappa*": kappa, "kappa*: at F*": best["Fstar"], "kappa*: at V [m/s]": best["first_V"]}
     for p in points:
-        if abs(p["Fstar"] - round(p["Fstar"], 1)) < 1e-9 and round(p["Fstar"] * 10) % 2 == 0:
-            rows.append((f"F* = {p['Fstar']:.1f}: a, b, c, pitchfork [y_fp/eps]",
-                         ", ".join("-" if p[k] is None or not numpy.isfinite(p[k])
-                                   else f"{p[k] / mg.EPSILON:.4f}" for k in "abcp"), None))
+        if round(p["Fstar"] * 10, 6) % 2 == 0:
+            for k in "abcp":
+                if p[k] is not None and numpy.isfinite(p[k]):
+                    out[f"F* = {p['Fstar']:.1f}: {k} [y_fp/eps]"] = p[k] / mg.EPSILON
     for name, runs in auto.items():
         for run in runs:
             Fs, ys = numpy.asarray(run[0]["Fstar"]), numpy.asarray(run[0]["yfp"])
             scan = numpy.array([p[name] for p in points], dtype=float)
             inside = (Fs >= FSTARS[0]) & (Fs <= FSTARS[-1])
             diff = numpy.abs(numpy.interp(Fs[inside], FSTARS, scan) - ys[inside])
-            rows.append((f"check: AUTO curve {name}, F* {Fs.min():.3f}-{Fs.max():.3f}: "
-                         "largest |AUTO - eigenvalue scan| [mm]", f"{diff.max():.2e}", None))
-    return rows
+            out[f"check: AUTO {name}, F* {Fs.min():.2f}-{Fs.max():.2f}, "
+                "largest |AUTO - scan| [mm]"] = diff.max()
+    return out
 
 
 def plot(points, grid, auto, kappa):
@@ -137,7 +136,7 @@ def main():
         sys.exit(f"fig18: {exc}")
     kappa, best = kappa_star(points)
     mg.progress("fig18", "kappa* refined")
-    mg.write_numbers("fig18", numbers(points, auto, kappa, best))
+    paper_table.report("fig18", numbers(points, auto, kappa, best))
     with open(os.path.join(autoglue.FIGURES_DIR, "fig18.json"), "w") as out:
         json.dump({"kappa_star": kappa, "Fstar": best["Fstar"]}, out)
     plot(points, grid, auto, kappa)

@@ -11,8 +11,8 @@ import numpy
 
 import autoglue
 import diagrams as dg
-import magnitude as mg
 import mlgmodel
+import paper_table
 
 SPAN = 3.0
 
@@ -43,9 +43,9 @@ def main():
            ylabel=r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$",
            title="Fig. 19: allowed rescaled freeplay profiles")
     ax.legend(fontsize=8)
-    mg.write_numbers("fig19", [("kappa* used", f"{kappa:.4f}", "not printed"),
-                               ("rescaled stiffness at x* = 0 for kappa*, dy*/dx*",
-                                f"{numpy.gradient(limit, x)[len(x) // 2]:.4f}", None)])
+    paper_table.report("fig19", {
+        "kappa*": kappa, "slope of the kappa* profile at x* = 0":
+        numpy.gradient(limit, x)[len(x) // 2]})
     dg.save(fig, "fig19")
 
 

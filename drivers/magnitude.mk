@@ -1,10 +1,9 @@
-# Freeplay-magnitude figures (sections IV.C-IV.E, Figs. 13-19); included by
+# Freeplay-magnitude figures (sections IV.D-IV.E, Figs. 13-19); included by
 # ../Makefile after figures.mk.  Each target runs on its own (its runs in
 # build/<fig>/, shared code in drivers/magnitude.py; only fig19 needs fig18),
 # so `make -j2 fig13 fig14 ...` runs them side by side.  Each prints a
-# progress line per AUTO run and its numbers (also in build/figures/<fig>.txt).
-# bistable_v50: the interval (a_12, b_12) of section IV.C.
-MAGNITUDE_FIGURES := fig13 fig14 fig15 fig16 fig17 fig18 fig19 bistable_v50
+# progress line per AUTO run and its numbers (also in build/tables/<fig>.txt).
+MAGNITUDE_FIGURES := fig13 fig14 fig15 fig16 fig17 fig18 fig19
 .PHONY: $(MAGNITUDE_FIGURES)
 $(MAGNITUDE_FIGURES): %: $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/$*.py

@@ -11,8 +11,6 @@ Scalings (section III): "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1,
 eps_abs = 0), "fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).
 Everything is at F* = 1 unless Fstar is passed.
 """
-import os
-
 import numpy
 
 import autoglue
@@ -45,18 +43,6 @@ def values(scaling, yfp, Fstar=FSTAR, **more):
 
 def progress(figure, text):
     print(f"{figure}: {text}", flush=True)
-
-
-def write_numbers(figure, rows):
-    """Print the figure's numbers and store them in FIGURES_DIR/<figure>.txt:
-    rows of (quantity, ours, paper or None)."""
-    lines = [f"{q}\t{ours}\t{paper if paper is not None else '-'}" for q, ours, paper in rows]
-    path = os.path.join(autoglue.FIGURES_DIR, f"{figure}.txt")
-    os.makedirs(autoglue.FIGURES_DIR, exist_ok=True)
-    with open(path, "w") as out:
-        out.write("quantity\tours (figures set)\tpaper\n" + "\n".join(lines) + "\n")
-    for line in lines:
-        print(f"{figure}: " + line.replace("\t", " | "))
 
 
 def labelled(branch, kind):
@@ -235,21 +221,16 @@ def _on_curve(curve, yfp, V):
     return numpy.min(numpy.hypot(*(a + t[:, None] * (b - a) - q).T)) < 0.02
 
 
-def fold_curve(rundir, tag, run, label, DS=0.01, stop=None, figure="magnitude"):
+def fold_curve(rundir, tag, run, label, figure="magnitude"):
     """The fold of cycles at `label` of the periodic run `run` (in V)
-    continued in (y_fp, V) both ways.  AUTO 0.9.2 first only generates the
-    starting data (ISW = 2 from an LP label ends with EP after a few steps),
-    then the curve is continued from that EP."""
-    icp = ["yfp", "V"] + dg.MEASURES + [11]
-    stop = stop or {"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, FOLD_YFP_MAX]}
-    start = dg.run(rundir, f"{tag}_start", "periodic", data=run(label), ISW=2, ICP=icp,
-                   THU=THU)
-    pair = []
-    for d, ds in (("a", DS), ("b", -DS)):
-        pair.append(dg.run(rundir, f"{tag}_{d}", "periodic", data=start("EP1"), ISW=2,
-                           ICP=icp, DS=ds, DSMAX=0.5, NMX=1000, UZSTOP=stop, THU=THU))
+    continued in (y_fp, V) both ways (diagrams.fold_curve), y_fp up to
+    FOLD_YFP_MAX."""
+    stop = {"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, FOLD_YFP_MAX]}
+    pair = tuple(dg.fold_curve(rundir, f"{tag}_{d}", run(label), parameters=("yfp", "V"),
+                               stop=stop, DS=ds, DSMAX=0.5, NMX=1000, THU=THU)
+                 for d, ds in (("a", 0.01), ("b", -0.01)))
     progress(figure, f"{tag}: fold-of-cycles curve, {sum(len(r[0]) for r in pair)} points")
-    return tuple(pair)
+    return pair
 
 
 def profile(yfp, scaling, k_tlk, span=3.0, n=801):

@@ -13,6 +13,9 @@ import autoglue
 PAPER = {
     "fig07": {"H, F* = 1 [m/s]": 346.1},
     "fig10": {"H1 [m/s]": 1.5, "H2 [m/s]": 28.1, "H3 [m/s]": 142.5, "S1 [m/s]": 41.5},
+    # IV.D.1: the Fig. 10 diagram is the y_fp = 1 mm slice of Fig. 13
+    "fig13": {"y_fp = 1: H1 [m/s]": 1.5, "y_fp = 1: H2 [m/s]": 28.1,
+              "y_fp = 1: H3 [m/s]": 142.5, "y_fp = 1: S1 [m/s]": 41.5},
 }
 
 
