@@ -26,14 +26,14 @@ def compute(where="fig14"):
     return diagrams, orbits, curves
 
 
-def lowest_orbit(runs):
-    """(y_fp, kind) where the orbit family reaches its smallest y_fp: a fold
-    in y_fp ('LP') or the end of the continuation next to a Hopf point ('H')."""
+def lowest_orbit(runs, V):
+    """(y_fp, kind): the smallest y_fp the orbits of speed V reach, and
+    whether that is a Hopf point of straight rolling in y_fp ('Hopf'; AUTO
+    may label the collapse there LP) or a fold in y_fp ('fold')."""
     ys, _, _ = mg.orbit_curve(runs, "psi_amp")
-    folds = [r[0]["yfp"][i] for r in runs[0] for i, _ in mg.labelled(r[0], "LP")]
     y_min = float(ys.min())
-    kind = "LP" if folds and abs(min(folds) - y_min) < 1e-9 else "H"
-    return y_min, kind
+    hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V) if k == "HB"]
+    return y_min, "Hopf" if any(abs(y_min - y) < 2e-3 * y for y in hopf) else "fold"
 
 
 def numbers(diagrams, orbits):
@@ -46,8 +46,8 @@ def numbers(diagrams, orbits):
         for k, (*_, V, _) in enumerate(d.folds()):
             out[f"y_fp = {y:g}: S{k + 1} [m/s]"] = V
     for V, runs in orbits.items():
-        y_min, kind = lowest_orbit(runs)
-        out[f"V = {V:g}: orbits down to y_fp [mm] ({'fold' if kind == 'LP' else 'Hopf'})"] = y_min
+        y_min, kind = lowest_orbit(runs, V)
+        out[f"V = {V:g}: orbits down to y_fp [mm] ({kind})"] = y_min
         hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V) if k == "HB"]
         for k, y in enumerate(hopf):
             out[f"V = {V:g}: Hopf point {k + 1} in y_fp [mm]"] = y

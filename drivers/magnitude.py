@@ -223,11 +223,16 @@ def _on_curve(curve, yfp, V):
 
 def fold_curve(rundir, tag, run, label, figure="magnitude"):
     """The fold of cycles at `label` of the periodic run `run` (in V)
-    continued in (y_fp, V) both ways (diagrams.fold_curve), y_fp up to
-    FOLD_YFP_MAX."""
+    continued in (y_fp, V) both ways, y_fp up to FOLD_YFP_MAX.  As
+    diagrams.fold_curve (AUTO 0.9.2 first only generates the starting data,
+    ending in EP), but with the arclength weights THU on the starting run
+    too: without them it stops (MX) on the fold of y_fp = 0.15 mm."""
+    icp = ["yfp", "V"] + dg.MEASURES
     stop = {"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, FOLD_YFP_MAX]}
-    pair = tuple(dg.fold_curve(rundir, f"{tag}_{d}", run(label), parameters=("yfp", "V"),
-                               stop=stop, DS=ds, DSMAX=0.5, NMX=1000, THU=THU)
+    start = dg.run(rundir, f"{tag}_start", "periodic", data=run(label), ISW=2, ICP=icp,
+                   THU=THU)
+    pair = tuple(dg.run(rundir, f"{tag}_{d}", "periodic", data=start("EP1"), ISW=2, ICP=icp,
+                        DS=ds, DSMAX=0.5, NMX=1000, UZSTOP=stop, THU=THU)
                  for d, ds in (("a", 0.01), ("b", -0.01)))
     progress(figure, f"{tag}: fold-of-cycles curve, {sum(len(r[0]) for r in pair)} points")
     return pair
