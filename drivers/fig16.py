@@ -20,6 +20,7 @@ FAMILY = {
 }
 HIGHLIGHT = {"ratio": (0.5, 1.0, 2.0), "fixed": fig14.FREEPLAYS}
 DEG = numpy.degrees(1.0)
+Y_MAX = 1.0   # y_fp range [mm] of panel (b)
 
 
 def compute(where="fig16"):
@@ -67,6 +68,13 @@ def _is_low(curve):
     return max(1.0 / numpy.asarray(run[0]["T"]).min() for run in curve) < mg.BANDS["low"][1]
 
 
+def clipped(ys, Vs):
+    """A curve with the points outside the plotted box (y_fp <= Y_MAX,
+    V <= V_MAX) set to NaN: mplot3d does not clip."""
+    outside = (ys > Y_MAX) | (Vs > mg.V_MAX)
+    return numpy.where(outside, numpy.nan, ys), numpy.where(outside, numpy.nan, Vs)
+
+
 def plot(family, curves, window):
     fig = plt.figure(figsize=(13, 6))
     for n, scaling in enumerate(("ratio", "fixed")):
@@ -90,10 +98,10 @@ def plot(family, curves, window):
             ax.set_title(r"(a) $\epsilon$ = 0.1 $y_{fp}$")
         else:
             for curve in curves["hopf"]:
-                ys, Vs = mg.curve_points(curve, "yfp", "V")
+                ys, Vs = clipped(*mg.curve_points(curve, "yfp", "V"))
                 ax.plot(Vs, ys, 0.0 * Vs, "b-.", lw=1)
             for curve in curves["fold"]:
-                ys, Vs = mg.curve_points(curve, "yfp", "V")
+                ys, Vs = clipped(*mg.curve_points(curve, "yfp", "V"))
                 _, amp = mg.curve_points(curve, "yfp", "psi_amp")
                 ax.plot(Vs, ys, amp * DEG, "k-.", lw=1)
             for lo, hi, name in ((0.0, window["a"], "R1"), (window["b"], window["c"], "R2")):
@@ -101,7 +109,7 @@ def plot(family, curves, window):
                     [[(0, lo, 0), (mg.V_LIMIT, lo, 0), (mg.V_LIMIT, hi, 0), (0, hi, 0)]],
                     facecolor="tab:cyan", alpha=0.5))
                 ax.text(60, 0.5 * (lo + hi), 0, name, fontsize=8)
-            ax.set_ylim(0, 1.0)
+            ax.set_ylim(0, Y_MAX)
             ax.set_title(r"(b) $\epsilon$ = 0.1 mm (R1, R2: stable up to 120 m/s)")
         ax.set(xlabel="V [m/s]", ylabel="$y_{fp}$ [mm]", zlabel=r"$\psi$ amplitude [deg]",
                xlim=(0, mg.V_MAX))

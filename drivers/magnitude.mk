@@ -13,3 +13,5 @@ fig19: fig18
 
 FIGURES += $(MAGNITUDE_FIGURES)
 TEST_PROGRAMS += tests/test_magnitude.py
+# Cheap, stable AUTO runs (about 2 min each) with reference diagrams.
+REGRESS_FIGURES += fig13 fig17

@@ -27,7 +27,6 @@ V_ORBITS = (15.0, 50.0, 80.0, 110.0)
 V_SCAN = numpy.linspace(V_MIN, V_MAX, 161)
 YFP_MIN, YFP_MAX = 0.005, 2.0
 FOLD_YFP_MAX = 1.0   # fold-of-cycles curves (~0.5 s a point) end here
-START_POINTS = 5
 HOPF_GAP = 0.01      # periodic branches stop this far (m/s) before another Hopf point
 # Arclength weights of the oscillating states (psi, delta and their rates):
 # the orbits are 1e-4..1e-2 rad wide beside a static eta ~ 0.4 m, and without
@@ -66,12 +65,13 @@ class Diagram:
 
     def folds(self):
         """[(run, label, V, psi_amp)] of every fold of cycles, except LP
-        labels within the first START_POINTS points of a branch: AUTO's fold
-        test fires spuriously on the first steps from a Hopf point (seen at
-        y_fp = 0.35 and 1 mm, eps = 0.1 mm)."""
+        labels within 0.1% of a Hopf speed: AUTO's fold test fires spuriously
+        on the first steps from a Hopf point (seen at y_fp = 0.35, 0.5 and
+        1 mm)."""
         return [(run, lab, run(lab)["V"], run(lab)["psi_amp"])
                 for run in self.branches for branch in run
-                for index, lab in labelled(branch, "LP") if index >= START_POINTS]
+                for _, lab in labelled(branch, "LP")
+                if all(abs(run(lab)["V"] - V) > 1e-3 * V for V, _ in self.hopf)]
 
 
 def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="magnitude"):
