@@ -45,6 +45,11 @@ def numbers(diagrams, orbits):
             out[f"y_fp = {y:g}: H{k + 1} [m/s]"] = V
         for k, (*_, V, _) in enumerate(d.folds()):
             out[f"y_fp = {y:g}: S{k + 1} [m/s]"] = V
+        for run in d.branches:   # turning speed, whether or not AUTO labels it LP
+            Vs = numpy.asarray(run[0]["V"])
+            if Vs.min() < Vs[0] - 0.5:
+                out[f"y_fp = {y:g}: smallest V of the orbits from H at {Vs[0]:.1f} [m/s]"] = \
+                    Vs.min()
     for V, runs in orbits.items():
         y_min, kind = lowest_orbit(runs, V)
         out[f"V = {V:g}: orbits down to y_fp [mm] ({kind})"] = y_min
