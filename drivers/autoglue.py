@@ -9,6 +9,7 @@ the Makefile builds, build/auto/07p. Importing this module makes the `auto`
 package importable and usable with numpy >= 1.24.
 """
 import os
+import signal
 import sys
 
 import numpy
@@ -81,7 +82,21 @@ def read_constants(paths):
     return merged
 
 
-def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, **kw):
+def _kill_children(signum, frame):
+    """SIGALRM handler of run(time_limit=...): kill this process's children
+    (the AUTO executable); AUTO's run() then raises."""
+    for entry in os.listdir("/proc"):
+        try:
+            with open(f"/proc/{entry}/stat") as stat:
+                parent = int(stat.read().rsplit(")", 1)[1].split()[1])
+        except (OSError, ValueError, IndexError):
+            continue
+        if parent == os.getpid():
+            os.kill(int(entry), signal.SIGKILL)
+
+
+def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time_limit=None,
+        **kw):
     """Run AUTO in rundir, save to b./s./d.<name> there, and check the result.
 
     constants: path of a constants file, or a list of files merged in order
@@ -93,6 +108,8 @@ def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, **kw
     type listed in expect (e.g. "HB", "LP", "BP") does not occur.  With
     allow_mx, an MX is reported on stdout instead and the diagram returned
     (for curves known to end at a hard spot; the caller marks the end).
+    time_limit: seconds after which the AUTO executable is killed and
+    RunError raised (for runs known to stall in AUTO's iterations).
     """
     os.makedirs(rundir, exist_ok=True)
     if constants is not None:
@@ -108,11 +125,18 @@ def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, **kw
         for stale in ["fort.7", "fort.8", "fort.9"] + outputs:
             if os.path.exists(stale):
                 os.remove(stale)
+        if time_limit:
+            signal.signal(signal.SIGALRM, _kill_children)
+            signal.alarm(int(time_limit))
         auto.run(data, sv=name, **kw)
     except auto.AUTOExceptions.AUTORuntimeError as exc:
-        raise RunError(f"run {name} in {rundir}: AUTO stopped ({exc}); "
+        timed_out = time_limit and signal.alarm(0) == 0
+        why = f"killed after the time limit of {time_limit} s" if timed_out else exc
+        raise RunError(f"run {name} in {rundir}: AUTO stopped ({why}); "
                        "see the messages above") from exc
     finally:
+        if time_limit:
+            signal.alarm(0)
         os.chdir(cwd)
     if not all(map(os.path.exists, outputs)):
         raise RunError(f"run {name} in {rundir}: AUTO wrote no output")
