@@ -15,6 +15,7 @@ import paper_table
 DEG = 180 / numpy.pi
 V_MAX = 600.0
 V_MIN = 0.5          # V = 0 is degenerate (the tyre states are undetermined)
+COLLAPSED = 1e-8     # rad: a psi amplitude below this is straight rolling
 
 
 def speed_diagram(rundir, parameter_set="figures", skip_failed=False, **values):
@@ -23,7 +24,8 @@ def speed_diagram(rundir, parameter_set="figures", skip_failed=False, **values):
     each Hopf point.  An orbit branch that runs into the next Hopf point is
     stopped just before it (it would collapse onto straight rolling there)
     and that Hopf point starts no branch of its own.  With skip_failed, an
-    orbit run that fails is reported and left out instead of raising.
+    orbit run ending in MX is reported and kept up to the MX point, and any
+    other failed orbit run is reported and left out, instead of raising.
     Returns (equilibria, Hopf speeds, [(hopf point, orbits), ...])."""
     start = dg.Start(parameter_set, V=0.0, **values)
     eq = dg.equilibria(rundir, "eq", start, stop={"V": V_MAX})
@@ -38,7 +40,7 @@ def speed_diagram(rundir, parameter_set="figures", skip_failed=False, **values):
         stops = [V_MIN, V_MAX] + [w + (0.01 if w < v else -0.01) for w in hopfs if w != v]
         try:
             orbits = dg.periodic_from(rundir, f"po{k + 1}", point, stop={"V": stops},
-                                      DS=0.05, DSMAX=1.0, NMX=2000)
+                                      DS=0.05, DSMAX=1.0, NMX=2000, allow_mx=skip_failed)
         except autoglue.RunError as exc:
             if not skip_failed:
                 raise
@@ -47,7 +49,11 @@ def speed_diagram(rundir, parameter_set="figures", skip_failed=False, **values):
         print(f"  orbits from H at V = {point['V']:.4f}: V in [{min(orbits[0]['V']):.2f}, "
               f"{max(orbits[0]['V']):.2f}], folds at V = "
               + (", ".join(f"{p['V']:.3f}" for p in orbits("LP")) or "none"))
-        end = orbits[0]["V"][-1]
+        # the last orbit of non-zero amplitude (an MX run may go on along
+        # straight rolling after collapsing onto it at the next Hopf point)
+        speeds = numpy.asarray(orbits[0]["V"])
+        alive = speeds[numpy.asarray(orbits[0]["psi_amp"]) > COLLAPSED]
+        end = alive[-1] if len(alive) else speeds[-1]
         reached.update(w for w in hopfs if abs(w - end) < 0.02)
         branches.append((point, orbits))
     return eq, hopfs, branches
