@@ -1,4 +1,4 @@
-"""The freeplay diagrams (Figs. 10 and 12; y_fp = 1 mm, epsilon = 0.1 mm,
+"""The freeplay diagrams (Figs. 10, 11 and 12; y_fp = 1 mm, epsilon = 0.1 mm,
 `figures` set) against the paper's printed numbers, and AUTO's located
 special points against the independent eigenvalue scan."""
 import os
@@ -58,11 +58,34 @@ def loads_at_50():
           all(f < 0.5 for f in pitchforks[50.0]), f"{pitchforks[50.0]}")
 
 
+def joined_hopf_curve():
+    """Fig. 11 (paper: the Hopf curves are one curve that enters and leaves
+    the plot twice): the curves through H1 and H2 join between F* = 0.65 and
+    0.7 (V about 7 m/s), those through H2 and H3 between F* = 6.85 and 6.9
+    (V about 113 m/s, above the plot); in between all three Hopf points
+    exist in V, outside only one."""
+    for Fstar, count in ((0.65, 1), (0.70, 3), (0.80, 3), (6.85, 3), (6.9, 1)):
+        speeds = [v for v, kind, _ in dg.stability_changes(
+            "figures", "V", numpy.linspace(0.5, 600, 3000), Fstar=Fstar, **FREEPLAY)
+            if kind == "HB"]
+        check(f"F* = {Fstar:g}: {count} Hopf point(s) in V", len(speeds) == count, f"{speeds}")
+        if Fstar < 1 and count == 3 and len(speeds) == 3:
+            check(f"F* = {Fstar:g}: low pair inside V in (1, 20)",
+                  1.0 < speeds[0] < speeds[1] < 20.0, f"{speeds[:2]}")
+        if Fstar < 1 and speeds:
+            check_close(f"F* = {Fstar:g}: high Hopf point near 140 m/s", speeds[-1], 140.0,
+                        rel=0.02)
+        if Fstar > 6 and count == 3 and len(speeds) == 3:
+            check(f"F* = {Fstar:g}: upper pair inside V in (110, 115)",
+                  110.0 < speeds[1] < speeds[2] < 115.0, f"{speeds[1:]}")
+
+
 def main():
     speeds = hopf_speeds_at_unit_load()
     if speeds:
         fold_and_auto_hopf(speeds)
     loads_at_50()
+    joined_hopf_curve()
 
 
 if __name__ == "__main__":
