@@ -16,47 +16,61 @@ DEG = 180 / numpy.pi
 V_MAX = 600.0
 V_MIN = 0.5          # V = 0 is degenerate (the tyre states are undetermined)
 COLLAPSED = 1e-8     # rad: a psi amplitude below this is straight rolling
+SAME_FREQUENCY = 0.1  # relative: an orbit this close to a Hopf frequency collapses there
 
 
 def speed_diagram(rundir, parameter_set="figures", skip_failed=False, **values):
     """Straight rolling in V at the given parameters, its Hopf points (found
     by the eigenvalue scan, located by AUTO), and the periodic orbits born at
-    each Hopf point.  An orbit branch that runs into the next Hopf point is
-    stopped just before it (it would collapse onto straight rolling there)
-    and that Hopf point starts no branch of its own.  With skip_failed, an
-    orbit run ending in MX is reported and kept up to the MX point, and any
-    other failed orbit run is reported and left out, instead of raising.
+    each Hopf point.  An orbit run is stopped just before every other Hopf
+    speed: if its frequency there is that Hopf point's (within
+    SAME_FREQUENCY), the branch collapses onto straight rolling there and
+    that Hopf point starts no branch of its own; otherwise the branch only
+    passes that speed and is continued past it as a further part (another
+    entry of the result, same Hopf point).  With skip_failed, an orbit run
+    ending in MX is reported and kept up to the MX point, and any other
+    failed orbit run is reported and left out, instead of raising.
     Returns (equilibria, Hopf speeds, [(hopf point, orbits), ...])."""
     start = dg.Start(parameter_set, V=0.0, **values)
     eq = dg.equilibria(rundir, "eq", start, stop={"V": V_MAX})
     grid = numpy.linspace(V_MIN, V_MAX, 3000)
-    hopfs = [v for v, kind, _ in dg.stability_changes(parameter_set, "V", grid, **values)
-             if kind == "HB"]
+    hopfs = {v: omega / (2 * numpy.pi) for v, kind, omega
+             in dg.stability_changes(parameter_set, "V", grid, **values) if kind == "HB"}
     branches, reached = [], set()
     for k, v in enumerate(hopfs):
         if v in reached:   # the orbits of an earlier branch end here
             continue
         point = dg.hopf_point(rundir, f"hb{k + 1}", parameter_set, "V", v, **values)
-        stops = [V_MIN, V_MAX] + [w + (0.01 if w < v else -0.01) for w in hopfs if w != v]
-        try:
-            orbits = dg.periodic_from(rundir, f"po{k + 1}", point, stop={"V": stops},
-                                      DS=0.05, DSMAX=1.0, NMX=2000, allow_mx=skip_failed)
-        except autoglue.RunError as exc:
-            if not skip_failed:
-                raise
-            print(f"  orbits from H at V = {point['V']:.4f} left out: {exc}")
-            continue
-        print(f"  orbits from H at V = {point['V']:.4f}: V in [{min(orbits[0]['V']):.2f}, "
-              f"{max(orbits[0]['V']):.2f}], folds at V = "
-              + (", ".join(f"{p['V']:.3f}" for p in orbits("LP")) or "none"))
-        # the last orbit of non-zero amplitude (an MX run may go on along
-        # straight rolling after collapsing onto it at the next Hopf point)
-        speeds = numpy.asarray(orbits[0]["V"])
-        alive = speeds[numpy.asarray(orbits[0]["psi_amp"]) > COLLAPSED]
-        end = alive[-1] if len(alive) else speeds[-1]
-        reached.update(w for w in hopfs if abs(w - end) < 0.02)
-        branches.append((point, orbits))
-    return eq, hopfs, branches
+        origin, passed = point, {v}
+        while origin is not None:
+            name = f"po{k + 1}" + (f"_{len(passed) - 1}" if len(passed) > 1 else "")
+            stops = [V_MIN, V_MAX] + [w + (0.01 if w < origin["V"] else -0.01)
+                                      for w in hopfs if w not in passed]
+            try:
+                orbits = dg.periodic_from(rundir, name, origin, stop={"V": stops}, DS=0.05,
+                                          DSMAX=1.0, NMX=2000, allow_mx=skip_failed)
+            except autoglue.RunError as exc:
+                if not skip_failed:
+                    raise
+                print(f"  orbits from {name} at V = {origin['V']:.4f} left out: {exc}")
+                break
+            print(f"  orbits {name} from V = {origin['V']:.4f}: V in "
+                  f"[{min(orbits[0]['V']):.2f}, {max(orbits[0]['V']):.2f}], folds at V = "
+                  + (", ".join(f"{p['V']:.3f}" for p in orbits("LP")) or "none"))
+            branches.append((point, orbits))
+            # the last orbit of non-zero amplitude (an MX run may go on along
+            # straight rolling after collapsing onto it at the next Hopf point)
+            alive = numpy.flatnonzero(numpy.asarray(orbits[0]["psi_amp"]) > COLLAPSED)
+            last = alive[-1] if len(alive) else len(orbits[0]["V"]) - 1
+            end, freq = orbits[0]["V"][last], orbits[0]["freq"][last]
+            origin = None
+            for w in [w for w in hopfs if w not in passed and abs(w - end) < 0.02]:
+                if abs(freq - hopfs[w]) <= SAME_FREQUENCY * hopfs[w]:
+                    reached.add(w)
+                else:
+                    passed.add(w)
+                    origin = orbits("UZ")[-1]
+    return eq, list(hopfs), branches
 
 
 def compute(parameter_set="figures", where="fig10", zero_freeplay=True):
