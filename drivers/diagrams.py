@@ -62,12 +62,20 @@ def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, **kw):
                UZSTOP=stop or {}, **kw)
 
 
+def fold_icp(parameters):
+    """ICP of a fold-of-cycles continuation in two parameters: the period
+    PAR(11) must come third, or AUTO keeps it fixed (periodic.f90, INITPS:
+    the period is free only if ICP(3) = 11 or exactly two parameters are
+    listed), and the curve found is one of folds at constant period."""
+    return list(parameters) + [11] + MEASURES
+
+
 def fold_curve(rundir, name, point, parameters=("V", "Fstar"), stop=None, **kw):
     """Continue the fold of periodic orbits `point` (an LP label of an orbit
     run) in two parameters.  AUTO 0.9.2 first only generates the extended
     system's starting data (5 steps, ending in EP); the curve is continued
-    from there.  Listing the period (11) in ICP would freeze parameters[0]."""
-    icp = list(parameters) + MEASURES
+    from there."""
+    icp = fold_icp(parameters)
     first = run(rundir, f"{name}_start", "periodic", data=point, ISW=2, ICP=icp, DS=0.01,
                 DSMAX=0.05)
     return run(rundir, name, "periodic", data=first("EP1"), ISW=2, ICP=icp,

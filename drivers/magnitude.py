@@ -227,7 +227,7 @@ def fold_curve(rundir, tag, run, label, figure="magnitude"):
     diagrams.fold_curve (AUTO 0.9.2 first only generates the starting data,
     ending in EP), but with the arclength weights THU on the starting run
     too: without them it stops (MX) on the fold of y_fp = 0.15 mm."""
-    icp = ["yfp", "V"] + dg.MEASURES
+    icp = dg.fold_icp(("yfp", "V"))
     stop = {"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, FOLD_YFP_MAX]}
     start = dg.run(rundir, f"{tag}_start", "periodic", data=run(label), ISW=2, ICP=icp,
                    THU=THU)
