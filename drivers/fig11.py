@@ -29,7 +29,7 @@ SLICES = numpy.concatenate((numpy.arange(0.0625, 2.0, 0.125), numpy.arange(2.125
 F_GRID = numpy.arange(F_MIN, F_MAX + 1e-9, 0.01)
 V_GRID = numpy.arange(V_MIN, V_MAX + 1e-9, 0.5)
 LOW_FREQUENCY_HZ = 8.0
-FOLD_TIME_LIMIT = 120  # s, for a fold-curve run (those that get through take 20-40 s)
+FOLD_TIME_LIMIT = 120  # s, guard for a fold-curve run (they take 20-40 s)
 STOP = {"Fstar": [F_MIN, F_MAX], "V": [V_MIN, V_MAX]}
 
 
@@ -143,18 +143,28 @@ def stable_orbits(parameter_set="figures"):
     return out, folds
 
 
+def on_curves(point, curves, tol=0.01):
+    """Whether the fold `point` lies on one of the computed fold curves
+    (distance in V/V_MAX and F*/F_MAX below tol)."""
+    return any(numpy.min(numpy.hypot((numpy.asarray(branch["V"]) - point["V"]) / V_MAX,
+                                     (numpy.asarray(branch["Fstar"]) - point["Fstar"]) / F_MAX))
+               < tol for curve in curves for branch in curve)
+
+
 def upper_folds(rundir, first, folds):
     """Curves of folds of high-frequency orbits that the fold S curve
-    (`first`) does not reach: continued from the folds on the lowest slice
-    above its top load.  A direction that fails is reported and left out;
-    one of them stalls in AUTO's iterations (at a NaN parameter), hence the
-    time limit (a direction that gets through takes 20-40 s)."""
+    (`first`) does not reach: continued both ways from each fold on the
+    lowest slice above its top load that no curve computed so far passes
+    through.  A direction that fails (or stalls: FOLD_TIME_LIMIT) is
+    reported and left out."""
     top = max(numpy.max(branch["Fstar"]) for diagram in first for branch in diagram)
     above = [f for f in SLICES if f > top and folds[f]]
     if not above:
         return []
     out = []
     for k, point in enumerate(folds[above[0]]):
+        if on_curves(point, out):
+            continue
         for sign in (1, -1):
             name = f"fold_upper{k + 1}{'+-'[sign < 0]}"
             try:
