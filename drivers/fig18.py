@@ -14,6 +14,7 @@ import sys
 import matplotlib.pyplot as plt
 import numpy
 from matplotlib.colors import ListedColormap
+from matplotlib.patches import Patch
 
 import autoglue
 import diagrams as dg
@@ -121,13 +122,14 @@ def plot(points, grid, auto, kappa):
             ax.plot(numpy.asarray(run[0]["yfp"]) / mg.EPSILON, run[0]["Fstar"], "w:", lw=1)
     ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
                                FSTARS[-1] - FSTARS[0], fill=False, hatch="//", lw=1.2))
-    for colour, name in zip(COLOURS, REGIONS):
-        ax.fill_between([], [], color=colour, label=name)
+    handles = ax.get_legend_handles_labels()[0] + [
+        Patch(facecolor=colour, edgecolor="0.4", alpha=0.8, label=name)
+        for colour, name in zip(COLOURS, REGIONS)]   # edged: R1 is white
     ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0] - 0.025, 2.025),
            xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$",
            title=rf"Fig. 18: straight rolling for V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm "
                  rf"(hatched: $y_{{fp}}/\epsilon < \kappa^*$ = {kappa:.3f})")
-    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     dg.save(fig, "fig18")
 
 
