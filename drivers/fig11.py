@@ -86,7 +86,7 @@ def large_orbits(rundir, parameter_set="figures"):
         family = dg.periodic_from(rundir, f"large_F{'+-'[sign < 0]}", seed("UZ1"), "Fstar",
                                   stop={"Fstar": [F_MIN, F_MAX]}, UZR={"Fstar": list(SLICES)},
                                   DS=0.02 * sign, DSMAX=0.1, allow_mx=True)
-        for k, start in enumerate(family("UZ")):
+        for start in family("UZ"):
             Fstar = min(SLICES, key=lambda f: abs(f - start["Fstar"]))
             if abs(Fstar - start["Fstar"]) > 1e-4 or Fstar in out:
                 continue
@@ -214,9 +214,10 @@ def shade(ax, found, pitchforks):
         mask = numpy.vectorize(lambda f: f == frozenset(kinds))(found)
         if not mask.any():
             continue
+        alpha = 0.3 if kinds else 0.15
         ax.contourf(V_GRID, F_GRID, mask.astype(float), levels=[0.5, 1.5], colors=[colour],
-                    alpha=0.3 if kinds else 0.15)
-        handles.append(Patch(color=colour, alpha=0.3 if kinds else 0.15, label=key))
+                    alpha=alpha)
+        handles.append(Patch(color=colour, alpha=alpha, label=key))
     lo, hi = min(pitchforks), max(pitchforks)
     ax.axhspan(lo, hi, color="0.3", alpha=0.35, lw=0)
     return handles
