@@ -1,7 +1,7 @@
 /* Mechanical energy of the model's Lagrangian (docs/model.md, section 8):
  * the quantity that the complete equations (eom_terms = 2) conserve when
  * the tyres and all dampers are switched off. */
-#include "mlg.h"
+#include "mlg_model.h"
 #define DUAL_N 0
 #include "freeplay.h"
 #include "geometry.h"

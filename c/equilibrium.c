@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "linear_solve.h"
-#include "mlg.h"
+#include "mlg_model.h"
 #define DUAL_N 0
 #include "geometry.h"
 #include "strut.h"

@@ -4,7 +4,7 @@
 #define MLG_MODEL_PARAMETERS_H
 
 #include "dual.h"
-#include "mlg.h"
+#include "mlg_model.h"
 
 typedef struct {
     const mlg_params *c;     /* every constant, plain */

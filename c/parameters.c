@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mlg.h"
+#include "mlg_model.h"
 
 /* c_psi of the `figures` set: the value that puts the zero-freeplay Hopf
  * point at F* = 1 at the paper's V = 346.1 m/s, found by AUTO continuation of that

@@ -1,6 +1,6 @@
 /* f, df/du and df/dp: the model of vector_field.h with DUAL_N = MLG_NDIR
  * forward-mode directions (the 10 states, then PAR(1..MLG_NPAR)). */
-#include "mlg.h"
+#include "mlg_model.h"
 #define DUAL_N MLG_NDIR
 #define JACOBIAN_FUNCTION mlg_rhs_jacobian_full
 #include "jacobian_export.h"

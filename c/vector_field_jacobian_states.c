@@ -1,6 +1,6 @@
 /* f and df/du only: the model of vector_field.h with DUAL_N = MLG_NX
  * directions, about half the cost of the full Jacobian. */
-#include "mlg.h"
+#include "mlg_model.h"
 #define DUAL_N MLG_NX
 #define JACOBIAN_FUNCTION mlg_rhs_jacobian_states
 #include "jacobian_export.h"

@@ -1,5 +1,5 @@
 /* AUTO-07p equations file for the MLG model: a thin layer over the c/
- * library (c/mlg.h).  Built by the Makefile (c/c.mk, mk/auto.mk) into
+ * library (c/mlg_model.h).  Built by the Makefile (c/c.mk, mk/auto.mk) into
  * build/models/mlg.exe, linked with build/lib/libmlg.a.
  *
  * PAR(1..10): the continuation parameters of c/parameters.h, in that order.
@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "auto_f2c.h"
-#include "mlg.h"
+#include "mlg_model.h"
 
 /* Solution measures, 1-based AUTO indices (constants/c.mlg names them). */
 enum {

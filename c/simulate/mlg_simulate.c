@@ -1,6 +1,6 @@
 /* mlg_simulate: time simulation of the MLG model with SUNDIALS CVODE.
  *
- * Integrates u' = f(u; p) (c/mlg.h) from the straight-rolling equilibrium
+ * Integrates u' = f(u; p) (c/mlg_model.h) from the straight-rolling equilibrium
  * plus a small perturbation, as in Fig. 8 of Howcroft et al. (section IV.A:
  * V = 300 m/s, F* = 0.2, zero freeplay, 15 s from near the unstable
  * equilibrium).  BDF with Newton iterations and a dense linear solver fed by
@@ -23,7 +23,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
-#include "mlg.h"
+#include "mlg_model.h"
 
 static const char *const STATE_NAMES[MLG_NX] = {
     "psi", "delta", "beta", "eta", "psi_dot", "delta_dot", "beta_dot", "eta_dot",

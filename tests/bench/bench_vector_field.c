@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <time.h>
 
-#include "mlg.h"
+#include "mlg_model.h"
 
 static double now(void)
 {

@@ -17,7 +17,7 @@
  *     at non-zero angles (reported, and required to differ). */
 #include <string.h>
 
-#include "mlg.h"
+#include "mlg_model.h"
 #include "unit.h"
 
 void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda,

@@ -1,6 +1,6 @@
 /* Straight-rolling equilibrium against the independent prototype values of
  * shared/model-notes.md section 3 (4 significant digits). */
-#include "mlg.h"
+#include "mlg_model.h"
 #include "unit.h"
 
 static void equilibrium_at(double Fstar, double variant, double V, double u[MLG_NX])

@@ -1,6 +1,6 @@
 /* Torque-link freeplay: eq. (15) tends to eq. (14) as epsilon -> 0 away from
  * the corners; zero freeplay is exactly linear; r_tlk geometry. */
-#include "mlg.h"
+#include "mlg_model.h"
 #include "unit.h"
 
 int main(void)

@@ -9,7 +9,7 @@
  * h and h/2 (truncation error O(h^4)).  Tolerance 1e-6. */
 #include <string.h>
 
-#include "mlg.h"
+#include "mlg_model.h"
 #include "unit.h"
 
 #define NSAMPLES 1200

@@ -3,7 +3,7 @@
  * shared/model-notes.md (sections 2A and 3). */
 #include <stdlib.h>
 
-#include "mlg.h"
+#include "mlg_model.h"
 #include "unit.h"
 
 void dgeev_(const char *jobvl, const char *jobvr, const int *n, double *a, const int *lda,

@@ -1,7 +1,7 @@
 /* Parameter validation, look-up by name, and the domain status of evaluations. */
 #include <string.h>
 
-#include "mlg.h"
+#include "mlg_model.h"
 #include "unit.h"
 
 static void expect_rejected(const char *name, mlg_params p, const char *needle)

@@ -3,7 +3,7 @@
  * right tyres swap), f(S u) = S f(u).  With side-stay angles the mirror image
  * of the side-stay axis u_beta is the axis of (-rho, -mu), so
  * f(S u; -rho, -mu) = S f(u; rho, mu), for every eom_terms level. */
-#include "mlg.h"
+#include "mlg_model.h"
 #include "unit.h"
 
 static void reflect(const double *u, double *v)

@@ -6,8 +6,8 @@
  * u' = f(u; p) with 10 states, its exact Jacobians, the straight-rolling
  * equilibrium and parameter validation.  Plain C11; no AUTO dependency.
  */
-#ifndef MLG_H
-#define MLG_H
+#ifndef MLG_MODEL_H
+#define MLG_MODEL_H
 
 #include <stddef.h>
 #include "parameters.h"
@@ -115,7 +115,7 @@ typedef struct {
 int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
                mlg_energy_parts *out);
 
-/* ---- freeplay, in plain doubles for plots and boundaries (freeplay_value.c) ---- */
+/* ---- freeplay, in plain doubles for plots and boundaries (vector_field_value.c; epsilon in parameters.c) ---- */
 double mlg_r_tlk(const mlg_params *p, double eta);                 /* m */
 /* Torque-link moment divided by r_tlk, i.e. force [N], for deflection y_tlk [m]:
  * eq. (15) if eps_m > 0, the non-smooth eq. (14) if eps_m == 0. */
