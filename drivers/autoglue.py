@@ -7,10 +7,20 @@
 AUTO_DIR comes from the environment (the Makefile exports it), else the tree
 the Makefile builds, build/auto/07p. Importing this module makes the `auto`
 package importable and usable with numpy >= 1.24.
+
+Run directories are owned (claim): the first process to use one locks it
+for its lifetime and empties it; another process that wants the same
+directory waits for it and says so, so two runs never write one directory.
+AUTO's own output goes to <rundir>/<name>.log; the console gets one line per
+run, and a failed run's RunError carries the tail of its log.
 """
+import atexit
+import fcntl
 import os
+import shutil
 import signal
 import sys
+import time
 
 import numpy
 
@@ -33,7 +43,153 @@ import auto  # noqa: E402
 
 
 class RunError(RuntimeError):
-    """An AUTO run that failed, did not converge or missed a special point."""
+    """An AUTO run that failed, did not converge or missed a special point.
+    str() ends with the tail of the run's log; .brief is the first line."""
+
+    def __init__(self, message, log=None):
+        self.brief = message
+        if log:
+            message += f"\n  log {log}, last lines:\n" + "".join(
+                f"    | {line}" for line in tail(log))
+        super().__init__(message)
+
+
+def tail(path, lines=15):
+    """The last `lines` lines of a text file ([] if it cannot be read)."""
+    try:
+        with open(path, errors="replace") as f:
+            return f.readlines()[-lines:]
+    except OSError:
+        return []
+
+
+# Directories this process owns (path -> open lock file, held until exit).
+# Child processes inherit the list through the environment: a job started by
+# a driver may use a directory under one its parent claimed without waiting
+# for its own parent.
+_claimed = {}
+CLAIMED_ENV = "MLG_RUN_CLAIMED"
+
+
+def _owned(path):
+    inherited = [p for p in os.environ.get(CLAIMED_ENV, "").split(os.pathsep) if p]
+    return any(path == p or path.startswith(p + os.sep) for p in list(_claimed) + inherited)
+
+
+def claim(path):
+    """Make the run directory `path` this process's own and return it.
+
+    The first claim takes an exclusive lock (flock on .<dir>.lock beside it,
+    released when the process ends) and empties the directory, so that every
+    file in it comes from this process.  If another live process holds the
+    lock, this waits until it ends, saying so on stderr.  Claims of the same
+    directory, or of one below an owned one, return at once."""
+    path = os.path.abspath(path)
+    if _owned(path):
+        os.makedirs(path, exist_ok=True)
+        return path
+    parent, base = os.path.split(path)
+    os.makedirs(parent, exist_ok=True)
+    lock = open(os.path.join(parent, f".{base}.lock"), "a+")
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        lock.seek(0)
+        holder = lock.read().strip() or "another process"
+        print(f"{_label(path)}: {os.path.relpath(path)} is in use by {holder}; "
+              "waiting for it to finish", file=sys.stderr, flush=True)
+        waited = time.monotonic()
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        print(f"{_label(path)}: {os.path.relpath(path)} free after "
+              f"{time.monotonic() - waited:.0f} s; computing it afresh",
+              file=sys.stderr, flush=True)
+    lock.seek(0)
+    lock.truncate()
+    lock.write(f"process {os.getpid()} ({' '.join(sys.argv)[:200]})\n")
+    lock.flush()
+    shutil.rmtree(path, ignore_errors=True)
+    os.makedirs(path)
+    _claimed[path] = lock
+    os.environ[CLAIMED_ENV] = os.pathsep.join(
+        [p for p in os.environ.get(CLAIMED_ENV, "").split(os.pathsep) if p] + [path])
+    return path
+
+
+def _label(rundir):
+    """The figure a run directory belongs to: its first component below
+    RUN_ROOT (its own name elsewhere)."""
+    rel = os.path.relpath(os.path.abspath(rundir), RUN_ROOT)
+    return os.path.basename(rundir) if rel.startswith("..") else rel.split(os.sep)[0]
+
+
+class _Progress:
+    """One console line per AUTO run: figure, run, done/total, elapsed.
+    The total is the number of runs the same figure made last time
+    (RUN_ROOT/.runs/<figure>.count), "?" the first time."""
+
+    def __init__(self):
+        self.started = time.monotonic()
+        self.done = {}
+
+    def count_file(self, figure):
+        return os.path.join(RUN_ROOT, ".runs", f"{figure}.count")
+
+    def previous(self, figure):
+        try:
+            with open(self.count_file(figure)) as f:
+                return int(f.read())
+        except (OSError, ValueError):
+            return None
+
+    def step(self, rundir, name, seconds, status="done"):
+        figure = _label(rundir)
+        if figure not in self.done:
+            self.done[figure] = [0, self.previous(figure)]
+        self.done[figure][0] += 1
+        done, total = self.done[figure]
+        total = "?" if total is None or total < done else total
+        where = os.path.relpath(os.path.join(os.path.abspath(rundir), name),
+                                os.path.join(RUN_ROOT, figure))
+        print(f"{figure}: {where} {status} ({done}/{total}) in {seconds:.1f} s, "
+              f"{time.monotonic() - self.started:.0f} s elapsed", flush=True)
+
+    def save(self):
+        """At exit: remember each figure's run count as next time's total."""
+        for figure, (done, _) in self.done.items():
+            try:
+                os.makedirs(os.path.dirname(self.count_file(figure)), exist_ok=True)
+                with open(self.count_file(figure), "w") as f:
+                    f.write(f"{done}\n")
+            except OSError:
+                pass
+
+
+PROGRESS = _Progress()
+atexit.register(PROGRESS.save)
+
+
+class _LogTo:
+    """Send this process's stdout and stderr (its own and AUTO's child
+    processes') to a file, at the descriptor level."""
+
+    def __init__(self, path):
+        self.path = path
+
+    def __enter__(self):
+        sys.stdout.flush()
+        sys.stderr.flush()
+        self.saved = [os.dup(1), os.dup(2)]
+        log = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
+        os.dup2(log, 1)
+        os.dup2(log, 2)
+        os.close(log)
+
+    def __exit__(self, *exc):
+        sys.stdout.flush()
+        sys.stderr.flush()
+        for fd, saved in zip((1, 2), self.saved):
+            os.dup2(saved, fd)
+            os.close(saved)
 
 
 def check_prebuilt(model):
@@ -110,8 +266,9 @@ def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time
     (for curves known to end at a hard spot; the caller marks the end).
     time_limit: seconds after which the AUTO executable is killed and
     RunError raised (for runs known to stall in AUTO's iterations).
+    rundir is claimed (claim); AUTO's messages go to <rundir>/<name>.log.
     """
-    os.makedirs(rundir, exist_ok=True)
+    rundir = claim(rundir)
     if constants is not None:
         kw["c"] = read_constants(constants)
     if os.sep in kw.get("e", ""):
@@ -119,6 +276,8 @@ def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time
         check_prebuilt(kw["e"])
 
     outputs = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
+    log = os.path.join(rundir, f"{name}.log")
+    started = time.monotonic()
     cwd = os.getcwd()
     os.chdir(rundir)
     try:
@@ -128,27 +287,47 @@ def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time
         if time_limit:
             signal.signal(signal.SIGALRM, _kill_children)
             signal.alarm(int(time_limit))
-        auto.run(data, sv=name, **kw)
+        with _LogTo(log):
+            auto.run(data, sv=name, **kw)
     except auto.AUTOExceptions.AUTORuntimeError as exc:
         timed_out = time_limit and signal.alarm(0) == 0
         why = f"killed after the time limit of {time_limit} s" if timed_out else exc
-        raise RunError(f"run {name} in {rundir}: AUTO stopped ({why}); "
-                       "see the messages above") from exc
+        PROGRESS.step(rundir, name, time.monotonic() - started, "FAILED")
+        raise RunError(f"run {name} in {rundir}: AUTO stopped ({why})", log) from exc
     finally:
         if time_limit:
             signal.alarm(0)
         os.chdir(cwd)
-    if not all(map(os.path.exists, outputs)):
-        raise RunError(f"run {name} in {rundir}: AUTO wrote no output")
-    # The diagram run() returns reads its files lazily, by relative path.
-    bd = auto.bifDiag.bifDiag(*outputs)
+    missing = [path for path in outputs if not os.path.exists(path)]
+    if missing:
+        raise RunError(f"run {name} in {rundir}: AUTO wrote no {', '.join(missing)}", log)
+    bd = read_diagram(outputs, f"run {name} in {rundir}", log)
 
     try:
         check_diagram(bd, f"run {name} in {rundir}", expect)
     except RunError as exc:
         if not (allow_mx and "(MX)" in str(exc)):
-            raise
+            PROGRESS.step(rundir, name, time.monotonic() - started, "FAILED")
+            raise RunError(str(exc), log) from None
         print(f"REPORTED: {exc}; the branch ends there")
+    PROGRESS.step(rundir, name, time.monotonic() - started)
+    return bd
+
+
+def read_diagram(outputs, what, log=None):
+    """The diagram of a run's b-, s- and d-files, its b-file parsed now (AUTO
+    reads lazily): RunError if it is empty, unreadable, or its last line
+    was cut short."""
+    try:
+        with open(outputs[0], "rb") as f:
+            text = f.read()
+        bd = auto.bifDiag.bifDiag(*outputs)
+        lengths = [len(branch) for branch in bd]
+    except Exception as exc:  # any parser failure means an unreadable file
+        raise RunError(f"{what}: {outputs[0]} unreadable ({type(exc).__name__}: {exc})",
+                       log) from exc
+    if not text.endswith(b"\n") or not lengths or min(lengths) == 0:
+        raise RunError(f"{what}: {outputs[0]} is empty or cut short", log)
     return bd
 
 

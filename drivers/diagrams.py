@@ -182,14 +182,15 @@ def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None):
 def save(fig, name):
     os.makedirs(autoglue.FIGURES_DIR, exist_ok=True)
     paths = [os.path.join(autoglue.FIGURES_DIR, f"{name}.{ext}") for ext in ("png", "pdf")]
-    for path in paths:
-        fig.savefig(path, bbox_inches="tight")
+    for path in paths:  # written beside, then renamed: a reader never sees half a file
+        partial = f"{path}.{os.getpid()}.partial"
+        fig.savefig(partial, bbox_inches="tight", format=path.rsplit(".", 1)[1])
+        os.replace(partial, path)
     plt.close(fig)
     print(f"{name}: wrote " + ", ".join(os.path.relpath(p, ROOT) for p in paths))
 
 
 def rundir(name):
-    """$MLG_RUN_ROOT/<name> (default build/<name>), created if needed."""
-    path = os.path.join(autoglue.RUN_ROOT, name)
-    os.makedirs(path, exist_ok=True)
-    return path
+    """$MLG_RUN_ROOT/<name> (default build/<name>), claimed by this process
+    (autoglue.claim: emptied on first use, never written by another)."""
+    return autoglue.claim(os.path.join(autoglue.RUN_ROOT, name))

@@ -52,7 +52,7 @@ def speed_diagram(rundir, parameter_set="figures", skip_failed=False, **values):
             except autoglue.RunError as exc:
                 if not skip_failed:
                     raise
-                print(f"  orbits from {name} at V = {origin['V']:.4f} left out: {exc}")
+                print(f"  orbits from {name} at V = {origin['V']:.4f} left out: {exc.brief}")
                 break
             print(f"  orbits {name} from V = {origin['V']:.4f}: V in "
                   f"[{min(orbits[0]['V']):.2f}, {max(orbits[0]['V']):.2f}], folds at V = "

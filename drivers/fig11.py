@@ -172,7 +172,7 @@ def upper_folds(rundir, first, folds):
                                          DS=0.05 * sign, DSMAX=1.0, NMX=400, allow_mx=True,
                                          time_limit=FOLD_TIME_LIMIT))
             except autoglue.RunError as exc:
-                print(f"REPORTED: {name} left out: {exc}")
+                print(f"REPORTED: {name} left out: {exc.brief}")
     return out
 
 

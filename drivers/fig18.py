@@ -58,7 +58,7 @@ def auto_check(rundir):
                                         DSMAX=0.02, UZSTOP={"Fstar": [FSTARS[0], FSTARS[-1]]}))
                 mg.progress("fig18", f"AUTO: {name} continued {d} in F*")
             except autoglue.RunError as exc:
-                mg.progress("fig18", f"AUTO: {name} continued {d} in F* FAILED: {exc}")
+                mg.progress("fig18", f"AUTO: {name} continued {d} in F* FAILED: {exc.brief}")
     return out
 
 

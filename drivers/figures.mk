@@ -32,7 +32,7 @@ FIGURES += fig07 fig09
 REGRESS_FIGURES += fig07 fig09
 REGRESS_QUICK += fig07 fig09
 TEST_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
-TEST_PROGRAMS += tests/test_auto_plugin.py tests/test_sidestay_drivers.py
+TEST_PROGRAMS += tests/test_auto_plugin.py tests/test_sidestay_drivers.py tests/test_isolated_runs.py
 BENCH_PROGRAMS += tests/bench/bench_auto_jacobian.py
 
 # Freeplay figures (y_fp = 1 mm, epsilon = 0.1 y_fp); fig06 needs no AUTO.
@@ -52,7 +52,14 @@ TEST_PROGRAMS += tests/test_freeplay_diagrams.py
 SWEEP_RHO ?= -10,0,10
 SWEEP_MU ?= -10,0,10
 SWEEP_GRID := --rho=$(SWEEP_RHO) --mu=$(SWEEP_MU)
-SWEEP_RESULTS := $(shell $(PYTHON) drivers/sweep.py targets $(SWEEP_GRID))
+# The grid is read only when `sweep` is a goal (never for `make clean`); a
+# rejected grid stops make with sweep.py's message, which names the variable.
+ifneq ($(filter sweep,$(MAKECMDGOALS)),)
+SWEEP_RESULTS := $(shell $(PYTHON) drivers/sweep.py targets $(SWEEP_GRID) || echo SWEEP_GRID_REJECTED)
+ifneq ($(filter SWEEP_GRID_REJECTED,$(SWEEP_RESULTS)),)
+$(error sweep: SWEEP_RHO=$(SWEEP_RHO) SWEEP_MU=$(SWEEP_MU) rejected (reason above))
+endif
+endif
 SWEEP_ROOT := $(abspath $(or $(MLG_RUN_ROOT),build))/sweep
 comma := ,
 SWEEP_CHECKED := $(SWEEP_ROOT)/grid$(subst $(comma),_,$(SWEEP_RHO))x$(subst $(comma),_,$(SWEEP_MU)).ok

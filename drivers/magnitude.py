@@ -205,7 +205,7 @@ def _hopf_runs(rundir, name, hb, figure):
                                 UZSTOP={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]})
                          for d, sign in (("a", 1), ("b", -1)))
         except autoglue.RunError as exc:
-            progress(figure, f"{name}: Hopf curve with ICP {order} failed ({exc})"
+            progress(figure, f"{name}: Hopf curve with ICP {order} failed ({exc.brief})"
                      + ("; repeating with the parameters swapped" if order[0] == "yfp" else ""))
     raise autoglue.RunError(f"{name}: Hopf curve failed with both parameter orders")
 

@@ -64,7 +64,7 @@ def attempt(name, run, notes):
     try:
         bd = run()
     except autoglue.RunError as exc:
-        notes.append(str(exc))
+        notes.append(exc.brief)
         return None
     if any(ty == "MX" for _, _, ty in autoglue.special_points(bd)):
         notes.append(f"run {name}: ends without convergence (MX), kept up to there")

@@ -40,9 +40,36 @@ def parse_point(name):
     return float(rho), float(mu)
 
 
+class GridError(ValueError):
+    """A grid that is not a list of distinct numbers (named by its make variable)."""
+
+
+def axis(text, variable):
+    """The values of one grid axis, "a,b,c" in degrees.  Each must be a finite
+    number, and no two may share a run directory (point_name rounds to 6
+    significant digits: 10 and 10.0000001 would be one job)."""
+    values, names = [], {}
+    for item in text.split(","):
+        try:
+            value = float(item)
+        except ValueError:
+            raise GridError(f"{variable}={text!r}: {item.strip()!r} is not a number "
+                            "(give comma-separated angles in degrees, e.g. -10,0,10)") from None
+        if not math.isfinite(value):
+            raise GridError(f"{variable}={text!r}: {item.strip()!r} is not a finite angle")
+        name = f"{value:g}"
+        if name in names:
+            raise GridError(f"{variable}={text!r}: {names[name]} and {item.strip()} are the "
+                            f"same grid point ({name} deg, one run directory); list each "
+                            "angle once, distinct to 6 significant digits")
+        names[name] = item.strip()
+        values.append(value)
+    return values
+
+
 def grid(args):
-    values = [[float(x) for x in text.split(",")] for text in (args.rho, args.mu)]
-    return [(rho, mu) for rho in values[0] for mu in values[1]]
+    rhos, mus = axis(args.rho, "SWEEP_RHO (--rho)"), axis(args.mu, "SWEEP_MU (--mu)")
+    return [(rho, mu) for rho in rhos for mu in mus]
 
 
 def result_path(rho, mu):
@@ -125,7 +152,10 @@ def main():
     parser.add_argument("--rho", default=DEFAULT_GRID, help="rho values [deg], comma-separated")
     parser.add_argument("--mu", default=DEFAULT_GRID, help="mu values [deg], comma-separated")
     args = parser.parse_args()
-    points = grid(args)
+    try:
+        points = grid(args)
+    except GridError as exc:
+        sys.exit(f"sweep: grid rejected: {exc}")
     if args.command == "targets":
         print(" ".join(result_path(*p) for p in points))
     elif args.command == "jobs":

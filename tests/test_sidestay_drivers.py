@@ -1,10 +1,13 @@
 """The side-stay drivers: bad angles are rejected before any AUTO run, with a
 message naming the parameter; one sweep job gives the critical speed, and
-the mirror image (-rho, -mu) gives the same (docs/model.md 8.5, 8.7)."""
+the mirror image (-rho, -mu) gives the same (docs/model.md 8.5, 8.7).  A
+sweep grid with a repeated point or a non-number is rejected naming
+SWEEP_RHO/SWEEP_MU, and `make clean` never reads the grid."""
 import json
 import os
 import subprocess
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -28,6 +31,8 @@ def main():
           proc.returncode != 0 and "parameter rho = 1.65806 rad" in proc.stderr,
           proc.stderr.strip())
 
+    sweep_grids()
+
     speeds = {}
     for name in ("rho10_mu10", "rho-10_mu-10"):
         proc = driver("drivers/sweep.py", "point", name)
@@ -42,6 +47,34 @@ def main():
               abs(a - 350.664) <= 0.05, f"{a:.4f} m/s")
         check("sweep: mirror geometry (-rho, -mu) has the same critical speed (1e-6)",
               abs(a - b) <= 1e-6 * a, f"{a:.6f} vs {b:.6f} m/s")
+
+
+def sweep_grids():
+    for rho, mu, variable, what in (("10,10.0000001", "0", "SWEEP_RHO", "10 and 10.0000001"),
+                                    ("0", "5,-5,5", "SWEEP_MU", "5 and 5"),
+                                    ("0,,10", "0", "SWEEP_RHO", "'' is not a number"),
+                                    ("0", "1,x", "SWEEP_MU", "'x' is not a number")):
+        for command in ("jobs", "targets"):
+            proc = driver("drivers/sweep.py", command, f"--rho={rho}", f"--mu={mu}")
+            check(f"sweep {command} --rho={rho} --mu={mu}: rejected naming {variable} ({what})",
+                  proc.returncode != 0 and not proc.stdout and variable in proc.stderr
+                  and what in proc.stderr, (proc.stdout + proc.stderr).strip())
+    proc = subprocess.run(["make", "-n", "sweep", "SWEEP_RHO=10,10.0000001"], cwd=ROOT,
+                          capture_output=True, text=True)
+    check("make sweep SWEEP_RHO=10,10.0000001 stops before any job, naming SWEEP_RHO",
+          proc.returncode != 0 and "SWEEP_RHO" in proc.stderr and "sweep.py point" not in
+          proc.stdout, (proc.stdout + proc.stderr).strip()[-400:])
+    # A PYTHON that leaves a mark shows whether make ran it to read the grid.
+    with tempfile.TemporaryDirectory() as scratch:
+        mark = os.path.join(scratch, "called")
+        fake = os.path.join(scratch, "python")
+        with open(fake, "w") as f:
+            f.write(f"#!/bin/sh\ntouch {mark}\n")
+        os.chmod(fake, 0o755)
+        proc = subprocess.run(["make", "-n", "clean", f"PYTHON={fake}", "SWEEP_RHO=x"],
+                              cwd=ROOT, capture_output=True, text=True)
+        check("make clean does not evaluate the sweep grid (not even a bad one)",
+              proc.returncode == 0 and not os.path.exists(mark), proc.stderr.strip())
 
 
 if __name__ == "__main__":
