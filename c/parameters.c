@@ -182,6 +182,8 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
                       "corrections) or 2 (complete Lagrangian)", p->eom_terms);
     if (p->tyre_forces != 0.0 && p->tyre_forces != 1.0)
         return reject(msg, n, "parameter tyre_forces = %g must be 0 or 1", p->tyre_forces);
+    if (p->F_tyre_min < 0.0)
+        return reject(msg, n, "parameter F_tyre_min = %g N must be >= 0", p->F_tyre_min);
     if (p->strut_variant != 0.0 && p->strut_variant != 1.0)
         return reject(msg, n, "parameter strut_variant = %g must be 0 (monotone) or 1 "
                       "(as printed)", p->strut_variant);

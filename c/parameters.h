@@ -96,6 +96,7 @@
     X(k_reff,   0.2,     "-",       "r_eff = r - k_reff d")                      \
     X(k_patch,  0.85,    "-",       "patch length / chord length")               \
     X(k_relax,  0.7,     "-",       "relaxation length / patch length")          \
+    X(F_tyre_min, 0.0,   "N",       "tyre laws held at this load below it (0: as printed)") \
     /* II.B.5: Magic Formula, lateral force (eq. 7) */                              \
     X(C_F,      1.34,    "-",       "C_Fklambda")                                \
     X(a1_F,     -2.828e4, "N",      "a1_Fklambda")                               \

@@ -33,6 +33,15 @@ typedef struct {
     dual L;        /* relaxation length (II.B.4) */
 } tyre_shape;
 
+/* The load the tyre laws (Magic-Formula coefficients, relaxation length) are
+ * evaluated at: F, held at F_tyre_min below it.  F_tyre_min = 0 (default) is
+ * the paper's laws, which all vanish as F -> 0; a positive value is the
+ * low-load assumption of the allowable-freeplay criterion (docs/model.md 4.23). */
+static inline dual tyre_law_load(const mlg_params *c, dual F)
+{
+    return F.v < c->F_tyre_min ? d_const(c->F_tyre_min) : F;
+}
+
 static inline tyre_shape tyre_shape_at(const mlg_params *c, dual F, int *status)
 {
     tyre_shape t;
@@ -48,6 +57,10 @@ static inline tyre_shape tyre_shape_at(const mlg_params *c, dual F, int *status)
         t.h = d_mulc(d_sqrt(chord_sq), c->k_patch * 4.0 * c->r);
     }
     t.L = d_mulc(t.h, c->k_relax);
+    if (F.v < c->F_tyre_min) {
+        int held = MLG_OK;
+        t.L = tyre_shape_at(c, d_const(c->F_tyre_min), &held).L;
+    }
     return t;
 }
 
@@ -62,6 +75,7 @@ static inline dual magic_formula(dual alpha, dual B, double C, dual D, dual E)
 /* Lateral force magnitude along u_lambda, eq. (7), load-dependent coefficients */
 static inline dual tyre_lateral_force(const mlg_params *c, dual F, dual alpha)
 {
+    F = tyre_law_load(c, F);
     dual D = d_addc(d_sqrt(d_addc(d_mulc(F, c->a3_F), c->a2_F)), c->a1_F);
     dual E = d_addc(d_add(d_mulc(d_sq(F), c->a6_F), d_mulc(F, c->a7_F)), c->E0_F);
     dual B = d_div(d_mulc(d_sin(d_mulc(d_atan(d_mulc(F, 1.0 / c->a5_F)), 1.8)), c->a4_F),
@@ -72,6 +86,7 @@ static inline dual tyre_lateral_force(const mlg_params *c, dual F, dual alpha)
 /* Self-aligning moment magnitude about e_Z, eq. (8) */
 static inline dual tyre_aligning_moment(const mlg_params *c, dual F, dual alpha)
 {
+    F = tyre_law_load(c, F);
     dual F2 = d_sq(F);
     dual D = d_add(d_mulc(F2, c->a1_M), d_mulc(F, c->a2_M));
     dual E = d_addc(d_add(d_mulc(F2, c->a5_M), d_mulc(F, c->a6_M)),
