@@ -11,6 +11,8 @@ Scalings (section III): "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1,
 eps_abs = 0), "fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).
 Everything is at F* = 1 unless Fstar is passed.
 """
+import functools
+
 import numpy
 
 import autoglue
@@ -344,26 +346,41 @@ def _merge(runs):
 # lightly damped axial pair (1.6 Hz, Re ~ -0.016) never crosses.
 BANDS = {"low": (1e-6, 8.0), "high": (8.0, numpy.inf), "real": (-1.0, 1e-6)}
 KAPPA_GRID = numpy.geomspace(YFP_MIN, YFP_MAX, 61)
+# The loads of the envelope of section IV.E, F* <= 2 (F* = 0 lifts a wheel off).
+ENVELOPE_LOADS = numpy.round(numpy.arange(0.1, 2.0001, 0.05), 3)
 
 
-def growth(Fstar, yfp, V, scaling="fixed"):
+@functools.lru_cache(maxsize=1024)
+def straight_rolling(parameter_set, Fstar, overrides):
+    """The straight-rolling state at load F* with the parameter overrides
+    ((name, value) pairs).  It is the same for every V > 0 (docs/model.md
+    4.20) and every freeplay (the torque links carry no load at psi = 0),
+    so the scans below solve it once per load."""
+    return mlgmodel.Model(parameter_set, Fstar=Fstar, **dict(overrides)).equilibrium()
+
+
+def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
     """{band: largest real part of the eigenvalues of straight rolling whose
-    frequency |Im|/2pi lies in the band} (-inf if none)."""
-    model = mlgmodel.Model("figures", **values(scaling, yfp, Fstar, V=V))
-    eig = numpy.linalg.eigvals(numpy.array(model.jacobian(model.equilibrium())))
+    frequency |Im|/2pi lies in the band} (-inf if none), and "any": the
+    largest real part of all.  `model` overrides parameters or constants by
+    name (e.g. strut_variant=1, c_psi=410)."""
+    u = straight_rolling(parameter_set, Fstar, tuple(sorted(model.items())))
+    model = mlgmodel.Model(parameter_set, **values(scaling, yfp, Fstar, V=V), **model)
+    model.check()
+    eig = numpy.linalg.eigvals(numpy.array(model.jacobian(u)))
     freq = numpy.abs(eig.imag) / (2 * numpy.pi)
-    out = {}
+    out = {"any": float(eig.real.max())}
     for band, (lo, hi) in BANDS.items():
         inside = (freq > lo) & (freq <= hi)
         out[band] = float(eig.real[inside].max()) if inside.any() else -numpy.inf
     return out
 
 
-def crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed"):
+def crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed", first_only=False, **model):
     """y_fp values where the growth of `band` changes sign along `grid`
-    (bisection to 1e-10 mm)."""
+    (bisection to 1e-10 mm); with first_only, only the first of them."""
     def g(y):
-        return growth(Fstar, y, V, scaling)[band]
+        return growth(Fstar, y, V, scaling, **model)[band]
     found, previous, g_prev = [], grid[0], g(grid[0])
     for y in grid[1:]:
         g_y = g(y)
@@ -376,20 +393,24 @@ def crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed"):
                 else:
                     hi = mid
             found.append(0.5 * (lo + hi))
+            if first_only:
+                break
         previous, g_prev = y, g_y
     return found
 
 
-def extreme_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN, V_LIMIT, 25)):
+def extreme_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN, V_LIMIT, 25),
+                     **model):
     """(y_fp, V): the smallest (or, with highest, the largest) y_fp at which
     the mode `band` changes stability for some V in [V_MIN, V_LIMIT] -- a
     turning point in y_fp of its Hopf curve or its end at V_LIMIT; optimised
-    on a V grid refined three times.  (inf or -inf, nan) if it never does."""
+    on a V grid refined three times.  (inf or -inf, nan) if it never does.
+    `model`: parameter overrides, as for growth."""
     sign = -1.0 if highest else 1.0
     best = (sign * numpy.inf, numpy.nan)
     for _ in range(4):
         for V in speeds:
-            found = crossings(Fstar, V, band)
+            found = crossings(Fstar, V, band, first_only=not highest, **model)
             if found and sign * (found[-1] if highest else found[0]) < sign * best[0]:
                 best = (found[-1] if highest else found[0], V)
         if not numpy.isfinite(best[0]):
@@ -399,7 +420,44 @@ def extreme_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN, V_
     return best
 
 
-def window_points(Fstar):
+def window_point_curve(rundir, tag, yfp, Fstar, stop, dsmax=0.02, **model):
+    """The Hopf point of straight rolling at V = V_LIMIT near y_fp = `yfp`
+    (eps = 0.1 mm; a window point a or b on V = V_LIMIT) continued by AUTO in
+    (F*, y_fp) both ways from `Fstar` to the loads `stop`.  `model`: PAR
+    overrides (e.g. strut_variant=1).  {"up"/"down": the run, or the
+    RunError that stopped it}.  DSMIN = 1e-10: with the printed strut
+    (variant 1) the curve turns twice in F* while eta crosses the 1e-5 m wide
+    stage switch (F* 0.63-0.70); AUTO's default 1e-5 stops it (MX) there."""
+    vals = {"Fstar": Fstar, "V": V_LIMIT, **SCALINGS["fixed"], **model}
+    hb = dg.hopf_point(rundir, f"{tag}_hb", "figures", "yfp", yfp, width=0.05 * yfp, **vals)
+    out = {}
+    for direction, ds in (("up", 0.01), ("down", -0.01)):
+        try:
+            out[direction] = dg.run(rundir, f"{tag}_{direction}", "hopf_curve", data=hb,
+                                    ICP=["Fstar", "yfp"] + dg.MEASURES + [11], DS=ds,
+                                    DSMAX=dsmax, DSMIN=1e-10, UZSTOP={"Fstar": list(stop)})
+        except autoglue.RunError as exc:
+            out[direction] = exc
+    return out
+
+
+def refined_minimum(evaluate, loads, key, points=None, finer=(10,)):
+    """The point of least key(point) over F* in the evenly spaced `loads`,
+    refined around the minimum: for each k of `finer` in turn, on 2k + 1
+    loads spanning one step either side, the step then divided by k.
+    evaluate(F*) returns a point (a dict with "Fstar"); `points`: the points
+    of `loads` if already evaluated."""
+    best = min(points or [evaluate(F) for F in loads], key=key)
+    step = loads[1] - loads[0]
+    for k in finer:
+        fine = numpy.linspace(max(loads[0], best["Fstar"] - step),
+                              min(loads[-1], best["Fstar"] + step), 2 * k + 1)
+        best = min([best] + [evaluate(F) for F in fine], key=key)
+        step /= k
+    return best
+
+
+def window_points(Fstar, **model):
     """The points bounding the windows of stable straight rolling up to
     V_LIMIT at this F* (eps = 0.1 mm), as y_fp [mm]:
       a: the smallest y_fp at which the high-frequency mode is unstable for
@@ -414,11 +472,12 @@ def window_points(Fstar):
          independent of V),
       first: the smallest of a, c, p, with its mode and speed.
     y_fp is scanned over KAPPA_GRID (up to YFP_MAX); inf where a mode never
-    crosses there.  Also the speeds V_a, V_b, V_c of a, b, c."""
-    a, V_a = extreme_crossing(Fstar, "high")
-    b, V_b = extreme_crossing(Fstar, "high", highest=True)
-    c, V_c = extreme_crossing(Fstar, "low")
-    real = crossings(Fstar, 0.5 * V_LIMIT, "real")
+    crosses there.  Also the speeds V_a, V_b, V_c of a, b, c.  `model`:
+    parameter overrides, as for growth."""
+    a, V_a = extreme_crossing(Fstar, "high", **model)
+    b, V_b = extreme_crossing(Fstar, "high", highest=True, **model)
+    c, V_c = extreme_crossing(Fstar, "low", **model)
+    real = crossings(Fstar, 0.5 * V_LIMIT, "real", **model)
     p = real[0] if real else numpy.inf
     first = min((a, "high", V_a), (c, "low", V_c), (p, "real", numpy.nan), key=lambda t: t[0])
     return {"Fstar": Fstar, "a": a, "b": b, "c": c, "p": p, "V_a": V_a, "V_b": V_b, "V_c": V_c,
