@@ -57,6 +57,7 @@ include mk/auto.mk
 -include models/models.mk
 -include drivers/figures.mk
 -include drivers/magnitude.mk
+-include drivers/criterion.mk
 -include tests/regression/regression.mk
 
 setup: packages auto
