@@ -2,11 +2,14 @@
 regions of the (y_fp/eps, F*) plane by what straight rolling does for V up to
 120 m/s, and the largest envelope 0 < y_fp/eps < kappa*, F* in [0.1, 2],
 inside R1.  Writes kappa* to build/figures/fig18.json for Fig. 19.
+`fig18.py --strut-variant 1` does the same with the printed strut spring
+(build/fig18_v1/, build/figures/fig18_v1.*).
 
 a, b, c and the region map come from the eigenvalues of straight rolling
 (magnitude.window_points, magnitude.growth) on an F* grid; a and b are also
 continued by AUTO as curves of Hopf points at V = 120 m/s in (y_fp, F*) as a
 check."""
+import argparse
 import json
 import os
 import sys
@@ -21,16 +24,17 @@ import diagrams as dg
 import magnitude as mg
 import paper_table
 
-FSTARS = numpy.round(numpy.arange(0.1, 2.0001, 0.05), 3)   # F* = 0 lifts a wheel off
+FSTARS = mg.ENVELOPE_LOADS
 MAP_KAPPA = numpy.geomspace(0.05, 8.0, 50)
 MAP_SPEEDS = numpy.linspace(mg.V_MIN, mg.V_LIMIT, 30)
 REGIONS = ("R1", "R2", "gentle oscillations", "high-frequency shimmy", "static yaw")
 COLOURS = ("white", "tab:cyan", "khaki", "salmon", "0.7")
 
 
-def region(Fstar, kappa, b):
+def region(Fstar, kappa, b, **model):
     """Index in REGIONS of what straight rolling does for V <= 120 m/s."""
-    worst = {band: max(mg.growth(Fstar, kappa * mg.EPSILON, V)[band] for V in MAP_SPEEDS)
+    worst = {band: max(mg.growth(Fstar, kappa * mg.EPSILON, V, **model)[band]
+                       for V in MAP_SPEEDS)
              for band in mg.BANDS}
     if worst["high"] > 0:
         return 3
@@ -41,48 +45,43 @@ def region(Fstar, kappa, b):
     return 0 if b is None or kappa * mg.EPSILON < b else 1
 
 
-def auto_check(rundir):
+def auto_check(rundir, **model):
     """a and b continued by AUTO in (y_fp, F*) at V = 120 from F* = 1:
     {name: [runs]}; a run that fails is reported and left out."""
-    window = mg.window_points(mg.FSTAR)
-    vals = {"Fstar": mg.FSTAR, "V": mg.V_LIMIT, **mg.SCALINGS["fixed"]}
+    window = mg.window_points(mg.FSTAR, **model)
     out = {}
     for name in ("a", "b"):
-        hb = dg.hopf_point(rundir, f"{name}_hb", "figures", "yfp", window[name],
-                           width=0.05 * window[name], **vals)
+        curve = mg.window_point_curve(rundir, name, window[name], mg.FSTAR,
+                                      (FSTARS[0], FSTARS[-1]), **model)
         out[name] = []
-        for d, ds in (("up", 0.01), ("down", -0.01)):
-            try:
-                out[name].append(dg.run(rundir, f"{name}_{d}", "hopf_curve", data=hb,
-                                        ICP=["Fstar", "yfp"] + dg.MEASURES + [11], DS=ds,
-                                        DSMAX=0.02, UZSTOP={"Fstar": [FSTARS[0], FSTARS[-1]]}))
+        for d, run in curve.items():
+            if isinstance(run, autoglue.RunError):
+                mg.progress("fig18", f"AUTO: {name} continued {d} in F* FAILED: {run.brief}")
+            else:
+                out[name].append(run)
                 mg.progress("fig18", f"AUTO: {name} continued {d} in F*")
-            except autoglue.RunError as exc:
-                mg.progress("fig18", f"AUTO: {name} continued {d} in F* FAILED: {exc.brief}")
     return out
 
 
-def compute(where="fig18"):
+def compute(where="fig18", **model):
     rundir = dg.rundir(where)
     points = []
     for Fstar in FSTARS:
-        points.append(mg.window_points(Fstar))
+        points.append(mg.window_points(Fstar, **model))
         p = points[-1]
         mg.progress("fig18", f"F* = {Fstar:.2f}: a {p['a']}, b {p['b']}, c {p['c']:.5g} "
                              f"(V {p['V_c']:.3g}), pitchfork {p['p']:.5g}")
-    grid = numpy.array([[region(p["Fstar"], k, p["b"]) for k in MAP_KAPPA] for p in points])
+    grid = numpy.array([[region(p["Fstar"], k, p["b"], **model) for k in MAP_KAPPA]
+                        for p in points])
     mg.progress("fig18", "region map done")
-    return points, grid, auto_check(rundir)
+    return points, grid, auto_check(rundir, **model)
 
 
-def kappa_star(points):
+def kappa_star(points, **model):
     """min over F* of the smallest y_fp/eps with unstable straight rolling:
     the grid minimum, refined on a grid 10 times finer around it."""
-    best = min(points, key=lambda p: p["first"])
-    step = FSTARS[1] - FSTARS[0]
-    fine = numpy.linspace(max(FSTARS[0], best["Fstar"] - step),
-                          min(FSTARS[-1], best["Fstar"] + step), 21)
-    best = min([best] + [mg.window_points(F) for F in fine], key=lambda p: p["first"])
+    best = mg.refined_minimum(lambda F: mg.window_points(F, **model), FSTARS,
+                              lambda p: p["first"], points)
     return best["first"] / mg.EPSILON, best
 
 
@@ -106,7 +105,7 @@ def numbers(points, auto, kappa, best):
     return out
 
 
-def plot(points, grid, auto, kappa):
+def plot(points, grid, auto, kappa, figure="fig18", variant=0):
     fig, ax = plt.subplots(figsize=(7.5, 5.5))
     edges_k = numpy.sqrt(MAP_KAPPA[1:] * MAP_KAPPA[:-1])
     edges_k = numpy.r_[MAP_KAPPA[0] ** 2 / edges_k[0], edges_k, MAP_KAPPA[-1] ** 2 / edges_k[-1]]
@@ -127,23 +126,30 @@ def plot(points, grid, auto, kappa):
         for colour, name in zip(COLOURS, REGIONS)]   # edged: R1 is white
     ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0] - 0.025, 2.025),
            xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$",
-           title=rf"Fig. 18: straight rolling for V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm "
-                 rf"(hatched: $y_{{fp}}/\epsilon < \kappa^*$ = {kappa:.3f})")
+           title=rf"Fig. 18, strut variant {variant}: straight rolling for V $\leq$ 120 m/s, "
+                 rf"$\epsilon$ = 0.1 mm (hatched: $y_{{fp}}/\epsilon < \kappa^*$ = {kappa:.3f})")
     ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
-    dg.save(fig, "fig18")
+    dg.save(fig, figure)
 
 
 def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--strut-variant", type=int, choices=(0, 1), default=0)
+    variant = parser.parse_args().strut_variant
+    name = "fig18" if variant == 0 else f"fig18_v{variant}"
+    model = {"strut_variant": float(variant)} if variant else {}
     try:
-        points, grid, auto = compute()
+        points, grid, auto = compute(name, **model)
     except (autoglue.RunError, ValueError, RuntimeError) as exc:
-        sys.exit(f"fig18: {exc}")
-    kappa, best = kappa_star(points)
-    mg.progress("fig18", "kappa* refined")
-    paper_table.report("fig18", numbers(points, auto, kappa, best))
-    with open(os.path.join(autoglue.FIGURES_DIR, "fig18.json"), "w") as out:
-        json.dump({"kappa_star": kappa, "Fstar": best["Fstar"]}, out)
-    plot(points, grid, auto, kappa)
+        sys.exit(f"{name}: {exc}")
+    kappa, best = kappa_star(points, **model)
+    mg.progress(name, "kappa* refined")
+    paper_table.report(name, numbers(points, auto, kappa, best))
+    path = os.path.join(autoglue.FIGURES_DIR, f"{name}.json")
+    with open(path + ".tmp", "w") as out:
+        json.dump({"kappa_star": kappa, "Fstar": best["Fstar"], "strut_variant": variant}, out)
+    os.replace(path + ".tmp", path)
+    plot(points, grid, auto, kappa, name, variant)
 
 
 if __name__ == "__main__":

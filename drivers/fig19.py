@@ -1,7 +1,9 @@
 """Fig. 19: the rescaled stiffness profiles allowed by y_fp/eps < kappa*
-(kappa* from Fig. 18, read from build/figures/fig18.json): every allowed
-profile lies between the kappa* profile and the eps -> infinity limit
-y* = x* (no freeplay felt)."""
+(kappa* of both strut variants from Fig. 18, read from
+build/figures/fig18.json and fig18_v1.json): every allowed profile lies
+between the kappa* profile and the eps -> infinity limit y* = x* (no
+freeplay felt).  The two readings of the strut spring bound a band: the
+profiles between their kappa* profiles are allowed by one only."""
 import json
 import os
 import sys
@@ -24,28 +26,40 @@ def rescaled(kappa, x):
                         for v in x])
 
 
-def main():
-    path = os.path.join(autoglue.FIGURES_DIR, "fig18.json")
+def read_kappa(name):
+    path = os.path.join(autoglue.FIGURES_DIR, f"{name}.json")
     if not os.path.exists(path):
-        sys.exit(f"fig19: {path} is missing (make fig18)")
+        sys.exit(f"fig19: {path} is missing (make {name})")
     with open(path) as source:
-        kappa = json.load(source)["kappa_star"]
+        return json.load(source)["kappa_star"]
+
+
+def main():
+    kappa, kappa_printed = read_kappa("fig18"), read_kappa("fig18_v1")
     x = numpy.linspace(-SPAN, SPAN, 601)
-    limit = rescaled(kappa, x)
+    limit, printed = rescaled(kappa, x), rescaled(kappa_printed, x)
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    ax.fill_between(x, limit, x, color="tab:cyan", alpha=0.4,
-                    label=rf"allowed: $y_{{fp}}/\epsilon < \kappa^*$ = {kappa:.3f}")
-    ax.plot(x, limit, color="tab:blue", lw=1.4, label=r"$y_{fp}/\epsilon = \kappa^*$")
+    ax.fill_between(x, printed, x, color="tab:cyan", alpha=0.4,
+                    label=rf"allowed by both: $y_{{fp}}/\epsilon < {kappa_printed:.3f}$")
+    ax.fill_between(x, limit, printed, color="khaki", alpha=0.6,
+                    label=rf"allowed by variant 0 only: ${kappa_printed:.3f} \leq "
+                          rf"y_{{fp}}/\epsilon < {kappa:.3f}$")
+    ax.plot(x, limit, color="tab:blue", lw=1.4,
+            label=rf"$\kappa^*$ = {kappa:.3f} (strut variant 0, default)")
+    ax.plot(x, printed, color="tab:orange", lw=1.4,
+            label=rf"$\kappa^*$ = {kappa_printed:.3f} (strut variant 1, as printed)")
     ax.plot(x, x, "k--", lw=1, label=r"$\epsilon \to \infty$")
     ax.plot(x, rescaled(10.0, x), color="tab:red", lw=1,
             label=r"$y_{fp}/\epsilon$ = 10 (section IV.B)")
     ax.set(xlim=(-SPAN, SPAN), xlabel=r"$x^* = y_{tlk}/y_{fp}$",
            ylabel=r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$",
-           title="Fig. 19: allowed rescaled freeplay profiles")
-    ax.legend(fontsize=8)
+           title="Fig. 19: allowed rescaled freeplay profiles, both strut readings")
+    ax.legend(fontsize=7)
     paper_table.report("fig19", {
-        "kappa*": kappa, "slope of the kappa* profile at x* = 0":
-        numpy.gradient(limit, x)[len(x) // 2]})
+        "kappa*, strut variant 0": kappa, "kappa*, strut variant 1": kappa_printed,
+        "slope of the kappa* profile at x* = 0": numpy.gradient(limit, x)[len(x) // 2],
+        "slope of the variant-1 kappa* profile at x* = 0":
+            numpy.gradient(printed, x)[len(x) // 2]})
     dg.save(fig, "fig19")
 
 
