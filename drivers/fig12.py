@@ -4,7 +4,10 @@ yaw branches between them, the Hopf point and the periodic orbits born
 there; panels torsional amplitude (with the freeplay boundary
 psi_fp = y_fp / r_tlk(eta*) in grey) and frequency.  Also a_12 and b_12: the
 loads at V = 50 between which stable straight rolling coexists with stable
-torsional shimmy, separated by the unstable orbits."""
+torsional shimmy, separated by the unstable orbits.
+`fig12.py --strut-variant 1` does the same with the printed strut spring
+(build/fig12_v1/, build/figures/fig12_v1.*)."""
+import argparse
 import sys
 
 import matplotlib.pyplot as plt
@@ -20,14 +23,19 @@ F_MIN, F_MAX = 0.02, 3.5
 VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
 
 
-def compute(parameter_set="figures", where="fig12"):
+def compute(parameter_set="figures", where="fig12", variant=0):
     rundir = dg.rundir(where)
-    start = dg.Start(parameter_set, Fstar=F_MIN, **VALUES)
+    values = {**VALUES, "strut_variant": float(variant)}
+    # The printed strut (variant 1) folds straight rolling twice in F* while
+    # eta crosses its 1e-5 m stage switch (F* 0.63-0.70): steps must shrink
+    # below AUTO's default DSMIN of 1e-5 there.
+    steps = {"DSMIN": 1e-10} if variant else {}
+    start = dg.Start(parameter_set, Fstar=F_MIN, **values)
     # MXBF = 0: the stationary yaw branches are computed explicitly below
     eq = dg.equilibria(rundir, "eq", start, "Fstar", stop={"Fstar": F_MAX}, DS=0.002,
-                       DSMAX=0.01, MXBF=0, NMX=5000, expect=["BP"])
+                       DSMAX=0.01, MXBF=0, NMX=5000, expect=["BP"], **steps)
     changes = dg.stability_changes(parameter_set, "Fstar", numpy.linspace(F_MIN, F_MAX, 1000),
-                                   **VALUES)
+                                   **values)
     pitchforks = [p["Fstar"] for p in eq("BP")]
     yaw = []
     for k, point in enumerate(eq("BP")[:1]):
@@ -40,10 +48,10 @@ def compute(parameter_set="figures", where="fig12"):
     hopf = [v for v, kind, _ in changes if kind == "HB"]
     orbits = []
     for k, v in enumerate(hopf):
-        point = dg.hopf_point(rundir, f"hb{k + 1}", parameter_set, "Fstar", v, **VALUES)
+        point = dg.hopf_point(rundir, f"hb{k + 1}", parameter_set, "Fstar", v, **values)
         orbits.append(dg.periodic_from(rundir, f"po{k + 1}", point, "Fstar",
                                        stop={"Fstar": [F_MIN, F_MAX]}, DS=0.002, DSMAX=0.02,
-                                       NMX=3000))
+                                       NMX=3000, **steps))
     return eq, pitchforks, yaw, hopf, orbits
 
 
@@ -75,20 +83,20 @@ def numbers(result):
     return out
 
 
-def freeplay_boundary(parameter_set, loads):
+def freeplay_boundary(parameter_set, loads, variant=0):
     """psi_fp = y_fp / r_tlk(eta*) [rad] along straight rolling."""
     out = []
     for F in loads:
-        model = mlgmodel.Model(parameter_set, Fstar=F, **VALUES)
+        model = mlgmodel.Model(parameter_set, Fstar=F, strut_variant=variant, **VALUES)
         out.append(1e-3 * VALUES["yfp"] / model.r_tlk(model.equilibrium()["eta"]))
     return numpy.array(out)
 
 
-def plot(result, parameter_set="figures"):
+def plot(result, parameter_set="figures", name="fig12", variant=0):
     eq, pitchforks, yaw, hopf, orbits = result
     fig, (amp, freq) = plt.subplots(2, 1, figsize=(8, 8), sharex=True)
     loads = numpy.linspace(F_MIN, F_MAX, 200)
-    boundary = freeplay_boundary(parameter_set, loads) * DEG
+    boundary = freeplay_boundary(parameter_set, loads, variant) * DEG
     amp.plot(loads, boundary, color="0.6", lw=3, label=r"$\psi_{fp}$")
     amp.plot(loads, -boundary, color="0.6", lw=3)
     dg.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
@@ -116,19 +124,24 @@ def plot(result, parameter_set="figures"):
     freq.set_xlabel(r"$F_z^*$")
     freq.set_title("(b) frequency")
     freq.set_xlim(0, F_MAX)
-    fig.suptitle(r"Fig. 12: V = 50 m/s, $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm "
+    fig.suptitle(rf"Fig. 12, strut variant {variant}: V = 50 m/s, $y_{{fp}}$ = 1 mm, "
+                 r"$\epsilon$ = 0.1 mm "
                  "(solid stable, dashed unstable)")
     fig.tight_layout()
-    dg.save(fig, "fig12")
+    dg.save(fig, name)
 
 
 def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--strut-variant", type=int, choices=(0, 1), default=0)
+    variant = parser.parse_args().strut_variant
+    name = "fig12" if variant == 0 else f"fig12_v{variant}"
     try:
-        result = compute()
+        result = compute(where=name, variant=variant)
     except (autoglue.RunError, ValueError, RuntimeError) as exc:
-        sys.exit(f"fig12: {exc}")
-    paper_table.report("fig12", numbers(result))
-    plot(result)
+        sys.exit(f"{name}: {exc}")
+    paper_table.report(name, numbers(result))
+    plot(result, name=name, variant=variant)
 
 
 if __name__ == "__main__":

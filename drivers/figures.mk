@@ -43,7 +43,12 @@ fig06: $(MLG_SHARED) | packages
 fig10 fig11 fig12: $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/$@.py
 
-FIGURES += fig06 fig10 fig11 fig12
+# Fig. 12 with the printed strut spring (strut variant 1).
+.PHONY: fig12_v1
+fig12_v1: $(AUTO_DRIVER_DEPS)
+	$(PYTHON) drivers/fig12.py --strut-variant 1
+
+FIGURES += fig06 fig10 fig11 fig12 fig12_v1
 REGRESS_FIGURES += fig10 fig12
 TEST_PROGRAMS += tests/test_freeplay_diagrams.py
 
