@@ -85,6 +85,27 @@ def main():
         check("invalid: --yfp -1 rejected naming yfp", status == 2 and "yfp" in err,
               f"exit status {status}, stderr {err.strip()!r}")
 
+        # (d2) no output window or no steps: exit status 2 naming the option
+        for args, option in ((["--t-end", "1e20", "--dt-out", "1"], "--t-end"),
+                             (["--dt-out", "inf"], "--dt-out"),
+                             (["--t-end", "0.01", "--dt-out", "0.1"], "--dt-out"),
+                             (["--t-end", "nan"], "--t-end")):
+            status, _, _, err = simulate(tmp, "window", *args)
+            check(f"invalid: {' '.join(args)} refused naming {option}",
+                  status == 2 and option in err, f"exit status {status}, stderr {err.strip()!r}")
+
+        # (d3) epsilon is what was given: one part alone sets the other to 0
+        # (defaults eps_abs = 0, eps_rel = 0.1); the summary prints epsilon in mm
+        for args, epsilon in ((["--eps-abs", "0.1"], 0.1), (["--eps-rel", "0.3"], 0.3),
+                              (["--param", "eps_abs=0.05"], 0.05), ([], 0.1),
+                              (["--eps-abs", "0.1", "--eps-rel", "0.2"], 0.3)):
+            status, summary, _, err = simulate(tmp, "epsilon", "--yfp", "1", "--t-end", "0.01",
+                                               *args)
+            got = summary.get("epsilon_mm")
+            check(f"epsilon: yfp 1 {' '.join(args)} runs at epsilon = {epsilon} mm (1e-12)",
+                  status == 0 and abs(got - epsilon) <= 1e-12, f"exit {status}, epsilon {got}, "
+                  f"stderr {err.strip()!r}")
+
         # (e) a state outside the model's domain stops the run with its reason
         status, _, _, err = simulate(tmp, "domain", "--psi0", "1.5", "--t-end", "0.1")
         check("domain: psi0 = 1.5 rad stops with a lift-off error",

@@ -53,14 +53,17 @@ static void usage(FILE *stream)
         "  --V X                 forward velocity [m/s] (default 300)\n"
         "  --Fstar X             dimensionless load F* (default 0.2)\n"
         "  --yfp X               torque-link freeplay [mm] (default 0)\n"
-        "  --eps-abs X           smoothing epsilon, absolute part [mm]\n"
-        "  --eps-rel X           smoothing epsilon, part proportional to yfp\n"
+        "  --eps-abs X           smoothing epsilon, absolute part [mm] (default 0)\n"
+        "  --eps-rel X           smoothing epsilon, part proportional to yfp (default\n"
+        "                        0.1): epsilon = eps-abs + eps-rel * yfp [mm]; giving\n"
+        "                        only one of the two sets the other to 0\n"
         "  --c-psi X             torsional damping [N m s/rad]\n"
         "  --strut-variant 0|1   F_keta stage order (0 monotone, 1 as printed)\n"
         "  --param NAME=X        any parameter, constant or switch by its name in\n"
         "                        c/parameters.h (e.g. rho=0.1, eom_terms=2)\n"
         "  --t-end X             final time [s] (default 15)\n"
-        "  --dt-out X            output interval [s] (default 1e-3)\n"
+        "  --dt-out X            output interval [s] (default 1e-3); at most --t-end,\n"
+        "                        and at most 1e8 samples up to --t-end\n"
         "  --rtol X, --atol X    CVODE tolerances (default 1e-8, 1e-10)\n"
         "  --method bdf|adams    CVODE multistep method (default bdf; adams keeps the\n"
         "                        energy of conservative runs best)\n"
@@ -82,8 +85,8 @@ static double parse_number(const char *option, const char *text)
     return value;
 }
 
-/* --param NAME=VALUE: any field of mlg_params, by name */
-static void set_named(mlg_params *p, const char *arg)
+/* --param NAME=VALUE: any field of mlg_params, by name; returns the field */
+static double *set_named(mlg_params *p, const char *arg)
 {
     char name[64];
     const char *eq = strchr(arg, '=');
@@ -100,7 +103,19 @@ static void set_named(mlg_params *p, const char *arg)
         exit(2);
     }
     *ref = parse_number("--param", eq + 1);
+    return ref;
 }
+
+/* Stop with exit status 2 and a message naming the option. */
+static void refuse(const char *fmt, double a, double b)
+{
+    fprintf(stderr, "mlg_simulate: ");
+    fprintf(stderr, fmt, a, b);
+    fputc('\n', stderr);
+    exit(2);
+}
+
+enum { MAX_SAMPLES = 100000000 };
 
 static options parse_options(int argc, char **argv)
 {
@@ -109,6 +124,7 @@ static options parse_options(int argc, char **argv)
     o.p = mlg_params_figures();
     o.p.V = 300.0;
     o.p.Fstar = 0.2;
+    int eps_abs_given = 0, eps_rel_given = 0;
 
     for (int k = 1; k < argc; k++) {
         const char *opt = argv[k];
@@ -138,11 +154,21 @@ static options parse_options(int argc, char **argv)
         else if (strcmp(opt, "--V") == 0) o.p.V = parse_number(opt, arg);
         else if (strcmp(opt, "--Fstar") == 0) o.p.Fstar = parse_number(opt, arg);
         else if (strcmp(opt, "--yfp") == 0) o.p.yfp = parse_number(opt, arg);
-        else if (strcmp(opt, "--eps-abs") == 0) o.p.eps_abs = parse_number(opt, arg);
-        else if (strcmp(opt, "--eps-rel") == 0) o.p.eps_rel = parse_number(opt, arg);
+        else if (strcmp(opt, "--eps-abs") == 0) {
+            o.p.eps_abs = parse_number(opt, arg);
+            eps_abs_given = 1;
+        }
+        else if (strcmp(opt, "--eps-rel") == 0) {
+            o.p.eps_rel = parse_number(opt, arg);
+            eps_rel_given = 1;
+        }
         else if (strcmp(opt, "--c-psi") == 0) o.p.c_psi = parse_number(opt, arg);
         else if (strcmp(opt, "--strut-variant") == 0) o.p.strut_variant = parse_number(opt, arg);
-        else if (strcmp(opt, "--param") == 0) set_named(&o.p, arg);
+        else if (strcmp(opt, "--param") == 0) {
+            const double *ref = set_named(&o.p, arg);
+            eps_abs_given |= ref == &o.p.eps_abs;
+            eps_rel_given |= ref == &o.p.eps_rel;
+        }
         else if (strcmp(opt, "--method") == 0) {
             if (strcmp(arg, "bdf") != 0 && strcmp(arg, "adams") != 0) {
                 fprintf(stderr, "mlg_simulate: --method must be bdf or adams, got '%s'\n", arg);
@@ -164,17 +190,26 @@ static options parse_options(int argc, char **argv)
         }
     }
 
+    /* epsilon is what was given: one part alone sets the other to 0 */
+    if (eps_abs_given && !eps_rel_given) o.p.eps_rel = 0.0;
+    if (eps_rel_given && !eps_abs_given) o.p.eps_abs = 0.0;
+
     char msg[256];
     if (mlg_params_check(&o.p, msg, sizeof msg) != 0) {
         fprintf(stderr, "mlg_simulate: %s\n", msg);
         exit(2);
     }
-    if (!(o.t_end > 0.0) || !(o.dt_out > 0.0) || !(o.rtol > 0.0) || !(o.atol > 0.0)
-        || !isfinite(o.t_end) || !isfinite(o.psi0) || !isfinite(o.delta0)) {
-        fprintf(stderr, "mlg_simulate: t-end, dt-out, rtol and atol must be > 0, "
-                        "psi0 and delta0 finite\n");
-        exit(2);
-    }
+    if (!(o.t_end > 0.0 && isfinite(o.t_end))) refuse("--t-end %g must be > 0 and finite", o.t_end, 0);
+    if (!(o.dt_out > 0.0 && o.dt_out <= o.t_end))
+        refuse("--dt-out %g must be > 0 and at most --t-end %g: no output sample", o.dt_out,
+               o.t_end);
+    if (o.t_end / o.dt_out > MAX_SAMPLES)
+        refuse("--t-end %g / --dt-out %g exceeds the limit of 1e8 output samples", o.t_end,
+               o.dt_out);
+    if (!(o.rtol > 0.0 && isfinite(o.rtol))) refuse("--rtol %g must be > 0 and finite", o.rtol, 0);
+    if (!(o.atol > 0.0 && isfinite(o.atol))) refuse("--atol %g must be > 0 and finite", o.atol, 0);
+    if (!isfinite(o.psi0)) refuse("--psi0 %g must be finite", o.psi0, 0);
+    if (!isfinite(o.delta0)) refuse("--delta0 %g must be finite", o.delta0, 0);
     return o;
 }
 
@@ -402,6 +437,7 @@ int main(int argc, char **argv)
 
     /* key value lines, read by drivers/fig08.py and tests/test_simulate.py */
     printf("V %.10g\nFstar %.10g\nyfp %.10g\nc_psi %.10g\n", o.p.V, o.p.Fstar, o.p.yfp, o.p.c_psi);
+    printf("epsilon_mm %.10g\n", 1e3 * mlg_epsilon_m(&o.p));
     printf("t_end %.10g\n", o.t_end);
     printf("steps %ld\nrhs_evals %ld\njac_evals %ld\nfd_rhs_evals %ld\n",
            steps, rhs_evals, jac_evals, ls_rhs_evals);
