@@ -32,9 +32,10 @@ enum mlg_par_index {
 /* Derivative columns of mlg_rhs_jacobian: the states, then PAR(1..MLG_NPAR). */
 enum { MLG_NDIR = MLG_NX + MLG_NPAR };
 
-/* PAR slots read and written by mlg_params_set_par / _get_par: the
- * continuation parameters and the switches with an AUTO slot (PAR(13)). */
-enum { MLG_PAR_SLOTS = 13 };
+/* PAR slots read and written by mlg_params_set_par / _get_par: PAR(1) to
+ * PAR(MLG_PAR_CONSTANTS_FILE), which hold the continuation parameters and
+ * the switches with an AUTO slot (parameters.h: the PAR layout). */
+enum { MLG_PAR_SLOTS = MLG_PAR_CONSTANTS_FILE };
 
 /* Values of the eom_terms switch (docs/model.md, section 8). */
 enum mlg_eom_terms {
@@ -74,6 +75,8 @@ double *mlg_param_ref(mlg_params *p, const char *name);
 int mlg_par_index(const char *name);               /* 0-based, or -1 */
 const char *mlg_par_name(int index);               /* NULL if out of range or unused */
 int mlg_par_slot_count(void);                      /* MLG_PAR_SLOTS */
+const char *mlg_constant_name(int index);          /* every field of mlg_params, in order */
+const char *mlg_measure_name(int index);           /* MLG_MEASURES, in order; NULL after */
 /* par[0..MLG_PAR_SLOTS-1]: the continuation parameters and the AUTO switches */
 void mlg_params_set_par(mlg_params *p, const double *par);
 void mlg_params_get_par(const mlg_params *p, double *par);
@@ -81,6 +84,10 @@ void mlg_params_get_par(const mlg_params *p, double *par);
 /* 0 if physically meaningful; otherwise nonzero, with a message naming the
  * offending parameter written to msg (if msg != NULL). */
 int mlg_params_check(const mlg_params *p, char *msg, size_t msg_size);
+/* Apply a file of constant overrides, one "name value" per line ('#' starts
+ * a comment): 0, or nonzero with a message naming the file, line or name.
+ * Only constants and test switches: PAR holds the continuation parameters. */
+int mlg_params_read_constants(mlg_params *p, const char *path, char *msg, size_t msg_size);
 /* Text for a status value returned by the evaluations. */
 const char *mlg_status_text(int status);
 

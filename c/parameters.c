@@ -38,12 +38,16 @@ static const char *const par_names[MLG_NPAR] = {
 #undef X
 };
 
-/* a switch's AUTO slot must lie after the continuation parameters, within MLG_PAR_SLOTS */
+_Static_assert(MLG_NPAR < MLG_PAR_PERIOD,
+               "MLG_CONTINUATION_PARAMETERS do not fit in PAR(1-10): PAR(11) is AUTO's period "
+               "(move a quantity that is not continued to MLG_CONSTANTS; docs/model.md 2.1)");
+/* PAR(11) and PAR(12) are AUTO's; PAR(MLG_PAR_CONSTANTS_FILE) names the constants file */
 #define X(name, par, value, unit, doc)                                                   \
-    _Static_assert((par) == 0 || ((par) > MLG_NPAR + 2 && (par) <= MLG_PAR_SLOTS),       \
-                   "PAR slot of switch " #name);
+    _Static_assert((par) == 0 || ((par) > 12 && (par) < MLG_PAR_CONSTANTS_FILE),         \
+                   "switch " #name ": its AUTO slot must lie in PAR(13-14)");
 MLG_SWITCHES(X)
 #undef X
+_Static_assert(MLG_PAR_CONSTANTS_FILE < MLG_MEASURES_FIRST_PAR, "PAR slots overlap the measures");
 
 int mlg_params_field_count(void)
 {
@@ -79,9 +83,34 @@ int mlg_par_index(const char *name)
     return -1;
 }
 
+const char *mlg_constant_name(int index)
+{
+    static const char *const names[] = {
+#define X(name, value, unit, doc) #name,
+        MLG_CONTINUATION_PARAMETERS(X)
+        MLG_CONSTANTS(X)
+#undef X
+#define X(name, par, value, unit, doc) #name,
+        MLG_SWITCHES(X)
+#undef X
+    };
+    return index >= 0 && index < (int)(sizeof names / sizeof names[0]) ? names[index] : NULL;
+}
+
+const char *mlg_measure_name(int index)
+{
+    static const char *const names[] = {
+#define X(name, kind, state, unit, doc) #name,
+        MLG_MEASURES(X)
+#undef X
+    };
+    return index >= 0 && index < (int)(sizeof names / sizeof names[0]) ? names[index] : NULL;
+}
+
 const char *mlg_par_name(int index)
 {
     if (index >= 0 && index < MLG_NPAR) return par_names[index];
+    if (index == MLG_PAR_CONSTANTS_FILE - 1) return "constants";
 #define X(name, slot, value, unit, doc) if ((slot) > 0 && index == (slot) - 1) return #name;
     MLG_SWITCHES(X)
 #undef X
@@ -169,7 +198,7 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
         return reject(msg, n, "parameter mu = %g rad: side-stay orientation must lie in "
                       "(-pi/2, pi/2)", p->mu);
     {
-        /* sin p (model-notes 13); |p| -> pi/2 makes I_beta = 0 (degenerate) */
+        /* sin p (docs/model.md 4.13); |p| -> pi/2 makes I_beta = 0 (degenerate) */
         double sp = sin(p->rho) * cos(p->phi0) - cos(p->rho) * sin(p->mu) * sin(p->phi0);
         if (fabs(sp) > 0.99)
             return reject(msg, n, "parameters rho = %g, mu = %g rad: side-stay angle p = %g "
@@ -187,21 +216,45 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
     if (p->strut_variant != 0.0 && p->strut_variant != 1.0)
         return reject(msg, n, "parameter strut_variant = %g must be 0 (monotone) or 1 "
                       "(as printed)", p->strut_variant);
-    {
-        const char *positive[] = {"a", "l_tlk", "r", "M", "I_psi", "I", "k_beta",
-                                  "g_0", "m_0", "a_d", "b_d"};
-        mlg_params copy = *p;
-        for (size_t k = 0; k < sizeof positive / sizeof positive[0]; k++) {
-            double v = *mlg_param_ref(&copy, positive[k]);
-            if (!(v > 0.0))
-                return reject(msg, n, "parameter %s = %g must be > 0", positive[k], v);
-        }
-    }
+#define POSITIVE(name)                                                            \
+    if (!(p->name > 0.0)) return reject(msg, n, "parameter %s = %g must be > 0", #name, p->name);
+    POSITIVE(a) POSITIVE(l_tlk) POSITIVE(r) POSITIVE(M) POSITIVE(I_psi) POSITIVE(I)
+    POSITIVE(k_beta) POSITIVE(g_0) POSITIVE(m_0) POSITIVE(a_d) POSITIVE(b_d)
+#undef POSITIVE
     if (!(p->phi0 > -0.5 * MLG_PI && p->phi0 < 0.5 * MLG_PI))
         return reject(msg, n, "parameter phi0 = %g rad: rake angle must lie in (-pi/2, pi/2)",
                       p->phi0);
     if (msg != NULL && n > 0) msg[0] = '\0';
     return 0;
+}
+
+int mlg_params_read_constants(mlg_params *p, const char *path, char *msg, size_t n)
+{
+    FILE *in = fopen(path, "r");
+    if (in == NULL) return reject(msg, n, "cannot read %s", path);
+    char line[256];
+    int number = 0, bad = 0;
+    while (!bad && fgets(line, sizeof line, in) != NULL) {
+        number++;
+        char name[64], extra[2];
+        double value;
+        char *hash = strchr(line, '#');
+        if (hash != NULL) *hash = '\0';
+        int fields = sscanf(line, "%63s %lf %1s", name, &value, extra);
+        if (fields == EOF) continue;                          /* blank or comment */
+        double *ref = mlg_param_ref(p, name);
+        if (fields != 2)
+            bad = reject(msg, n, "%s line %d: expected \"name value\"", path, number);
+        else if (ref == NULL)
+            bad = reject(msg, n, "%s line %d: no constant named %s", path, number, name);
+        else if (mlg_par_index(name) >= 0)
+            bad = reject(msg, n, "%s line %d: %s is PAR(%d): set it there", path, number, name,
+                         mlg_par_index(name) + 1);
+        else
+            *ref = value;
+    }
+    fclose(in);
+    return bad;
 }
 
 const char *mlg_status_text(int status)

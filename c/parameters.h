@@ -1,15 +1,21 @@
 /* Every parameter of the MLG model, in one place.
  *
- * MLG_CONTINUATION_PARAMETERS lists the parameters exposed to AUTO, in PAR
- * order: the AUTO index of each is its position (PAR(1) = V, ...).  This
- * list is the single definition of the PAR indices; constants/c.mlg repeats
- * the names in `parnames` and a test checks that the two agree.
+ * AUTO's PAR array (docs/model.md, section 2.1):
+ *   PAR(1-10)   MLG_CONTINUATION_PARAMETERS, in this order (PAR(1) = V, ...):
+ *               only quantities AUTO can continue in; PAR(10) is free.
+ *   PAR(11)     the period of periodic orbits (AUTO's).
+ *   PAR(12)     AUTO's (torus angle); never ours.
+ *   PAR(13-20)  MLG_SWITCHES with an AUTO slot, and MLG_PAR_CONSTANTS_FILE.
+ *   PAR(21-28)  MLG_MEASURES, written by PVLS (models/mlg.c).
+ * This file is the single definition of these indices; constants/c.mlg
+ * repeats the names in `parnames` and tests/test_auto_plugin.py checks that
+ * the two agree.
  * MLG_CONSTANTS lists every fixed constant of the paper (Table 1, II.A, II.B)
  * under the paper's symbol, with its `table` value.
  * MLG_SWITCHES lists the model switches: discrete choices between variants
  * of the equations, never differentiated.  A switch with an AUTO slot
- * (par > 0) is read from PAR(par), outside PAR(1-10) because PAR(11) is the
- * period; par = 0 marks an option for tests only (docs/model.md, section 8).
+ * (par > 0) is read from PAR(par); par = 0 marks an option for tests only
+ * (docs/model.md, section 8).
  *
  * X(name, value, unit, description)
  */
@@ -27,15 +33,39 @@
     X(c_psi,    410.0,  "N m s/rad","torsional damping (Table 1; eq. 16)")       \
     X(rho,      0.0,    "rad",      "side-stay attachment inclination")          \
     X(mu,       0.0,    "rad",      "side-stay horizontal orientation")          \
-    X(k_tlk,    3.90e7, "N/m",      "torque-link lateral stiffness")             \
-    X(strut_variant, 0.0, "-",      "F_keta stage order: 0 monotone (swapped), 1 as printed")
+    X(k_tlk,    3.90e7, "N/m",      "torque-link lateral stiffness")
+
+/* PAR(11) is AUTO's period: the list above must fit in PAR(1-10). */
+#define MLG_PAR_PERIOD 11
 
 /* X(name, par, value, unit, description); par: AUTO PAR number, 0 for none */
 #define MLG_SWITCHES(X)                                                             \
     X(eom_terms,   13, 0.0, "-",  "equations of motion: 0 as printed, 1 with the "   \
                                   "side-stay corrections, 2 complete Lagrangian")  \
+    X(strut_variant, 14, 0.0, "-", "F_keta stage order: 0 monotone (swapped), 1 as "  \
+                                  "printed")                                       \
     X(tyre_forces,  0, 1.0, "-",  "1: tyre forces act on the gear; 0 (tests): "     \
                                   "ideal frictionless support under the axle")
+
+/* PAR(15): which file of constant overrides FUNC reads (models/mlg.c):
+ * k > 0 reads "mlg.constants.<k>" in the run directory, 0 reads none. */
+#define MLG_PAR_CONSTANTS_FILE 15
+
+/* Solution measures written by PVLS (models/mlg.c) into PAR(21) onwards,
+ * in this order; constants/c.mlg names them and drivers/diagrams.py lists
+ * them through drivers/mlgmodel.py.
+ * X(name, kind, state, unit, description); kind AMP: (max - min)/2 of the
+ * state over the solution, MEAN: its mean, FREQ: 1/T (0 on equilibria). */
+#define MLG_MEASURES_FIRST_PAR 21
+#define MLG_MEASURES(X)                                                             \
+    X(psi_amp,   AMP,  MLG_PSI,   "rad", "torsional amplitude")                  \
+    X(delta_amp, AMP,  MLG_DELTA, "rad", "lateral amplitude")                    \
+    X(beta_mean, MEAN, MLG_BETA,  "rad", "mean longitudinal angle")              \
+    X(beta_amp,  AMP,  MLG_BETA,  "rad", "longitudinal amplitude")               \
+    X(eta_mean,  MEAN, MLG_ETA,   "m",   "mean strut compression")               \
+    X(eta_amp,   AMP,  MLG_ETA,   "m",   "strut compression amplitude")          \
+    X(freq,      FREQ, MLG_PSI,   "Hz",  "frequency 1/T; 0 on equilibria")       \
+    X(psi_mean,  MEAN, MLG_PSI,   "rad", "mean torsion: the yaw of off-centre equilibria")
 
 #define MLG_CONSTANTS(X)                                                            \
     /* Table 1: geometry */                                                          \

@@ -18,8 +18,7 @@ ROOT = autoglue.ROOT
 MODEL = os.path.join(autoglue.BUILD, "models", "mlg")
 CONSTANTS = os.path.join(ROOT, "constants", "c.mlg")
 RUN_CONSTANTS = os.path.join(ROOT, "constants", "runs")
-MEASURES = ["psi_amp", "delta_amp", "beta_mean", "beta_amp", "eta_mean", "eta_amp",
-            "freq", "psi_mean"]
+MEASURES = mlgmodel.MEASURES     # PAR(21) onwards (c/parameters.h MLG_MEASURES)
 
 matplotlib.rcParams.update({"figure.dpi": 110, "savefig.dpi": 150, "font.size": 9,
                             "axes.grid": True, "grid.alpha": 0.3})
@@ -41,6 +40,8 @@ def run(rundir, name, kind=None, **kw):
     """autoglue.run on the MLG model: the base constants, then the run-type
     file constants/runs/c.<kind> if given, then the keyword overrides."""
     files = [CONSTANTS] + ([os.path.join(RUN_CONSTANTS, f"c.{kind}")] if kind else [])
+    os.makedirs(rundir, exist_ok=True)
+    mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
     return autoglue.run(rundir, name, constants=files, e=MODEL, **kw)
 
 

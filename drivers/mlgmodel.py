@@ -5,12 +5,16 @@ a run, the straight-rolling equilibrium that starts a run at given
 parameters (AUTO applies the constants' PAR after STPNT), and plain
 evaluations such as the torque-link profiles and the freeplay boundary.
 
-    m = Model("figures", Fstar=0.2, V=300)
-    m.check()                      # ValueError naming a bad parameter
+    m = Model("figures", Fstar=0.2, V=300)   # ValueError naming a bad parameter
     u = m.equilibrium()            # {"psi": 0.0, ..., "eta": 0.27, ...}
+
+A constant set here (Model(k_relax=0.9)) reaches AUTO's FUNC through a file
+mlg.constants.<k> in the run directory, named by PAR(15) = k (Model.par(),
+write_constants_files(); docs/model.md 2.1).
 """
 import ctypes
 import os
+import zlib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LIBRARY = os.path.join(ROOT, "build", "lib", "libmlg.so")
@@ -30,6 +34,8 @@ _lib.mlg_params_figures.restype = _Params
 _lib.mlg_param_ref.restype = _D
 _lib.mlg_param_ref.argtypes = [_P, ctypes.c_char_p]
 _lib.mlg_par_name.restype = ctypes.c_char_p
+_lib.mlg_constant_name.restype = ctypes.c_char_p
+_lib.mlg_measure_name.restype = ctypes.c_char_p
 _lib.mlg_state_name.restype = ctypes.c_char_p
 _lib.mlg_params_check.argtypes = [_P, ctypes.c_char_p, ctypes.c_size_t]
 _lib.mlg_status_text.restype = ctypes.c_char_p
@@ -55,26 +61,43 @@ def _name(getter, k):
     return None if name is None else name.decode()
 
 
-# PARNAMES[k] is PAR(k+1): the continuation parameters PAR(1-10), then the
-# model switches AUTO reads (eom_terms, PAR(13)); None where AUTO owns the slot.
+def _names(getter):
+    names = []
+    while _name(getter, len(names)) is not None:
+        names.append(_name(getter, len(names)))
+    return names
+
+
+# PARNAMES[k] is PAR(k+1): the continuation parameters, the switches AUTO
+# reads and "constants" (PAR(15)); None where no name is given (AUTO's slots).
 PARNAMES = [_name(_lib.mlg_par_name, k) for k in range(_lib.mlg_par_slot_count())]
-UNAMES = []                               # UNAMES[i] is U(i+1)
-while _name(_lib.mlg_state_name, len(UNAMES)) is not None:
-    UNAMES.append(_name(_lib.mlg_state_name, len(UNAMES)))
+CONSTANTS_FILE = "constants"              # PAR(15): k of mlg.constants.<k>, 0 none
+MEASURES = _names(_lib.mlg_measure_name)  # PAR(21) onwards, written by PVLS
+MEASURES_FIRST_PAR = 21
+FIELDS = _names(_lib.mlg_constant_name)   # every parameter, constant and switch
+UNAMES = _names(_lib.mlg_state_name)      # UNAMES[i] is U(i+1)
 NX = len(UNAMES)
 C_PSI_FIGURES = ctypes.c_double.in_dll(_lib, "MLG_C_PSI_FIGURES").value
+_EPSILON_PARTS = ("eps_abs", "eps_rel")
+_constants_files = {}                     # {k: text of mlg.constants.<k>} of par()
 
 
 class Model:
     """A parameter set of the c/ library: 'table' (the paper as printed) or
     'figures' (c_psi calibrated), with any parameter or constant overridden
-    by name."""
+    by name, validated at construction (ValueError naming the parameter).
+
+    Smoothing width (eq. 15): epsilon = eps_abs + eps_rel * yfp [mm]. The
+    sets have eps_abs = 0, eps_rel = 0.1; giving only one of the two parts
+    (here or in set()) sets the other to 0, so epsilon is what was given:
+    Model(yfp=1, eps_abs=0.1) has epsilon = 0.1 mm."""
 
     def __init__(self, parameter_set="figures", **values):
         if parameter_set not in ("table", "figures"):
             raise ValueError(f"unknown parameter set {parameter_set!r}")
         self._p = getattr(_lib, f"mlg_params_{parameter_set}")()
         self.set(**values)
+        self.check()
 
     def _ref(self, name):
         ref = _lib.mlg_param_ref(ctypes.byref(self._p), name.encode())
@@ -86,13 +109,40 @@ class Model:
         return self._ref(name)[0]
 
     def set(self, **values):
+        """Set parameters by name (not validated: see check()). One part of
+        epsilon without the other sets the other to 0."""
+        given = [part for part in _EPSILON_PARTS if part in values]
+        if len(given) == 1:
+            values = dict(values, **{part: 0.0 for part in _EPSILON_PARTS if part not in given})
         for name, value in values.items():
-            self._ref(name)[0] = float(value)
+            ref = self._ref(name)
+            try:
+                ref[0] = float(value)
+            except (TypeError, ValueError):
+                raise ValueError(f"parameter {name} = {value!r} is not a number") from None
         return self
 
+    def constants(self):
+        """The constants that differ from the `table` set and are not in PAR,
+        as {name: value}: what AUTO reads from mlg.constants.<k>."""
+        table = Model.__new__(Model)
+        table._p = _lib.mlg_params_table()
+        in_par = set(PARNAMES)
+        return {name: self[name] for name in FIELDS
+                if name not in in_par and self[name] != table[name]}
+
     def par(self):
-        """The PAR values the model reads, as {name: value}, in PAR order."""
-        return {name: self[name] for name in PARNAMES if name is not None}
+        """The PAR values AUTO reads, as {name: value}, in PAR order; with
+        constants changed, PAR(15) names the file that carries them (written
+        to a run directory by write_constants_files)."""
+        par = {name: self[name] for name in PARNAMES if name not in (None, CONSTANTS_FILE)}
+        changed = self.constants()
+        text = "".join(f"{name} {value!r}\n" for name, value in changed.items())
+        k = zlib.crc32(text.encode()) % (2**31 - 1) + 1 if changed else 0
+        if k:
+            _constants_files[k] = text
+        par[CONSTANTS_FILE] = k
+        return par
 
     def check(self):
         msg = ctypes.create_string_buffer(256)
@@ -137,6 +187,16 @@ class Model:
 
     def epsilon_m(self):
         return _lib.mlg_epsilon_m(ctypes.byref(self._p))
+
+
+def write_constants_files(rundir):
+    """Write mlg.constants.<k> into rundir for every k that par() handed out
+    in this process (each replaced atomically, the same text for the same k)."""
+    for k, text in _constants_files.items():
+        path = os.path.join(rundir, f"mlg.constants.{k}")
+        with open(path + ".tmp", "w") as out:
+            out.write(f"# constants that differ from the `table` set (drivers/mlgmodel.py)\n{text}")
+        os.replace(path + ".tmp", path)
 
 
 def torque_link_force(k_tlk, y_tlk, yfp_m, eps_m):

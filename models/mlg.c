@@ -2,8 +2,14 @@
  * library (c/mlg_model.h).  Built by the Makefile (c/c.mk, mk/auto.mk) into
  * build/models/mlg.exe, linked with build/lib/libmlg.a.
  *
- * PAR(1..10): the continuation parameters of c/parameters.h, in that order.
- * PAR(11): period (AUTO).  PAR(21..28): solution measures written by PVLS. */
+ * PAR layout: c/parameters.h and docs/model.md 2.1 (PAR(1-10) continuation
+ * parameters, PAR(11) the period, PAR(13-14) switches, PAR(15) the constants
+ * file, PAR(21-28) the measures of MLG_MEASURES written by PVLS).
+ *
+ * Bad starting parameters end the run: one message on stderr naming the
+ * parameter and exit status 1 (AUTO's Python interface raises).  Later, a
+ * continuation step that leaves the domain is answered with a huge residual,
+ * without a message, so that AUTO shortens its step (MX if it persists). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,53 +17,83 @@
 #include "auto_f2c.h"
 #include "mlg_model.h"
 
-/* Solution measures, 1-based AUTO indices (constants/c.mlg names them). */
-enum {
-    PAR_PERIOD = 11,
-    PAR_PSI_AMP = 21,    /* (max - min)/2 of psi [rad] */
-    PAR_DELTA_AMP,       /* (max - min)/2 of delta [rad] */
-    PAR_BETA_MEAN,       /* mean of beta over a period [rad] */
-    PAR_BETA_AMP,
-    PAR_ETA_MEAN,        /* mean of eta [m] */
-    PAR_ETA_AMP,
-    PAR_FREQ,            /* 1/T [Hz]; 0 on equilibria */
-    PAR_PSI_MEAN         /* mean of psi [rad]: the yaw of off-centre equilibria */
-};
-
-/* Report a rejected evaluation once per kind, and answer it with a large
- * residual so that AUTO's Newton iteration rejects the step (MX if it
- * persists; the drivers report MX). */
-static void reject(const char *what, const char *detail, integer ndim, doublereal *f)
+/* At the first call (the starting point: STPNT, the constants, a restart)
+ * a rejection ends the run with one message; later ones are AUTO's steps. */
+static void start_failed(int started, const char *what, const char *why)
 {
-    static char last[256];
-    char line[sizeof last];
-    snprintf(line, sizeof line, "mlg: %s: %s", what, detail);
-    if (strcmp(line, last) != 0) {
-        fprintf(stderr, "%s\n", line);
-        snprintf(last, sizeof last, "%s", line);
-    }
+    if (started) return;
+    fprintf(stderr, "mlg: %s: %s\n", what, why);
+    exit(1);
+}
+
+static void reject(integer ndim, doublereal *f)
+{
     for (integer i = 0; i < ndim; i++) f[i] = 1e30;
+}
+
+/* The constants for PAR(15): the `table` values, overridden by the file
+ * mlg.constants.<k> of the run directory for k > 0.  NULL, or why not. */
+static const char *read_base(double id, mlg_params *base, char *why, size_t n)
+{
+    *base = mlg_params_table();
+    if (id == 0.0) return NULL;
+    if (!(id > 0.0 && id < 1e15 && id == (double)(long long)id)) {
+        snprintf(why, n, "parameter constants = %g must be 0 or the number k of a file "
+                 "mlg.constants.<k> in the run directory", id);
+        return why;
+    }
+    char path[64];
+    snprintf(path, sizeof path, "mlg.constants.%.0f", id);
+    return mlg_params_read_constants(base, path, why, n) != 0 ? why : NULL;
+}
+
+/* The parameters for par: validated, and the constants file read, only when
+ * PAR(1-15) change, so a continuation step costs one comparison and no
+ * string handling.  NULL if valid, or a message naming what is invalid. */
+static const char *parameters_for(const doublereal *par, mlg_params *p)
+{
+    static double last[MLG_PAR_SLOTS], base_id = -1.0;
+    static mlg_params base, cached;
+    static const char *invalid;
+    static int known;
+    static char why[256];
+    if (!known || memcmp(last, par, sizeof last) != 0) {
+        memcpy(last, par, sizeof last);
+        known = 1;
+        double id = par[MLG_PAR_CONSTANTS_FILE - 1];
+        invalid = id == base_id ? NULL : read_base(id, &base, why, sizeof why);
+        base_id = invalid ? -1.0 : id;
+        if (invalid == NULL) {
+            cached = base;
+            mlg_params_set_par(&cached, par);
+            if (mlg_params_check(&cached, why, sizeof why) != 0) invalid = why;
+        }
+    }
+    *p = cached;
+    return invalid;
 }
 
 int func(integer ndim, const doublereal *u, const integer *icp, const doublereal *par,
          integer ijac, doublereal *f, doublereal *dfdu, doublereal *dfdp)
 {
-    /* Drivers validate the starting parameters; a continuation step that
-     * leaves the physical range (V < 0, y_fp < 0, ...) is rejected here. */
-    mlg_params p = mlg_params_table();
-    char msg[200];
-    mlg_params_set_par(&p, par);
-    if (mlg_params_check(&p, msg, sizeof msg) != 0) {
-        reject("invalid parameters", msg, ndim, f);
+    static int started;
+    mlg_params p;
+    const char *invalid = parameters_for(par, &p);
+    if (invalid) {
+        start_failed(started, "invalid starting parameters", invalid);
+        reject(ndim, f);
         return 0;
     }
     double J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
     int status = ijac == 0 ? mlg_rhs(&p, u, f)
                            : mlg_rhs_jacobian(&p, u, f, J, ijac == 2 ? P : NULL);
     if (status != MLG_OK) {
-        reject("state outside the model's domain", mlg_status_text(status), ndim, f);
+        start_failed(started, "starting point outside the model's domain",
+                     mlg_status_text(status));
+        reject(ndim, f);
         return 0;
     }
+    started = 1;
     if (ijac == 0) return 0;
     /* AUTO's arrays are column-major with leading dimension ndim, as ours */
     for (int k = 0; k < MLG_NX * MLG_NX; k++) dfdu[k] = J[k];
@@ -82,19 +118,26 @@ int stpnt(integer ndim, doublereal t, doublereal *u, doublereal *par)
     return 0;
 }
 
+/* One measure of MLG_MEASURES (c/parameters.h) on the current solution u. */
+enum measure_kind { AMP, MEAN, FREQ };
+static doublereal measure(enum measure_kind kind, int state, const doublereal *u,
+                          const doublereal *par)
+{
+    switch (kind) {
+    case AMP: return 0.5 * (getp("MAX", state + 1, u) - getp("MIN", state + 1, u));
+    case MEAN: return getp("INT", state + 1, u);
+    case FREQ:   /* DTM (a mesh interval) is 0 for equilibria and positive for orbits */
+        return getp("DTM", 1, u) > 0.0 ? 1.0 / par[MLG_PAR_PERIOD - 1] : 0.0;
+    }
+    return 0.0;
+}
+
 int pvls(integer ndim, const doublereal *u, doublereal *par)
 {
-    const int psi = MLG_PSI + 1, delta = MLG_DELTA + 1, beta = MLG_BETA + 1, eta = MLG_ETA + 1;
-    par[PAR_PSI_AMP - 1] = 0.5 * (getp("MAX", psi, u) - getp("MIN", psi, u));
-    par[PAR_DELTA_AMP - 1] = 0.5 * (getp("MAX", delta, u) - getp("MIN", delta, u));
-    par[PAR_BETA_MEAN - 1] = getp("INT", beta, u);
-    par[PAR_BETA_AMP - 1] = 0.5 * (getp("MAX", beta, u) - getp("MIN", beta, u));
-    par[PAR_ETA_MEAN - 1] = getp("INT", eta, u);
-    par[PAR_ETA_AMP - 1] = 0.5 * (getp("MAX", eta, u) - getp("MIN", eta, u));
-    par[PAR_PSI_MEAN - 1] = getp("INT", psi, u);
-    /* DTM (a mesh interval) is 0 for equilibria and positive for orbits */
-    int periodic = getp("DTM", 1, u) > 0.0;
-    par[PAR_FREQ - 1] = periodic ? 1.0 / par[PAR_PERIOD - 1] : 0.0;
+    int k = MLG_MEASURES_FIRST_PAR - 1;
+#define X(name, kind, state, unit, doc) par[k++] = measure(kind, state, u, par);
+    MLG_MEASURES(X)
+#undef X
     return 0;
 }
 

@@ -110,6 +110,7 @@ static void scales(const sample *s, double *scale)
     memcpy(scale, base, sizeof base);
     if (s->p.rho != 0.0 || s->p.mu != 0.0) scale[MLG_BETA] = fmin(scale[MLG_BETA], torsion);
     double *ps = scale + MLG_NX;
+    for (int k = 0; k < MLG_NPAR; k++) ps[k] = NAN;   /* a parameter left out fails below */
     ps[MLG_PAR_V] = 1.0;
     ps[MLG_PAR_Fstar] = 1e-2;
     ps[MLG_PAR_yfp] = fmin(1e-2, 1e3 * eps);     /* mm */
@@ -119,7 +120,6 @@ static void scales(const sample *s, double *scale)
     ps[MLG_PAR_rho] = torsion;
     ps[MLG_PAR_mu] = torsion;
     ps[MLG_PAR_k_tlk] = 1e4;
-    ps[MLG_PAR_strut_variant] = 0.0;              /* a switch: not differentiated */
 }
 
 int main(void)
@@ -127,6 +127,17 @@ int main(void)
     double worst_u = 0.0, worst_p = 0.0, worst_level[3] = {0.0, 0.0, 0.0};
     int outside_domain = 0, counted = 0, per_region[4] = {0, 0, 0, 0}, angled[3] = {0, 0, 0};
     const char *worst_where = "";
+    {   /* every continuation parameter has a df/dp scale, so its column is checked */
+        sample s = draw(0);
+        double scale[MLG_NDIR];
+        scales(&s, scale);
+        for (int k = 0; k < MLG_NPAR; k++) {
+            char name[80];
+            snprintf(name, sizeof name, "dfdp_scale_of_%s", mlg_par_name(k));
+            check(scale[MLG_NX + k] > 0.0, name, "scale %g (tests/c/test_jacobian.c scales())",
+                  scale[MLG_NX + k]);
+        }
+    }
     for (int n = 0; n < NSAMPLES; n++) {
         sample s = draw(n);
         double f[MLG_NX], J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR], Jx[MLG_NX * MLG_NX];
