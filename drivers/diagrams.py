@@ -40,7 +40,7 @@ def run(rundir, name, kind=None, **kw):
     """autoglue.run on the MLG model: the base constants, then the run-type
     file constants/runs/c.<kind> if given, then the keyword overrides."""
     files = [CONSTANTS] + ([os.path.join(RUN_CONSTANTS, f"c.{kind}")] if kind else [])
-    os.makedirs(rundir, exist_ok=True)
+    rundir = autoglue.claim(rundir)           # emptied on first use: claim, then write
     mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
     return autoglue.run(rundir, name, constants=files, e=MODEL, **kw)
 
