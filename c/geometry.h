@@ -20,7 +20,7 @@ static inline sidestay sidestay_geometry(const model_parameters *mp)
     sidestay g;
     g.u_beta = v_make(d_neg(d_mul(cr, sm)), d_neg(d_mul(cr, cm)), d_neg(sr));
     g.u_psi0 = v_const(-s0, 0.0, c0);
-    /* m and p: model-notes item 13; u_delta0 is then normal to u_beta and u_psi0 */
+    /* m and p: docs/model.md 4.13; u_delta0 is then normal to u_beta and u_psi0 */
     g.sin_p = d_sub(d_mulc(sr, c0), d_mulc(d_mul(cr, sm), s0));
     g.cos_p = d_sqrt(d_sub(d_const(1.0), d_sq(g.sin_p)));
     g.m = d_atan2(d_add(d_mulc(d_mul(cr, sm), c0), d_mulc(sr, s0)), d_mul(cr, cm));
@@ -77,7 +77,7 @@ static inline strut_geometry strut_geometry_at(const model_parameters *mp, const
         dual num = d_sub(d_mul(d_sq(s.L_delta), dden), d_mulc(d_mul(s.L_delta, den), 2.0));
         s.dk_delta_deta = d_div(d_mulc(num, c->K_kdelta), d_sq(den));
     }
-    /* c_delta: constant fraction of critical damping (model-notes item 1) */
+    /* c_delta: constant fraction of critical damping (docs/model.md 4.1) */
     s.c_delta = d_mulc(d_sqrt(d_mul(s.I_delta, s.k_delta)), c->zeta_delta);
     return s;
 }

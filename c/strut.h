@@ -7,7 +7,7 @@
 /* F_keta.  The printed formula weights the stage (a e^{b eta} + c) by
  * [atan(+k (eta - eta_s)) + pi/2]/pi, i.e. switches it on ABOVE eta_s, and the
  * stage (d e^{e eta} + f) below.  strut_variant 0 swaps the two weights so the
- * oleo is a monotone two-stage spring (model-notes 2B, docs/model.md). */
+ * oleo is a monotone two-stage spring (docs/model.md 4.15). */
 static inline dual strut_spring_force(const mlg_params *c, dual eta)
 {
     dual stage_ac = d_addc(d_mulc(d_exp(d_mulc(eta, c->b_keta)), c->a_keta), c->c_keta);

@@ -72,7 +72,7 @@ static inline int vector_field(const mlg_params *c, const dual u[MLG_NX], dual f
     dual M_kpsi = torsional_stiffness_moment(&mp, r_tlk, psi_s);
     dual M_cpsi = torsional_damping_moment(&mp, twist_rate);
 
-    /* eq. (4) solved for the dynamic load: F_dyn = M H'' + F_z (model-notes 6) */
+    /* eq. (4) solved for the dynamic load: F_dyn = M H'' + F_z (docs/model.md 4.6) */
     dual F_keta = strut_spring_force(c, eta), F_ceta = strut_damper_force(c, eta, eta_dot);
     dual axial = d_add(F_keta, F_ceta);
     axial = d_sub(axial, d_mulc(d_mul(s.dI_beta_deta, d_sq(beta_dot)), 0.5));
@@ -175,7 +175,7 @@ static inline int vector_field(const mlg_params *c, const dual u[MLG_NX], dual f
     dual rhs_beta = d_add(d_sub(M_beta, d_mul(coupling, g.sin_p)), gyro_beta);
     /* the vertical load's moment about the side-stay axis, arm dH/dbeta = L_beta cos'(phi):
      * as printed, eq. (3) adds M H'' there although F_dyn = M H'' + F_z already acts in
-     * M_beta (counted twice, model-notes 2C); an ideal support carries F_dyn on that arm */
+     * M_beta (counted twice, docs/model.md 4.16); an ideal support carries F_dyn on that arm */
     dual beta_load = eom == MLG_EOM_COMPLETE ? d_const(0.0) : MH_ddot;
     if (c->tyre_forces == 0.0) beta_load = d_add(beta_load, F_dyn);
     rhs_beta = d_sub(rhs_beta, d_mul(beta_load, d_mul(s.L_beta, q.dcos_phi)));
@@ -198,7 +198,7 @@ static inline int vector_field(const mlg_params *c, const dual u[MLG_NX], dual f
     }
 
     /* H'' = cos'(phi)(L_b b'' - 2 eta' b') + cos''(phi) L_b b'^2 - eta'' cos(phi)
-     * (model-notes 5: the printed last term eta' is eta''), solved for eta'' */
+     * (docs/model.md 4.5: the printed last term eta' is eta''), solved for eta'' */
     dual H_ddot = d_mulc(MH_ddot, 1.0 / c->M);
     dual eta_rhs = d_mul(q.dcos_phi, d_sub(d_mul(s.L_beta, beta_ddot),
                                            d_mulc(d_mul(eta_dot, beta_dot), 2.0)));

@@ -4,7 +4,7 @@
  *     so f and df/du are bit-identical to the printed equations (0).
  * (b) rho = mu = 0: the complete equations (2) differ from the printed ones
  *     only at second order in (psi, delta, rates) and in the (beta, eta)
- *     coupling of the vertical load (model-notes 2C): same straight-rolling
+ *     coupling of the vertical load (docs/model.md 4.16): same straight-rolling
  *     equilibrium, same linearisation of the torsional/lateral block (which
  *     holds the shimmy Hopf points), to 1e-12.
  * (c) Mass matrix: with the tyres off (ideal support) and the dampers at zero,
@@ -107,7 +107,7 @@ static void complete_linearisation_at_zero_angles(void)
           "max |u_2 - u_0| = %.2e", worst_u);
     check(worst_odd <= 1e-12, "complete_same_odd_block_at_zero_angles",
           "max row-scaled difference %.2e (the (beta, eta) block differs by %.2e: "
-          "the load counted once, model-notes 2C)", worst_odd, even_diff);
+          "the load counted once, docs/model.md 4.16)", worst_odd, even_diff);
 }
 
 /* Accelerations (psi'', delta'', beta'', eta'') at u. */

@@ -1,5 +1,5 @@
 /* Straight-rolling equilibrium against the independent prototype values of
- * shared/model-notes.md section 3 (4 significant digits). */
+ * docs/model.md section 7 (4 significant digits). */
 #include "mlg_model.h"
 #include "unit.h"
 
@@ -17,7 +17,7 @@ static void equilibrium_at(double Fstar, double variant, double V, double u[MLG_
 
 int main(void)
 {
-    /* model-notes 3: F*, beta*, eta* (monotone strut, variant 0) */
+    /* prototype values (docs/model.md 7): F*, beta*, eta* (monotone strut, variant 0) */
     const double table[5][3] = {{0.2, -0.00193, 0.2701}, {0.5, -0.00482, 0.3264},
                                 {1.0, -0.00974, 0.3982}, {2.0, -0.02074, 0.4409},
                                 {3.5, -0.0410, 0.4645}};

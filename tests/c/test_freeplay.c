@@ -60,7 +60,7 @@ int main(void)
               "max rel. difference %.2e between epsilon = 0 and 0.1 mm", worst);
     }
 
-    /* r_tlk: value at the F* = 1 equilibrium (model-notes 3), finite at z_tlk = 0 */
+    /* r_tlk: value at the F* = 1 equilibrium (docs/model.md 7), finite at z_tlk = 0 */
     mlg_params p = mlg_params_table();
     check_rel("r_tlk_eta_0.3982", mlg_r_tlk(&p, 0.398193), 0.47895, 5e-5);
     double r_end = mlg_r_tlk(&p, p.z_tlk0), r_near = mlg_r_tlk(&p, p.z_tlk0 - 1e-9);

@@ -1,6 +1,6 @@
 /* Linear modes of straight rolling (LAPACK dgeev on the analytic Jacobian)
  * and the zero-freeplay Hopf speed found by scanning them over V, against
- * shared/model-notes.md (sections 2A and 3). */
+ * docs/model.md (sections 5 and 7). */
 #include <stdlib.h>
 
 #include "mlg_model.h"
@@ -75,7 +75,7 @@ int main(void)
               freq[3]);
     }
 
-    /* zero-freeplay Hopf speed at F* = 1 (model-notes 2A) */
+    /* zero-freeplay Hopf speed at F* = 1 (docs/model.md 5) */
     p.c_psi = 410.0;
     double V410 = hopf_speed(p);
     check(fabs(V410 - 193.0) <= 1.0, "hopf_speed_c_psi_410", "V_H = %.3f m/s, notes about 193",

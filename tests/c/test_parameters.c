@@ -1,4 +1,6 @@
 /* Parameter validation, look-up by name, and the domain status of evaluations. */
+#define _POSIX_C_SOURCE 200809L   /* mkstemp, fdopen */
+#include <stdlib.h>
 #include <string.h>
 
 #include "mlg_model.h"
@@ -98,6 +100,33 @@ int main(void)
           par[10] == -7.0 && mlg_par_name(10) == NULL && mlg_par_name(11) == NULL &&
           mlg_par_index("tyre_forces") == -1, "switch_par_slot",
           "eom_terms at index %d, PAR(13) = %g", mlg_par_index("eom_terms"), par[12]);
+    /* PAR(1-10) hold continuation parameters only: the other switch is PAR(14) */
+    check(mlg_par_index("strut_variant") == 13 && mlg_par_index("constants") == 14 &&
+          MLG_NPAR <= 10 && mlg_par_name(MLG_NPAR) == NULL, "par_layout",
+          "strut_variant at index %d, constants at %d, %d continuation parameters",
+          mlg_par_index("strut_variant"), mlg_par_index("constants"), MLG_NPAR);
+    /* a file of constant overrides: constants only, never a PAR slot */
+    {
+        char path[] = "/tmp/mlg_test_constants_XXXXXX";
+        int fd = mkstemp(path);
+        FILE *out = fd >= 0 ? fdopen(fd, "w") : NULL;
+        if (out != NULL) {
+            fputs("# comment\nk_relax 0.9   # relaxation\n\nI_psi 151\n", out);
+            fclose(out);
+        }
+        q = table;
+        int bad = mlg_params_read_constants(&q, path, msg, sizeof msg);
+        check(!bad && q.k_relax == 0.9 && q.I_psi == 151.0, "constants_file_read", "%s", msg);
+        out = fopen(path, "w");
+        if (out != NULL) {
+            fputs("k_relax 0.9\nyfp 1\n", out);
+            fclose(out);
+        }
+        bad = mlg_params_read_constants(&q, path, msg, sizeof msg);
+        check(bad && strstr(msg, "line 2: yfp is PAR(3)") != NULL, "constants_file_refuses_par",
+              "%s", msg);
+        remove(path);
+    }
 
     /* states outside the model's domain give a status, never NaN */
     double u[MLG_NX], f[MLG_NX], J[MLG_NX * MLG_NX];
