@@ -24,12 +24,9 @@ import time
 
 import numpy
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BUILD = os.path.join(ROOT, "build")
-# Run directories and figures go under MLG_RUN_ROOT (default build/); `make
-# regress` points it at build/regress/ so that build/<fig>/ stays as it was.
-RUN_ROOT = os.path.abspath(os.environ.get("MLG_RUN_ROOT", BUILD))
-FIGURES_DIR = os.path.join(RUN_ROOT, "figures")
+import branches
+from paths import BUILD, RUN_ROOT
+
 AUTO_DIR = os.environ.get("AUTO_DIR", os.path.join(BUILD, "auto", "07p"))
 
 if not os.path.isdir(os.path.join(AUTO_DIR, "python", "auto")):
@@ -215,13 +212,8 @@ def check_prebuilt(model):
 
 def special_points(bd):
     """List (branch number, label, type) of every labelled point."""
-    points = []
-    for branch in bd:
-        for index in branch.labels.getIndices():
-            for ty, info in list(branch.labels[index].items()):
-                if "LAB" in info:  # skip {"No Label": {"stab": ...}} entries
-                    points.append((branch.BR, info["LAB"], ty))
-    return points
+    return [(branch.BR, label, ty) for branch in bd
+            for _, label, ty in branches.labelled_points(branch)]
 
 
 def read_constants(paths):

@@ -5,17 +5,18 @@ import os
 import sys
 
 import autoglue
-import diagrams as dg
+import continuation as ct
+import paths
 import mlgmodel
 
 V_PAPER = 346.1
 
 
 def calibrate(where="calibration"):
-    rundir = dg.rundir(where)
-    start = dg.Start("table", Fstar=1.0, V=0.0)
-    eq = dg.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
-    curve = dg.hopf_curve(rundir, "hopf_c_psi", eq("HB1"), parameters=("V", "c_psi"), DS=1.0,
+    rundir = paths.rundir(where)
+    start = ct.Start("table", Fstar=1.0, V=0.0)
+    eq = ct.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
+    curve = ct.hopf_curve(rundir, "hopf_c_psi", eq("HB1"), parameters=("V", "c_psi"), DS=1.0,
                           DSMAX=5.0, stop={"V": V_PAPER}, expect=["UZ"], NMX=500)
     return eq("HB1")["V"], curve("UZ1")["c_psi"]
 
@@ -28,7 +29,7 @@ def main():
     lines = [f"Hopf speed at F* = 1 with the table c_psi = 410: V = {v_table:.3f} m/s",
              f"c_psi putting it at V = {V_PAPER} m/s: {c_psi:.4f} N m s/rad",
              f"MLG_C_PSI_FIGURES in c/parameters.c: {mlgmodel.C_PSI_FIGURES}"]
-    path = os.path.join(autoglue.BUILD, "calibration", "c_psi.txt")
+    path = os.path.join(paths.rundir("calibration"), "c_psi.txt")
     with open(path, "w") as out:
         out.write("\n".join(lines) + "\n")
     print("\n".join("calibrate_c_psi: " + line for line in lines))

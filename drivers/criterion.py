@@ -21,11 +21,12 @@ import matplotlib.pyplot as plt
 import numpy
 
 import autoglue
-import diagrams as dg
 import magnitude as mg
 import mlgmodel
+import paths
+import plotting
 
-OUT = os.path.join(autoglue.RUN_ROOT, "criterion")
+OUT = os.path.join(paths.RUN_ROOT, "criterion")
 VARIANTS = (0, 1)
 # The one-parameter family joining the strut variants: the stage-switch
 # position eta_s of the monotone spring (docs/model.md 4.15).  0.34 m is the
@@ -123,7 +124,7 @@ def auto_kappa(variant, scanned):
                                 f"{scanned['V']:.3f}, not on V = {mg.V_LIMIT}")
     stop = (mg.ENVELOPE_LOADS[0], mg.ENVELOPE_LOADS[-1])
     start = mg.extreme_crossing(mg.FSTAR, "high", strut_variant=float(variant))[0]
-    curve = mg.window_point_curve(dg.rundir(os.path.join("criterion", "auto")),
+    curve = mg.window_point_curve(paths.rundir(os.path.join("criterion", "auto")),
                                   f"a_v{variant}", start, mg.FSTAR, stop, dsmax=0.005,
                                   strut_variant=float(variant))
     pieces = {}
@@ -201,7 +202,7 @@ def plot(groups):
     fig.suptitle(r"Allowable freeplay $y_{fp}/\epsilon < \kappa^*$ (eq. 17: $V \leq$ 120 m/s, "
                  r"$F^* \leq$ 2) under each low-load assumption")
     fig.tight_layout()
-    dg.save(fig, "criterion")
+    plotting.save(fig, "criterion")
 
 
 def report():
@@ -221,7 +222,7 @@ def report():
                     f"{c['relative difference']:+.2e}")
     text = "\n".join(rows)
     print(text)
-    tables = os.path.join(autoglue.RUN_ROOT, "tables")
+    tables = os.path.join(paths.RUN_ROOT, "tables")
     os.makedirs(tables, exist_ok=True)
     with open(os.path.join(tables, "criterion.txt"), "w") as out:
         out.write(text + "\n")

@@ -5,7 +5,7 @@ is about epsilon."""
 import matplotlib.pyplot as plt
 import numpy
 
-import diagrams as dg
+import plotting
 import mlgmodel
 
 RATIOS = (2.0, 1.0, 0.5, 0.2, 0.1)      # epsilon / y_fp
@@ -38,7 +38,7 @@ def main():
     zoom.set_title("(b) the smoothing region at the contact corner")
     full.legend(fontsize=8)
     fig.tight_layout()
-    dg.save(fig, "fig06")
+    plotting.save(fig, "fig06")
 
 
 if __name__ == "__main__":

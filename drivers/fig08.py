@@ -9,7 +9,6 @@ settled amplitudes over the last second) and build/figures/fig08.{png,pdf}.
 Exits non-zero if the simulation fails.
 """
 import os
-import subprocess
 import sys
 
 import matplotlib
@@ -17,11 +16,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BUILD = os.path.join(ROOT, "build")
-SIMULATOR = os.path.join(BUILD, "bin", "mlg_simulate")
-OUT_DIR = os.path.join(BUILD, "fig08")
-FIG_DIR = os.path.join(BUILD, "figures")
+import paths  # noqa: E402
+import simulator  # noqa: E402
+
+OUT_DIR = os.path.join(paths.RUN_ROOT, "fig08")
+FIG_DIR = paths.FIGURES_DIR
 
 V, FSTAR, T_END, DT_OUT, PSI0 = 300.0, 0.2, 15.0, 1e-3, 1e-3
 
@@ -31,18 +30,12 @@ ROWS = [("psi", r"$\psi$ [rad]"), ("delta", r"$\delta$ [rad]"),
 
 def simulate(csv_path):
     """Run the simulator; return its summary as a dict of floats."""
-    command = [SIMULATOR, "--set", "figures", "--V", str(V), "--Fstar", str(FSTAR),
-               "--yfp", "0", "--t-end", str(T_END), "--dt-out", str(DT_OUT),
-               "--psi0", str(PSI0), "--out", csv_path]
-    proc = subprocess.run(command, capture_output=True, text=True)
-    if proc.returncode != 0:
-        sys.stderr.write(proc.stdout + proc.stderr)
-        sys.exit(f"fig08: mlg_simulate failed (exit status {proc.returncode})")
-    summary = {}
-    for line in proc.stdout.splitlines():
-        key, value = line.split()
-        summary[key] = float(value)
-    return summary
+    try:
+        return simulator.simulate(csv_path, "--set", "figures", "--V", V, "--Fstar", FSTAR,
+                                  "--yfp", 0, "--t-end", T_END, "--dt-out", DT_OUT,
+                                  "--psi0", PSI0)
+    except simulator.SimulationError as exc:
+        sys.exit(f"fig08: {exc}")
 
 
 def plot(data, path_stem):

@@ -1,31 +1,35 @@
 """Fig. 9: the zero-freeplay Hopf curve in the (V, F*) plane, F* in [0, 3.5],
 continued from the Hopf point of straight rolling at F* = 1."""
-import sys
-
 import matplotlib.pyplot as plt
 
-import autoglue
-import diagrams as dg
+import continuation as ct
+import paths
+import plotting
+import results
 
 FSTAR_RANGE = (0.1, 3.5)   # below F* ~ 0.1 the curve leaves V <= 600 m/s steeply
 
 
 def compute(parameter_set="figures", where="fig09"):
-    rundir = dg.rundir(where)
-    start = dg.Start(parameter_set, Fstar=1.0, V=0.0)
-    eq = dg.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
+    """{"curves": stored Hopf-curve branches, "ends": [(F*, V)] of their UZ ends}."""
+    rundir = paths.rundir(where)
+    start = ct.Start(parameter_set, Fstar=1.0, V=0.0)
+    eq = ct.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
     curves = []
     for direction, ds in (("up", 0.01), ("down", -0.01)):
-        curves.append(dg.hopf_curve(rundir, f"hopf_{direction}", eq("HB1"), DS=ds,
+        curves.append(ct.hopf_curve(rundir, f"hopf_{direction}", eq("HB1"), DS=ds,
                                     stop={"Fstar": list(FSTAR_RANGE)},
                                     expect=["UZ"]))
-    return eq, curves
+    return {"curves": [results.stored(c, ("V", "Fstar")) for c in curves],
+            "ends": [(p["Fstar"], p["V"]) for c in curves for p in c("UZ")]}
 
 
-def plot(curves):
+def plot(result):
+    for Fstar, V in result["ends"]:
+        print(f"fig09: Hopf curve end F* = {Fstar:.3f} at V = {V:.2f} m/s")
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    for curve in curves:
-        for branch in curve:
+    for curve in result["curves"]:
+        for branch in results.loaded(curve):
             ax.plot(branch["V"], branch["Fstar"], color="tab:blue", lw=1.6)
     ax.text(495, 2.2, "H", color="tab:blue")
     ax.axvline(80.0, color="k", ls="--", lw=1)
@@ -37,19 +41,8 @@ def plot(curves):
     ax.set_xlabel("V [m/s]")
     ax.set_ylabel("$F_z^*$")
     ax.set_title("Fig. 9: Hopf curve, zero freeplay")
-    dg.save(fig, "fig09")
-
-
-def main():
-    try:
-        eq, curves = compute()
-    except (autoglue.RunError, ValueError, RuntimeError) as exc:
-        sys.exit(f"fig09: {exc}")
-    for curve in curves:
-        for point in curve("UZ"):
-            print(f"fig09: Hopf curve end F* = {point['Fstar']:.3f} at V = {point['V']:.2f} m/s")
-    plot(curves)
+    plotting.save(fig, "fig09")
 
 
 if __name__ == "__main__":
-    main()
+    results.run_figure("fig09", compute, plot)

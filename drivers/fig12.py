@@ -7,49 +7,52 @@ loads at V = 50 between which stable straight rolling coexists with stable
 torsional shimmy, separated by the unstable orbits.
 `fig12.py --strut-variant 1` does the same with the printed strut spring
 (build/fig12_v1/, build/figures/fig12_v1.*)."""
-import argparse
-import sys
-
 import matplotlib.pyplot as plt
 import numpy
 
-import autoglue
-import diagrams as dg
+import branches
+import continuation as ct
 import mlgmodel
 import paper_table
+import paths
+import plotting
+import results
+import spectrum
 
-DEG = 180 / numpy.pi
+DEG = plotting.DEG
+COLUMNS = ("Fstar", "psi_amp", "psi_mean", "freq")
 F_MIN, F_MAX = 0.02, 3.5
 VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
 
 
-def compute(parameter_set="figures", where="fig12", variant=0):
-    rundir = dg.rundir(where)
+def runs(parameter_set="figures", where="fig12", variant=0):
+    """(straight rolling, pitchfork loads, yaw branches, Hopf loads, orbit runs)."""
+    rundir = paths.rundir(where)
     values = {**VALUES, "strut_variant": float(variant)}
     # The printed strut (variant 1) folds straight rolling twice in F* while
     # eta crosses its 1e-5 m stage switch (F* 0.63-0.70): steps must shrink
     # below AUTO's default DSMIN of 1e-5 there.
     steps = {"DSMIN": 1e-10} if variant else {}
-    start = dg.Start(parameter_set, Fstar=F_MIN, **values)
+    start = ct.Start(parameter_set, Fstar=F_MIN, **values)
     # MXBF = 0: the stationary yaw branches are computed explicitly below
-    eq = dg.equilibria(rundir, "eq", start, "Fstar", stop={"Fstar": F_MAX}, DS=0.002,
+    eq = ct.equilibria(rundir, "eq", start, "Fstar", stop={"Fstar": F_MAX}, DS=0.002,
                        DSMAX=0.01, MXBF=0, NMX=5000, expect=["BP"], **steps)
-    changes = dg.stability_changes(parameter_set, "Fstar", numpy.linspace(F_MIN, F_MAX, 1000),
-                                   **values)
+    changes = spectrum.stability_changes(parameter_set, "Fstar",
+                                         numpy.linspace(F_MIN, F_MAX, 1000), **values)
     pitchforks = [p["Fstar"] for p in eq("BP")]
     yaw = []
     for k, point in enumerate(eq("BP")[:1]):
         # from the first pitchfork to the second, both signs of psi
         for sign in (1, -1):
-            yaw.append(dg.run(rundir, f"yaw{'pm'[sign < 0]}", "equilibria", data=point, ISW=-1,
-                              ICP=["Fstar"] + dg.MEASURES, DS=0.001 * sign, DSMAX=0.005,
+            yaw.append(ct.run(rundir, f"yaw{'pm'[sign < 0]}", "equilibria", data=point, ISW=-1,
+                              ICP=["Fstar"] + ct.MEASURES, DS=0.001 * sign, DSMAX=0.005,
                               NMX=3000, MXBF=0,
                               UZSTOP={"Fstar": [F_MIN, F_MAX, pitchforks[-1] + 1e-3]}))
     hopf = [v for v, kind, _ in changes if kind == "HB"]
     orbits = []
     for k, v in enumerate(hopf):
-        point = dg.hopf_point(rundir, f"hb{k + 1}", parameter_set, "Fstar", v, **values)
-        orbits.append(dg.periodic_from(rundir, f"po{k + 1}", point, "Fstar",
+        point = ct.hopf_point(rundir, f"hb{k + 1}", parameter_set, "Fstar", v, **values)
+        orbits.append(ct.periodic_from(rundir, f"po{k + 1}", point, "Fstar",
                                        stop={"Fstar": [F_MIN, F_MAX]}, DS=0.002, DSMAX=0.02,
                                        NMX=3000, **steps))
     return eq, pitchforks, yaw, hopf, orbits
@@ -63,7 +66,7 @@ def bistable_interval(pitchforks, hopf, orbits):
     straight rolling are on its later stable segments."""
     lower, upper = pitchforks[-1], hopf[0]
     pieces = [piece for diagram in orbits for branch in diagram
-              for piece in dg.segments(branch, "Fstar", "psi_amp")]
+              for piece in branches.segments(branch, "Fstar", "psi_amp")]
     coexisting = [min(xs) for xs, _, stable in pieces[1:] if stable]
     separating = [max(xs) for xs, _, stable in pieces if not stable]
     if not coexisting or not separating:
@@ -71,8 +74,7 @@ def bistable_interval(pitchforks, hopf, orbits):
     return max(lower, min(coexisting)), min(upper, max(separating))
 
 
-def numbers(result):
-    eq, pitchforks, yaw, hopf, orbits = result
+def numbers(eq, pitchforks, yaw, hopf, orbits):
     out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(pitchforks)}
     out.update({f"H{k + 1} F*": f for k, f in enumerate(hopf)})
     for diagram in orbits:
@@ -92,24 +94,39 @@ def freeplay_boundary(parameter_set, loads, variant=0):
     return numpy.array(out)
 
 
-def plot(result, parameter_set="figures", name="fig12", variant=0):
-    eq, pitchforks, yaw, hopf, orbits = result
-    fig, (amp, freq) = plt.subplots(2, 1, figsize=(8, 8), sharex=True)
+def compute(name="fig12", variant=0, parameter_set="figures"):
+    found = runs(parameter_set, name, variant)
+    eq, pitchforks, yaw, hopf, orbits = found
     loads = numpy.linspace(F_MIN, F_MAX, 200)
-    boundary = freeplay_boundary(parameter_set, loads, variant) * DEG
+    return {"name": name, "variant": variant, "numbers": numbers(*found),
+            "eq": results.stored(eq, COLUMNS),
+            "pitchforks": pitchforks, "hopf": hopf,
+            "yaw": [results.stored(d, COLUMNS) for d in yaw],
+            "orbits": [results.stored(d, COLUMNS) for d in orbits],
+            "boundary": (loads, freeplay_boundary(parameter_set, loads, variant))}
+
+
+def plot(result):
+    paper_table.report(result["name"], result["numbers"])
+    eq, pitchforks, hopf = results.loaded(result["eq"]), result["pitchforks"], result["hopf"]
+    yaw = [results.loaded(d) for d in result["yaw"]]
+    orbits = [results.loaded(d) for d in result["orbits"]]
+    fig, (amp, freq) = plt.subplots(2, 1, figsize=(8, 8), sharex=True)
+    loads, boundary = (numpy.asarray(a) for a in result["boundary"])
+    boundary = boundary * DEG
     amp.plot(loads, boundary, color="0.6", lw=3, label=r"$\psi_{fp}$")
     amp.plot(loads, -boundary, color="0.6", lw=3)
-    dg.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
+    plotting.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
     for diagram in yaw:
         for branch in diagram:
-            for xs, ys, stable in dg.segments(branch, "Fstar", "psi_mean"):
+            for xs, ys, stable in branches.segments(branch, "Fstar", "psi_mean"):
                 amp.plot(xs, ys * DEG, "-." if stable else ":",
-                         color=dg.STABLE if stable else dg.UNSTABLE, lw=1.4)
+                         color=plotting.STABLE if stable else plotting.UNSTABLE, lw=1.4)
     for diagram in orbits:
-        dg.plot_branch(amp, diagram, "Fstar", "psi_amp", scale=DEG)
-        dg.plot_branch(freq, diagram, "Fstar", "freq")
-        dg.mark_points(amp, diagram, "LP", "Fstar", "psi_amp", scale=DEG, text="S")
-        dg.mark_points(freq, diagram, "LP", "Fstar", "freq", text="S")
+        plotting.plot_branch(amp, diagram, "Fstar", "psi_amp", scale=DEG)
+        plotting.plot_branch(freq, diagram, "Fstar", "freq")
+        plotting.mark_points(amp, diagram, "LP", "Fstar", "psi_amp", scale=DEG, text="S")
+        plotting.mark_points(freq, diagram, "LP", "Fstar", "freq", text="S")
     for f in pitchforks:
         amp.plot(f, 0, "ks", ms=4)
         amp.annotate("P", (f, 0), textcoords="offset points", xytext=(2, -10))
@@ -124,24 +141,15 @@ def plot(result, parameter_set="figures", name="fig12", variant=0):
     freq.set_xlabel(r"$F_z^*$")
     freq.set_title("(b) frequency")
     freq.set_xlim(0, F_MAX)
-    fig.suptitle(rf"Fig. 12, strut variant {variant}: V = 50 m/s, $y_{{fp}}$ = 1 mm, "
-                 r"$\epsilon$ = 0.1 mm "
-                 "(solid stable, dashed unstable)")
+    fig.suptitle(rf"Fig. 12, strut variant {result['variant']}: V = 50 m/s, "
+                 r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm (solid stable, dashed unstable)")
     fig.tight_layout()
-    dg.save(fig, name)
+    plotting.save(fig, result["name"])
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--strut-variant", type=int, choices=(0, 1), default=0)
-    variant = parser.parse_args().strut_variant
-    name = "fig12" if variant == 0 else f"fig12_v{variant}"
-    try:
-        result = compute(where=name, variant=variant)
-    except (autoglue.RunError, ValueError, RuntimeError) as exc:
-        sys.exit(f"{name}: {exc}")
-    paper_table.report(name, numbers(result))
-    plot(result, name=name, variant=variant)
+    variant, name, rest = results.variant_option("fig12", __doc__.splitlines()[0])
+    results.run_figure(name, lambda: compute(name, variant), plot, argv=rest)
 
 
 if __name__ == "__main__":

@@ -2,42 +2,37 @@
 (section IV.D.1), F* = 1: (a) diagrams in V for y_fp = 0.2, 0.5, 1, 2 mm,
 (b) their stiffness profiles, (c, d) amplitude and frequency of the stable
 orbits at V = 15, 50, 80, 110 m/s continued in y_fp."""
-import sys
-
 import matplotlib.pyplot as plt
+import numpy
 
 import autoglue
-import diagrams as dg
 import magnitude as mg
 import mlgmodel
 import paper_table
+import plotting
+import results
 
-FREEPLAYS = (0.2, 0.5, 1.0, 2.0)
+FREEPLAYS = mg.FIG13_FREEPLAYS
 COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red")
 FIT_RANGE = (0.05, 2.0)   # y_fp range of the linear fits [mm]
 
 
-def compute(where="fig13"):
-    rundir = dg.rundir(where)
-    diagrams = {y: mg.diagram_in_V(rundir, f"y{y:g}", "ratio", y, figure="fig13")
-                for y in FREEPLAYS}
-    orbits = mg.orbits_in_yfp(rundir, diagrams[1.0], figure="fig13")
-    return diagrams, orbits
+def compute():
+    """One diagram in V per y_fp; the orbits in y_fp with the y_fp = 1 one
+    (in one process: its runs share build/fig13/, as its reference)."""
+    jobs = mg.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=1.0, separate=False)
+    diagrams, orbits = mg.diagrams_of({name: job() for name, job in jobs.items()})
+    return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits}
 
 
 def numbers(diagrams, orbits):
     """{quantity: value}: Hopf and fold speeds per y_fp, and per orbit speed
     the slope of psi_amp against y_fp (fit through 0), its largest relative
     residual, the intercept of a free linear fit, and the frequency range."""
-    out = {}
-    for y, d in diagrams.items():
-        for k, (V, _) in enumerate(d.hopf):
-            out[f"y_fp = {y:g}: H{k + 1} [m/s]"] = V
-        for k, (*_, V, _) in enumerate(d.folds()):
-            out[f"y_fp = {y:g}: S{k + 1} [m/s]"] = V
-    for V, runs in orbits.items():
-        ys, amp, stable = mg.orbit_curve(runs, "psi_amp")
-        _, freq, _ = mg.orbit_curve(runs, "freq")
+    out = mg.diagram_numbers(diagrams)
+    for V, curve in orbits:
+        ys, amp, freq, stable = (numpy.asarray(curve[c]) for c in ("yfp", "psi_amp", "freq",
+                                                                    "stable"))
         inside = (ys >= FIT_RANGE[0]) & (ys <= FIT_RANGE[1])
         if not stable[inside].all():
             raise autoglue.RunError(f"fig13: orbit at V = {V:g} loses stability in y_fp")
@@ -50,10 +45,12 @@ def numbers(diagrams, orbits):
     return out
 
 
-def plot(diagrams, orbits):
+def plot(result):
+    paper_table.report("fig13", result["numbers"])
     fig, axes = plt.subplots(2, 2, figsize=(10, 7.5))
     k_tlk = mlgmodel.Model("figures")["k_tlk"]
-    for (y, d), colour in zip(diagrams.items(), COLOURS):
+    for d, colour in zip(result["diagrams"], COLOURS):
+        y = d["yfp"]
         mg.plot_diagram(axes[0][0], d, colour, f"$y_{{fp}}$ = {y:g} mm")
         ys, force = mg.profile(y, "ratio", k_tlk, span=1.0 / y * 3.0)
         axes[0][1].plot(ys, force, color=colour, label=f"$y_{{fp}}$ = {y:g} mm")
@@ -63,7 +60,7 @@ def plot(diagrams, orbits):
     axes[0][1].set(xlabel="$y_{tlk}$ [mm]", ylabel=r"$M_{k\psi}/r_{tlk}$ [N]", xlim=(-3, 3),
                    title=r"(b) stiffness profiles, $\epsilon$ = 0.1 $y_{fp}$")
     axes[0][1].legend(fontsize=7)
-    mg.plot_orbits(axes[1][0], axes[1][1], orbits)
+    mg.plot_orbits(axes[1][0], axes[1][1], result["orbits"])
     axes[1][0].set_title("(c) orbits at fixed V continued in $y_{fp}$")
     axes[1][1].set_title("(d) their frequency")
     axes[1][1].set_ylim(0, None)
@@ -71,18 +68,8 @@ def plot(diagrams, orbits):
         ax.set_xlim(0, mg.YFP_MAX)
     fig.suptitle(r"Fig. 13: $F^*$ = 1, $\epsilon/y_{fp}$ = 0.1 (solid stable, dashed unstable)")
     fig.tight_layout()
-    dg.save(fig, "fig13")
-
-
-def main():
-    try:
-        diagrams, orbits = compute()
-        ours = numbers(diagrams, orbits)
-    except (autoglue.RunError, ValueError, RuntimeError) as exc:
-        sys.exit(f"fig13: {exc}")
-    paper_table.report("fig13", ours)
-    plot(diagrams, orbits)
+    plotting.save(fig, "fig13")
 
 
 if __name__ == "__main__":
-    main()
+    results.run_figure("fig13", compute, plot)

@@ -5,10 +5,8 @@ no continuation."""
 import matplotlib.pyplot as plt
 import numpy
 
-import diagrams as dg
-import fig13
-import fig14
 import magnitude as mg
+import plotting
 import mlgmodel
 import paper_table
 
@@ -31,8 +29,8 @@ def main():
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
     ours = {}
     for ax, scaling, freeplays, title in (
-            (axes[0], "ratio", fig13.FREEPLAYS, r"(a) $\epsilon$ = 0.1 $y_{fp}$ (Fig. 13)"),
-            (axes[1], "fixed", fig14.FREEPLAYS, r"(b) $\epsilon$ = 0.1 mm (Fig. 14)")):
+            (axes[0], "ratio", mg.FIG13_FREEPLAYS, r"(a) $\epsilon$ = 0.1 $y_{fp}$ (Fig. 13)"),
+            (axes[1], "fixed", mg.FIG14_FREEPLAYS, r"(b) $\epsilon$ = 0.1 mm (Fig. 14)")):
         for y in freeplays:
             ax.plot(*rescaled(y, scaling, k_tlk), lw=1.2, label=f"$y_{{fp}}$ = {y:g} mm")
         ax.plot([-SPAN, -1, 1, SPAN], [1 - SPAN, 0, 0, SPAN - 1], "k--", lw=0.8,
@@ -45,7 +43,7 @@ def main():
     axes[0].set_ylabel(r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$")
     fig.suptitle("Fig. 15: rescaled torque-link stiffness profiles")
     fig.tight_layout()
-    dg.save(fig, "fig15")
+    plotting.save(fig, "fig15")
 
 
 if __name__ == "__main__":

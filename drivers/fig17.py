@@ -1,40 +1,38 @@
 """Fig. 17: the Hopf and fold-of-cycles curves of Fig. 16(b) (eps = 0.1 mm,
 F* = 1) in the plane (V, y_fp/eps), with R1 and R2 and the points a, b, c
-that bound them (defined in magnitude.window_points)."""
-import sys
-
+that bound them (defined in magnitude.window_points).  Drawn from Fig. 16's
+cached result: no computation of its own."""
 import matplotlib.pyplot as plt
+import numpy
 
-import autoglue
-import diagrams as dg
 import magnitude as mg
 import paper_table
-
-SEEDS = (0.15,)   # y_fp [mm] of the diagram whose fold starts the fold curve
-
-
-def compute(where="fig17"):
-    rundir = dg.rundir(where)
-    seeds = [mg.diagram_in_V(rundir, f"y{y:g}", "fixed", y, uzr=(), figure="fig17")
-             for y in SEEDS]
-    hopf = mg.hopf_curves(rundir, "hopf", "fixed", figure="fig17")
-    folds = mg.fold_curves(rundir, "fold", seeds, figure="fig17")
-    return hopf, folds, mg.window_points(mg.FSTAR)
+import plotting
+import results
 
 
-def plot(hopf, folds, window):
+def compute():
+    """Fig. 16's curves and window, and the numbers of a, b, c."""
+    fig16 = results.read("fig16")
+    window = fig16["window"]
+    numbers = {}
+    for name in "abc":
+        numbers[f"{name}: V [m/s]"] = window["V_" + name]
+        numbers[f"{name}: y_fp/eps"] = window[name] / mg.EPSILON
+    return {"numbers": numbers, "window": window, "hopf_curves": fig16["hopf_curves"],
+            "fold_curves": fig16["fold_curves"]}
+
+
+def plot(result):
+    paper_table.report("fig17", result["numbers"])
+    window = result["window"]
     fig, ax = plt.subplots(figsize=(7, 5))
     eps = mg.EPSILON
-    label = "Hopf"
-    for curve in hopf:
-        ys, Vs = mg.curve_points(curve, "yfp", "V")
-        ax.plot(Vs, ys / eps, "b-.", lw=1.2, label=label)
-        label = None
-    label = "fold of cycles"
-    for curve in folds:
-        ys, Vs = mg.curve_points(curve, "yfp", "V")
-        ax.plot(Vs, ys / eps, "k-.", lw=1.2, label=label)
-        label = None
+    for kind, style, label in (("hopf_curves", "b-.", "Hopf"),
+                               ("fold_curves", "k-.", "fold of cycles")):
+        for curve in result[kind]:
+            ax.plot(curve["V"], numpy.asarray(curve["yfp"]) / eps, style, lw=1.2, label=label)
+            label = None
     for lo, hi, name in ((0.0, window["a"], "R1"), (window["b"], window["c"], "R2")):
         ax.fill_between([0, mg.V_LIMIT], lo / eps, hi / eps, color="tab:cyan", alpha=0.35)
         ax.text(60, 0.5 * (lo + hi) / eps, name, ha="center", va="center")
@@ -47,22 +45,8 @@ def plot(hopf, folds, window):
            title=r"Fig. 17: bifurcation curves in (V, $y_{fp}/\epsilon$), $F^*$ = 1, "
                  r"$\epsilon$ = 0.1 mm")
     ax.legend(fontsize=8, loc="upper right")
-    dg.save(fig, "fig17")
-
-
-def main():
-    try:
-        hopf, folds, window = compute()
-    except (autoglue.RunError, ValueError, RuntimeError) as exc:
-        sys.exit(f"fig17: {exc}")
-    eps = mg.EPSILON
-    ours = {}
-    for name in "abc":
-        ours[f"{name}: V [m/s]"] = window["V_" + name]
-        ours[f"{name}: y_fp/eps"] = window[name] / eps
-    paper_table.report("fig17", ours)
-    plot(hopf, folds, window)
+    plotting.save(fig, "fig17")
 
 
 if __name__ == "__main__":
-    main()
+    results.run_figure("fig17", compute, plot)

@@ -1,7 +1,7 @@
 """Fig. 18: the points a, b, c of Fig. 17 continued in F* (eps = 0.1 mm), the
 regions of the (y_fp/eps, F*) plane by what straight rolling does for V up to
 120 m/s, and the largest envelope 0 < y_fp/eps < kappa*, F* in [0.1, 2],
-inside R1.  Writes kappa* to build/figures/fig18.json for Fig. 19.
+inside R1.  Fig. 19 reads kappa* from its cached result.
 `fig18.py --strut-variant 1` does the same with the printed strut spring
 (build/fig18_v1/, build/figures/fig18_v1.*).
 
@@ -9,20 +9,17 @@ a, b, c and the region map come from the eigenvalues of straight rolling
 (magnitude.window_points, magnitude.growth) on an F* grid; a and b are also
 continued by AUTO as curves of Hopf points at V = 120 m/s in (y_fp, F*) as a
 check."""
-import argparse
-import json
-import os
-import sys
-
 import matplotlib.pyplot as plt
 import numpy
 from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch
 
 import autoglue
-import diagrams as dg
 import magnitude as mg
 import paper_table
+import paths
+import plotting
+import results
 
 FSTARS = mg.ENVELOPE_LOADS
 MAP_KAPPA = numpy.geomspace(0.05, 8.0, 50)
@@ -63,17 +60,18 @@ def auto_check(rundir, **model):
     return out
 
 
-def compute(where="fig18", **model):
-    rundir = dg.rundir(where)
+def runs(where="fig18", **model):
+    """(window points per F*, region map, AUTO's check runs)."""
+    rundir = paths.rundir(where)
     points = []
     for Fstar in FSTARS:
         points.append(mg.window_points(Fstar, **model))
         p = points[-1]
-        mg.progress("fig18", f"F* = {Fstar:.2f}: a {p['a']}, b {p['b']}, c {p['c']:.5g} "
-                             f"(V {p['V_c']:.3g}), pitchfork {p['p']:.5g}")
+        mg.progress(where, f"F* = {Fstar:.2f}: a {p['a']}, b {p['b']}, c {p['c']:.5g} "
+                           f"(V {p['V_c']:.3g}), pitchfork {p['p']:.5g}")
     grid = numpy.array([[region(p["Fstar"], k, p["b"], **model) for k in MAP_KAPPA]
                         for p in points])
-    mg.progress("fig18", "region map done")
+    mg.progress(where, "region map done")
     return points, grid, auto_check(rundir, **model)
 
 
@@ -105,7 +103,22 @@ def numbers(points, auto, kappa, best):
     return out
 
 
-def plot(points, grid, auto, kappa, figure="fig18", variant=0):
+def compute(name="fig18", variant=0):
+    model = {"strut_variant": float(variant)} if variant else {}
+    points, grid, auto = runs(name, **model)
+    kappa, best = kappa_star(points, **model)
+    mg.progress(name, "kappa* refined")
+    return {"name": name, "variant": variant, "numbers": numbers(points, auto, kappa, best),
+            "kappa_star": kappa,
+            "kappa_star_Fstar": best["Fstar"], "points": points, "grid": grid,
+            "auto": [{"yfp": run[0]["yfp"], "Fstar": run[0]["Fstar"]}
+                     for name_runs in auto.values() for run in name_runs]}
+
+
+def plot(result):
+    paper_table.report(result["name"], result["numbers"])
+    points, auto, kappa = result["points"], result["auto"], result["kappa_star"]
+    grid = numpy.asarray(result["grid"])
     fig, ax = plt.subplots(figsize=(7.5, 5.5))
     edges_k = numpy.sqrt(MAP_KAPPA[1:] * MAP_KAPPA[:-1])
     edges_k = numpy.r_[MAP_KAPPA[0] ** 2 / edges_k[0], edges_k, MAP_KAPPA[-1] ** 2 / edges_k[-1]]
@@ -116,9 +129,8 @@ def plot(points, grid, auto, kappa, figure="fig18", variant=0):
     for name, style in (("a", "b-"), ("b", "b--"), ("c", "g-"), ("p", "k:")):
         ys = [numpy.nan if p[name] is None else p[name] / mg.EPSILON for p in points]
         ax.plot(ys, Fs, style, lw=1.6, label=name if name != "p" else "pitchfork")
-    for name, runs in auto.items():
-        for run in runs:
-            ax.plot(numpy.asarray(run[0]["yfp"]) / mg.EPSILON, run[0]["Fstar"], "w:", lw=1)
+    for run in auto:
+        ax.plot(numpy.asarray(run["yfp"]) / mg.EPSILON, run["Fstar"], "w:", lw=1)
     ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
                                FSTARS[-1] - FSTARS[0], fill=False, hatch="//", lw=1.2))
     handles = ax.get_legend_handles_labels()[0] + [
@@ -126,30 +138,16 @@ def plot(points, grid, auto, kappa, figure="fig18", variant=0):
         for colour, name in zip(COLOURS, REGIONS)]   # edged: R1 is white
     ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0] - 0.025, 2.025),
            xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$",
-           title=rf"Fig. 18, strut variant {variant}: straight rolling for V $\leq$ 120 m/s, "
-                 rf"$\epsilon$ = 0.1 mm (hatched: $y_{{fp}}/\epsilon < \kappa^*$ = {kappa:.3f})")
+           title=rf"Fig. 18, strut variant {result['variant']}: straight rolling for "
+                 rf"V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm (hatched: $y_{{fp}}/\epsilon < "
+                 rf"\kappa^*$ = {kappa:.3f})")
     ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
-    dg.save(fig, figure)
+    plotting.save(fig, result["name"])
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--strut-variant", type=int, choices=(0, 1), default=0)
-    variant = parser.parse_args().strut_variant
-    name = "fig18" if variant == 0 else f"fig18_v{variant}"
-    model = {"strut_variant": float(variant)} if variant else {}
-    try:
-        points, grid, auto = compute(name, **model)
-    except (autoglue.RunError, ValueError, RuntimeError) as exc:
-        sys.exit(f"{name}: {exc}")
-    kappa, best = kappa_star(points, **model)
-    mg.progress(name, "kappa* refined")
-    paper_table.report(name, numbers(points, auto, kappa, best))
-    path = os.path.join(autoglue.FIGURES_DIR, f"{name}.json")
-    with open(path + ".tmp", "w") as out:
-        json.dump({"kappa_star": kappa, "Fstar": best["Fstar"], "strut_variant": variant}, out)
-    os.replace(path + ".tmp", path)
-    plot(points, grid, auto, kappa, name, variant)
+    variant, name, rest = results.variant_option("fig18", __doc__.splitlines()[0])
+    results.run_figure(name, lambda: compute(name, variant), plot, argv=rest)
 
 
 if __name__ == "__main__":

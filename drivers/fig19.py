@@ -1,20 +1,16 @@
 """Fig. 19: the rescaled stiffness profiles allowed by y_fp/eps < kappa*
-(kappa* of both strut variants from Fig. 18, read from
-build/figures/fig18.json and fig18_v1.json): every allowed profile lies
+(kappa* of both strut variants from Fig. 18's cached results, fig18 and
+fig18_v1): every allowed profile lies
 between the kappa* profile and the eps -> infinity limit y* = x* (no
 freeplay felt).  The two readings of the strut spring bound a band: the
 profiles between their kappa* profiles are allowed by one only."""
-import json
-import os
-import sys
-
 import matplotlib.pyplot as plt
 import numpy
 
-import autoglue
-import diagrams as dg
 import mlgmodel
 import paper_table
+import plotting
+import results
 
 SPAN = 3.0
 
@@ -27,11 +23,10 @@ def rescaled(kappa, x):
 
 
 def read_kappa(name):
-    path = os.path.join(autoglue.FIGURES_DIR, f"{name}.json")
-    if not os.path.exists(path):
-        sys.exit(f"fig19: {path} is missing (make {name})")
-    with open(path) as source:
-        return json.load(source)["kappa_star"]
+    try:
+        return results.read(name)["kappa_star"]
+    except results.MissingResult as exc:
+        raise SystemExit(f"fig19: {exc}")
 
 
 def main():
@@ -60,7 +55,7 @@ def main():
         "slope of the kappa* profile at x* = 0": numpy.gradient(limit, x)[len(x) // 2],
         "slope of the variant-1 kappa* profile at x* = 0":
             numpy.gradient(printed, x)[len(x) // 2]})
-    dg.save(fig, "fig19")
+    plotting.save(fig, "fig19")
 
 
 if __name__ == "__main__":

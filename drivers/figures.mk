@@ -5,12 +5,40 @@
 # naming the run.
 AUTO_DRIVER_DEPS := $(MLG_MODEL).exe $(MLG_SHARED) | auto
 
-.PHONY: fig07 fig09 calibrate
-fig07: $(AUTO_DRIVER_DEPS)
-	$(PYTHON) drivers/fig07.py
+# A cached figure <fig> (drivers/results.py): `drivers/<fig>.py --compute`
+# writes $(RUN_ROOT)/<fig>/result.json, rebuilt only when one of its inputs
+# is newer (the driver, the shared layer, the constants, the model); `make
+# <fig>` then draws from it and `make <fig>-plot` redraws from it alone.
+RUN_ROOT := $(abspath $(or $(MLG_RUN_ROOT),build))
+SHARED_LAYER := $(addprefix drivers/,autoglue.py branches.py continuation.py mlgmodel.py \
+                  paths.py results.py spectrum.py)
+COMPUTE_INPUTS := $(SHARED_LAYER) constants/c.mlg $(wildcard constants/runs/c.*) \
+                  $(MLG_MODEL).exe $(MLG_SHARED)
+result = $(RUN_ROOT)/$(1)/result.json
 
-fig09: $(AUTO_DRIVER_DEPS)
-	$(PYTHON) drivers/fig09.py
+# $(call cached_figure,<fig>,<more inputs>[,<driver>,<driver options>]): the
+# driver is drivers/<fig>.py unless named (fig12_v1: fig12, --strut-variant 1).
+# A figure whose driver lists independent parts (`drivers/<fig>.py parts`)
+# gets them as make jobs first (drivers/parts.mk), so that `make -jN` runs
+# them side by side.
+define cached_figure
+$(call result,$(1)): drivers/$(or $(3),$(1)).py $(COMPUTE_INPUTS) $(2) | auto
+	$$(if $$(filter $(1),$$(FIGURES_WITH_PARTS)),$$(MAKE) --no-print-directory \
+	    -f drivers/parts.mk FIGURE=$(1) INPUTS="$$^" \
+	    PARTS="$$$$($$(PYTHON) drivers/$(1).py parts)")
+	$$(PYTHON) drivers/$(or $(3),$(1)).py $(4) --compute
+.PHONY: $(1) $(1)-plot
+$(1): $(call result,$(1))
+	$$(PYTHON) drivers/$(or $(3),$(1)).py $(4) --plot
+$(1)-plot:
+	$$(PYTHON) drivers/$(or $(3),$(1)).py $(4) --plot
+endef
+
+FIGURES_WITH_PARTS := fig11 fig14 fig16
+$(eval $(call cached_figure,fig07))
+$(eval $(call cached_figure,fig09))
+
+.PHONY: calibrate
 
 # Side-stay geometry (angles in degrees): make sidestay RHO=10 MU=10
 .PHONY: sidestay
@@ -28,6 +56,11 @@ REGRESS_FIGURES += sidestay_rho10_mu10
 calibrate: $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/calibrate_c_psi.py
 
+# The figure-suite benchmark (-j1 against -j2, about 45 min; `make bench` names it).
+.PHONY: bench-figures
+bench-figures: setup
+	$(PYTHON) tests/bench/bench_figures.py
+
 FIGURES += fig07 fig09
 REGRESS_FIGURES += fig07 fig09
 REGRESS_QUICK += fig07 fig09
@@ -36,17 +69,15 @@ TEST_PROGRAMS += tests/test_auto_plugin.py tests/test_sidestay_drivers.py tests/
 BENCH_PROGRAMS += tests/bench/bench_auto_jacobian.py
 
 # Freeplay figures (y_fp = 1 mm, epsilon = 0.1 y_fp); fig06 needs no AUTO.
-.PHONY: fig06 fig10 fig11 fig12
-fig06: $(MLG_SHARED) | packages
+.PHONY: fig06 fig06-plot
+fig06 fig06-plot: $(MLG_SHARED) | packages
 	$(PYTHON) drivers/fig06.py
 
-fig10 fig11 fig12: $(AUTO_DRIVER_DEPS)
-	$(PYTHON) drivers/$@.py
-
+$(eval $(call cached_figure,fig10))
+$(eval $(call cached_figure,fig11))
+$(eval $(call cached_figure,fig12))
 # Fig. 12 with the printed strut spring (strut variant 1).
-.PHONY: fig12_v1
-fig12_v1: $(AUTO_DRIVER_DEPS)
-	$(PYTHON) drivers/fig12.py --strut-variant 1
+$(eval $(call cached_figure,fig12_v1,,fig12,--strut-variant 1))
 
 FIGURES += fig06 fig10 fig11 fig12 fig12_v1
 REGRESS_FIGURES += fig10 fig12

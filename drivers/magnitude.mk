@@ -1,23 +1,27 @@
 # Freeplay-magnitude figures (sections IV.D-IV.E, Figs. 13-19); included by
-# ../Makefile after figures.mk.  Each target runs on its own (its runs in
-# build/<fig>/, shared code in drivers/magnitude.py; only fig19 needs fig18),
-# so `make -j2 fig13 fig14 ...` runs them side by side.  Each prints a
-# progress line per AUTO run and its numbers (also in build/tables/<fig>.txt).
+# ../Makefile after figures.mk.  Each computes on its own (its runs in
+# build/<fig>/, shared code in drivers/magnitude.py), except that Fig. 17
+# draws Fig. 16's curves and Fig. 19 Fig. 18's kappa* (from their cached
+# results), so `make -j2 fig13 fig14 ...` runs them side by side.  Each prints
+# a progress line per AUTO run and its numbers (also in build/tables/<fig>.txt).
 MAGNITUDE_FIGURES := fig13 fig14 fig15 fig16 fig17 fig18 fig19
-.PHONY: $(MAGNITUDE_FIGURES)
-$(MAGNITUDE_FIGURES): %: $(AUTO_DRIVER_DEPS)
-	$(PYTHON) drivers/$*.py
-
+$(eval $(call cached_figure,fig13,drivers/magnitude.py))
+$(eval $(call cached_figure,fig14,drivers/magnitude.py))
+$(eval $(call cached_figure,fig16,drivers/magnitude.py))
+$(eval $(call cached_figure,fig17,drivers/magnitude.py $(call result,fig16)))
+$(eval $(call cached_figure,fig18,drivers/magnitude.py))
 # Fig. 18 with the printed strut spring (strut variant 1).
-.PHONY: fig18_v1
-fig18_v1: $(AUTO_DRIVER_DEPS)
-	$(PYTHON) drivers/fig18.py --strut-variant 1
+$(eval $(call cached_figure,fig18_v1,drivers/magnitude.py,fig18,--strut-variant 1))
 
-# Fig. 19 draws the kappa* that Fig. 18 computes for both strut variants
-# (build/figures/fig18.json, fig18_v1.json).
-fig19: fig18 fig18_v1
+# Eq. (15) only (fig15), and the profiles of both Fig. 18 readings' kappa*
+# (fig19): no cache.
+.PHONY: fig15 fig15-plot fig19 fig19-plot
+fig15 fig15-plot: $(AUTO_DRIVER_DEPS)
+	$(PYTHON) drivers/fig15.py
+fig19 fig19-plot: $(call result,fig18) $(call result,fig18_v1) $(MLG_SHARED)
+	$(PYTHON) drivers/fig19.py
 
 FIGURES += $(MAGNITUDE_FIGURES) fig18_v1
-TEST_PROGRAMS += tests/test_magnitude.py
+TEST_PROGRAMS += tests/test_magnitude.py tests/test_driver_layer.py
 # Cheap, stable AUTO runs (about 2 min each) with reference diagrams.
-REGRESS_FIGURES += fig13 fig17
+REGRESS_FIGURES += fig13

@@ -12,17 +12,25 @@ eps_abs = 0), "fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).
 Everything is at F* = 1 unless Fstar is passed.
 """
 import functools
+import os
 
 import numpy
 
 import autoglue
-import diagrams as dg
+import branches
+import continuation as ct
 import mlgmodel
+import paths
+import plotting
+import results
+import spectrum
 
 SCALINGS = {"ratio": {"eps_abs": 0.0, "eps_rel": 0.1},
             "fixed": {"eps_abs": 0.1, "eps_rel": 0.0}}
 EPSILON = 0.1        # eps/y_fp ("ratio") or eps in mm ("fixed")
 FSTAR = 1.0
+FIG13_FREEPLAYS = (0.2, 0.5, 1.0, 2.0)                 # y_fp [mm], "ratio"
+FIG14_FREEPLAYS = (0.05, 0.098, 0.11, 0.15, 0.35, 1.0)  # y_fp [mm], "fixed"
 V_MIN, V_MAX = 0.5, 200.0    # V = 0 is degenerate (tyre states undetermined)
 V_LIMIT = 120.0              # the speed limit of section IV.E
 V_ORBITS = (15.0, 50.0, 80.0, 110.0)
@@ -46,74 +54,15 @@ def progress(figure, text):
     print(f"{figure}: {text}", flush=True)
 
 
-def labelled(branch, kind):
-    """[(index, label)] of the special points of one type on one branch."""
-    found = []
-    for index in branch.labels.getIndices():
-        info = branch.labels[index].get(kind)
-        if info and "LAB" in info:
-            found.append((index, info["LAB"]))
-    return found
-
-
-class Diagram:
-    """Straight rolling and its periodic branches in V at one y_fp:
-    hopf = [(V, frequency in Hz)] from the eigenvalue scan, branches = the
-    periodic runs (bifDiags), bp = speeds where a real eigenvalue crosses."""
-
-    def __init__(self, scaling, yfp, hopf, bp, branches):
-        self.scaling, self.yfp = scaling, yfp
-        self.hopf, self.bp, self.branches = hopf, bp, branches
-
-    def folds(self):
-        """[(run, label, V, psi_amp)] of every fold of cycles, except LP
-        labels within 0.1% of a Hopf speed: AUTO's fold test fires spuriously
-        on the first steps from a Hopf point (seen at y_fp = 0.35, 0.5 and
-        1 mm)."""
-        return [(run, lab, run(lab)["V"], run(lab)["psi_amp"])
-                for run in self.branches for branch in run
-                for _, lab in labelled(branch, "LP")
-                if all(abs(run(lab)["V"] - V) > 1e-3 * V for V, _ in self.hopf)]
-
-
 def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="magnitude"):
-    """Hopf points of straight rolling in V (eigenvalue scan) and the
-    periodic branches born there, with UZ labels at the speeds `uzr`.
-
-    A branch that ends on another Hopf point is stopped HOPF_GAP before it
-    (it would collapse onto straight rolling) and that Hopf point is not
-    started again.  Raises RunError if a branch stops near another Hopf
-    speed without having shrunk onto it."""
-    vals = values(scaling, yfp, Fstar)
-    changes = dg.stability_changes("figures", "V", V_SCAN, **vals)
-    hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]
-    bp = [v for v, kind, _ in changes if kind == "BP"]
-    branches, reached = [], set()
-    for i, (V, freq) in enumerate(hopf):
-        if i in reached:
-            continue
-        hb = dg.hopf_point(rundir, f"{tag}_hb{i}", "figures", "V", V, **vals)
-        others = {j: h for j, (h, _) in enumerate(hopf) if j != i}
-        stops = [V_MIN, V_MAX] + [h + s * HOPF_GAP for h in others.values() for s in (-1, 1)]
-        run = dg.periodic_from(rundir, f"{tag}_po{i}", hb, stop={"V": stops},
-                               UZR={"V": list(uzr)} if uzr else {}, DS=1e-4, DSMAX=DSMAX_V, DSMIN=1e-9, NMX=2000, THU=THU)
-        end = run[0]
-        if numpy.max(numpy.abs(numpy.diff(end["V"]))) > 2 * DSMAX_V:
-            raise autoglue.RunError(f"run {tag}_po{i}: a step jumped by more than "
-                                    f"{2 * DSMAX_V} m/s (switched to another branch)")
-        V_end, amp_end = end["V"][-1], end["psi_amp"][-1]
-        for j, h in others.items():
-            if abs(V_end - h) < 2 * HOPF_GAP:
-                if amp_end > 0.3 * max(end["psi_amp"]) or \
-                        abs(end["freq"][-1] - hopf[j][1]) > 0.05 * hopf[j][1]:
-                    raise autoglue.RunError(
-                        f"run {tag}_po{i}: stopped at V = {V_end:.4f} next to the Hopf point "
-                        f"{h:.4f} without shrinking onto it (psi_amp {amp_end:.3g})")
-                reached.add(j)
-        progress(figure, f"{tag}: {scaling} y_fp = {yfp:g} mm: branch from Hopf V = {V:.4f} "
-                         f"({len(end)} points, ends V = {V_end:.3f})")
-        branches.append(run)
-    return Diagram(scaling, yfp, hopf, bp, branches)
+    """continuation.speed_diagram over V_SCAN at this y_fp (runs
+    <tag>_hb<i>, <tag>_po<i>, i from 0), with UZ labels at the speeds `uzr`
+    and the weighted small first steps the orbits here need."""
+    return ct.speed_diagram(rundir, "figures", values(scaling, yfp, Fstar), V_SCAN,
+                            tag=f"{tag}_", first=0, gap=HOPF_GAP, figure=f"{figure}: {tag}",
+                            about={"scaling": scaling, "yfp": yfp},
+                            UZR={"V": list(uzr)} if uzr else {}, DS=1e-4, DSMAX=DSMAX_V,
+                            DSMIN=1e-9, NMX=2000, THU=THU)
 
 
 def stable_orbits(diagram, V):
@@ -121,8 +70,8 @@ def stable_orbits(diagram, V):
     found = []
     for run in diagram.branches:
         for branch in run:
-            stable = dg.stable_mask(branch)
-            for index, lab in labelled(branch, "UZ"):
+            stable = branches.stable_mask(branch)
+            for index, lab, _ in branches.labelled_points(branch, "UZ"):
                 if abs(branch["V"][index] - V) < 1e-3 and stable[index]:
                     found.append((run, lab))
     return found
@@ -132,42 +81,21 @@ def yfp_thresholds(scaling, V, Fstar=FSTAR):
     """[(y_fp, kind, omega)]: where straight rolling changes stability in y_fp
     at speed V (eigenvalue scan over YFP_MIN..YFP_MAX)."""
     grid = numpy.geomspace(YFP_MIN, YFP_MAX, 241)
-    return dg.stability_changes("figures", "yfp", grid, V=V, Fstar=Fstar, **SCALINGS[scaling])
+    return spectrum.stability_changes("figures", "yfp", grid, V=V, Fstar=Fstar,
+                                      **SCALINGS[scaling])
 
 
 def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude"):
     """A periodic orbit at fixed V continued in y_fp both ways over
-    [YFP_MIN, YFP_MAX].  Where straight rolling has a Hopf point in y_fp the
-    run stops just before it; if the orbit has shrunk onto it (amplitude
-    below 30% of the largest so far, frequency within 5% of the Hopf
-    frequency) it ends there (it would collapse onto straight rolling),
-    otherwise it is continued past it.  Returns
-    (down, up): the lists of runs in each direction, in order."""
+    [YFP_MIN, YFP_MAX], across the Hopf points of straight rolling in y_fp
+    (continuation.follow_orbits; runs stop 0.1% either side of them).
+    Returns (down, up): the lists of runs in each direction, in order."""
     hopf = {y: w / (2 * numpy.pi) for y, kind, w in yfp_thresholds(scaling, V) if kind == "HB"}
-    result = []
-    for direction, ds in (("down", -0.005), ("up", 0.005)):
-        runs, start, left = [], point, list(hopf)
-        while True:
-            stops = [YFP_MIN, YFP_MAX] + [y * (1 + s * 1e-3) for y in left for s in (-1, 1)]
-            run = dg.run(rundir, f"{tag}_{direction}{len(runs)}", "periodic", data=start,
-                         ICP=["yfp", 11] + dg.MEASURES, UZSTOP={"yfp": stops},
-                         DS=ds, DSMAX=1.0, NMX=1000, THU=THU)
-            runs.append(run)
-            end = run[0]
-            y_end, amp_end = end["yfp"][-1], end["psi_amp"][-1]
-            near = [y for y in left if abs(y_end - y) < 2e-3 * y]
-            largest = max(max(r[0]["psi_amp"]) for r in runs)
-            progress(figure, f"{tag}: orbit at V = {V:g} continued {direction} in y_fp to "
-                             f"{y_end:.5f} mm ({len(end)} points)")
-            if not near or (amp_end < 0.3 * largest
-                            and abs(end["freq"][-1] - hopf[near[0]]) < 0.05 * hopf[near[0]]):
-                break
-            progress(figure, f"{tag}: passing the Hopf point y_fp = {near[0]:.5f} mm "
-                             f"(orbit amplitude {amp_end:.3g} rad there)")
-            left.remove(near[0])
-            start = run(labelled(end, "UZ")[-1][1])
-        result.append(runs)
-    return tuple(result)
+    return tuple(ct.follow_orbits(rundir, lambda n, d=direction: f"{tag}_{d}{n}", point, "yfp",
+                                  hopf, lambda y: 1e-3 * y, (YFP_MIN, YFP_MAX),
+                                  figure=f"{figure}: {tag}", DS=ds, DSMAX=1.0, NMX=1000,
+                                  THU=THU)[0]
+                 for direction, ds in (("down", -0.005), ("up", 0.005)))
 
 
 def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="magnitude"):
@@ -179,11 +107,11 @@ def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="ma
     curves = []
     for yfp in seeds:
         vals = values(scaling, yfp, Fstar)
-        for V, kind, _ in dg.stability_changes("figures", "V", V_SCAN, **vals):
-            if kind != "HB" or any(_on_curve(c, yfp, V) for c in curves):
+        for V, _ in spectrum.hopf_scan("figures", "V", V_SCAN, **vals):
+            if any(_on_curve(c, yfp, V) for c in curves):
                 continue
             name = f"{tag}_y{yfp:g}_V{V:.0f}"
-            hb = dg.hopf_point(rundir, f"{name}_hb", "figures", "V", V, **vals)
+            hb = ct.hopf_point(rundir, f"{name}_hb", "figures", "V", V, **vals)
             pair = _hopf_runs(rundir, name, hb, figure)
             progress(figure, f"{name}: Hopf curve through (y_fp, V) = ({yfp:g}, {V:.3f}), "
                              f"{sum(len(r[0]) for r in pair)} points")
@@ -201,10 +129,9 @@ def _hopf_runs(rundir, name, hb, figure):
     it): 0.005 mm in y_fp, 0.1 m/s in V."""
     for order, step in ((["yfp", "V"], 0.005), (["V", "yfp"], 0.1)):
         try:
-            return tuple(dg.run(rundir, f"{name}_{d}", "hopf_curve", data=hb,
-                                ICP=order + dg.MEASURES + [11], DS=sign * step / 5,
-                                DSMAX=step, NMX=4000,
-                                UZSTOP={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]})
+            return tuple(ct.hopf_curve(rundir, f"{name}_{d}", hb, order, with_period=True,
+                                       stop={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]},
+                                       DS=sign * step / 5, DSMAX=step, NMX=4000)
                          for d, sign in (("a", 1), ("b", -1)))
         except autoglue.RunError as exc:
             progress(figure, f"{name}: Hopf curve with ICP {order} failed ({exc.brief})"
@@ -225,17 +152,12 @@ def _on_curve(curve, yfp, V):
 
 def fold_curve(rundir, tag, run, label, figure="magnitude"):
     """The fold of cycles at `label` of the periodic run `run` (in V)
-    continued in (y_fp, V) both ways, y_fp up to FOLD_YFP_MAX.  As
-    diagrams.fold_curve (AUTO 0.9.2 first only generates the starting data,
-    ending in EP), but with the arclength weights THU on the starting run
-    too: without them it stops (MX) on the fold of y_fp = 0.15 mm."""
-    icp = dg.fold_icp(("yfp", "V"))
-    stop = {"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, FOLD_YFP_MAX]}
-    start = dg.run(rundir, f"{tag}_start", "periodic", data=run(label), ISW=2, ICP=icp,
-                   THU=THU)
-    pair = tuple(dg.run(rundir, f"{tag}_{d}", "periodic", data=start("EP1"), ISW=2, ICP=icp,
-                        DS=ds, DSMAX=0.5, NMX=1000, UZSTOP=stop, THU=THU)
-                 for d, ds in (("a", 0.01), ("b", -0.01)))
+    continued in (y_fp, V) both ways, y_fp up to FOLD_YFP_MAX
+    (continuation.fold_curve), with the arclength weights THU on the starting
+    run too: without them it stops (MX) on the fold of y_fp = 0.15 mm."""
+    pair = ct.fold_curve(rundir, tag, run(label), ("yfp", "V"), both_ways=True, start={},
+                         stop={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, FOLD_YFP_MAX]},
+                         DS=0.01, DSMAX=0.5, NMX=1000, THU=THU)
     progress(figure, f"{tag}: fold-of-cycles curve, {sum(len(r[0]) for r in pair)} points")
     return pair
 
@@ -281,28 +203,36 @@ def orbit_curve(runs, measure):
     down, up = runs
 
     def stable(pieces):
-        return numpy.concatenate([dg.stable_mask(r[0])[1:] for r in pieces])
+        return numpy.concatenate([branches.stable_mask(r[0])[1:] for r in pieces])
     first = up[0][0]
     ys = numpy.r_[joined(down, "yfp")[::-1], first["yfp"][0], joined(up, "yfp")]
     ms = numpy.r_[joined(down, measure)[::-1], first[measure][0], joined(up, measure)]
-    st = numpy.r_[stable(down)[::-1], dg.stable_mask(first)[0], stable(up)]
+    st = numpy.r_[stable(down)[::-1], branches.stable_mask(first)[0], stable(up)]
     return ys, ms, st
 
 
 ORBIT_COLOURS = dict(zip(V_ORBITS, ("tab:blue", "tab:orange", "tab:green", "tab:purple")))
 
 
-def plot_orbits(ax_amp, ax_freq, orbits):
-    """Torsional amplitude [deg] and frequency [Hz] against y_fp of the orbits
-    of orbits_in_yfp (solid stable, dashed unstable)."""
+def stored_orbits(orbits):
+    """The orbits of orbits_in_yfp for the cache: [(V, {"yfp", "psi_amp",
+    "freq", "stable"})], each joined by orbit_curve."""
+    out = []
     for V, runs in orbits.items():
-        for ax, measure, scale in ((ax_amp, "psi_amp", numpy.degrees(1.0)), (ax_freq, "freq", 1.0)):
-            ys, ms, st = orbit_curve(runs, measure)
-            label = f"V = {V:g} m/s"
-            for sl in _runs_of(st):
-                ax.plot(ys[sl], ms[sl] * scale, color=ORBIT_COLOURS[V],
-                        ls="-" if st[sl.start] else "--", label=label)
-                label = None
+        ys, amp, stable = orbit_curve(runs, "psi_amp")
+        out.append((V, {"yfp": ys, "psi_amp": amp, "freq": orbit_curve(runs, "freq")[1],
+                        "stable": stable}))
+    return out
+
+
+def plot_orbits(ax_amp, ax_freq, orbits):
+    """Torsional amplitude [deg] and frequency [Hz] against y_fp of stored
+    orbits (stored_orbits; solid stable, dashed unstable)."""
+    for V, curve in orbits:
+        for ax, measure, scale in ((ax_amp, "psi_amp", plotting.DEG), (ax_freq, "freq", 1.0)):
+            plotting.plot_stability(ax, curve["yfp"], numpy.asarray(curve[measure]) * scale,
+                                    curve["stable"], label=f"V = {V:g} m/s",
+                                    color=ORBIT_COLOURS[V], lw=1.5)
     ax_amp.set_ylabel(r"$\psi$ amplitude [deg]")
     ax_freq.set_ylabel("frequency [Hz]")
     for ax in (ax_amp, ax_freq):
@@ -310,33 +240,74 @@ def plot_orbits(ax_amp, ax_freq, orbits):
     ax_amp.legend(fontsize=7)
 
 
-def _runs_of(mask):
-    """Slices of equal values of a boolean array, overlapping by one point."""
-    out, start = [], 0
-    for i in range(1, len(mask) + 1):
-        if i == len(mask) or mask[i] != mask[start]:
-            out.append(slice(start, min(i + 1, len(mask))))
-            start = i
+COLUMNS = ("V", "psi_amp", "freq")
+
+
+def stored_diagram(diagram):
+    """A Diagram in V for the cache: y_fp, scaling, Hopf points, folds
+    (V, psi_amp), the orbit branches (results.stored) and per orbit run its
+    first and smallest V (a turn AUTO may not label LP)."""
+    return {"yfp": diagram.yfp, "scaling": diagram.scaling, "hopf": diagram.hopf,
+            "folds": [(V, amp) for _, _, V, amp in diagram.folds()],
+            "branches": [b for run in diagram.branches for b in results.stored(run, COLUMNS)],
+            "turns": [(run[0]["V"][0], min(run[0]["V"])) for run in diagram.branches]}
+
+
+def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_ORBITS,
+                 separate=True):
+    """The parts of a figure made of diagrams in V (results.Parts): one per
+    y_fp, named <prefix>y<y_fp>, computing the stored diagram (runs
+    <prefix>y<y_fp>_hb<i>, _po<i>, in the part's own run directory
+    $MLG_RUN_ROOT/<figure>/<part>/, or with separate=False all in
+    $MLG_RUN_ROOT/<figure>/); the one at y_fp = orbits_at (named ..._orbits)
+    also continues its stable orbits at V_ORBITS in y_fp."""
+    def job(y, name):
+        def run():
+            rundir = paths.rundir(os.path.join(figure, name) if separate else figure)
+            d = diagram_in_V(rundir, f"{prefix}y{y:g}", scaling, y, uzr=uzr, figure=figure)
+            out = {"diagram": stored_diagram(d)}
+            if y == orbits_at:
+                out["orbits"] = stored_orbits(orbits_in_yfp(rundir, d, figure))
+            return out
+        return run
+    names = {y: f"{prefix}y{y:g}" + ("_orbits" if y == orbits_at else "") for y in freeplays}
+    return {names[y]: job(y, names[y]) for y in freeplays}
+
+
+def diagrams_of(done, prefix=""):
+    """(stored diagrams in order, stored orbits or None) from the computed
+    parts {name: data} of diagram_jobs(..., prefix)."""
+    done = [data for name, data in done.items() if name.startswith(prefix + "y")]
+    orbits = [p["orbits"] for p in done if "orbits" in p]
+    return [p["diagram"] for p in done], (orbits[0] if orbits else None)
+
+
+def diagram_numbers(diagrams, prefix=""):
+    """{quantity: value}: the Hopf and fold speeds of stored diagrams, as
+    "<prefix>y_fp = <y>: H<k> [m/s]" and "...: S<k> [m/s]"."""
+    out = {}
+    for d in diagrams:
+        for k, (V, _) in enumerate(d["hopf"]):
+            out[f"{prefix}y_fp = {d['yfp']:g}: H{k + 1} [m/s]"] = V
+        for k, (V, _) in enumerate(d["folds"]):
+            out[f"{prefix}y_fp = {d['yfp']:g}: S{k + 1} [m/s]"] = V
     return out
 
 
 def plot_diagram(ax_amp, diagram, colour, label):
-    """psi amplitude [deg] against V of a Diagram: its Hopf points on the
-    axis, the periodic branches (solid stable, dashed unstable; in `colour`,
-    else green/red) and their folds."""
-    deg = numpy.degrees(1.0)
+    """psi amplitude [deg] against V of a stored Diagram (stored_diagram):
+    its Hopf points on the axis, the periodic branches (solid stable, dashed
+    unstable; in `colour`, else green/red) and their folds."""
+    deg = plotting.DEG
     style = {"color": colour} if colour else {}
-    dg.plot_branch(ax_amp, _merge(diagram.branches), "V", "psi_amp", scale=deg, **style)
+    plotting.plot_branch(ax_amp, results.loaded(diagram["branches"]), "V", "psi_amp", scale=deg,
+                         **style)
     if label:
         ax_amp.plot([], [], color=colour, label=label)
-    for V, _ in diagram.hopf:
+    for V, _ in diagram["hopf"]:
         ax_amp.plot(V, 0.0, "o", color=colour or "k", ms=3)
-    for _, _, V, amp in diagram.folds():
+    for V, amp in diagram["folds"]:
         ax_amp.plot(V, amp * deg, "s", color=colour or "k", ms=3)
-
-
-def _merge(runs):
-    return [branch for run in runs for branch in run]
 
 
 # Section IV.E: where straight rolling is stable for all V up to V_LIMIT.
@@ -367,36 +338,14 @@ def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
     u = straight_rolling(parameter_set, Fstar, tuple(sorted(model.items())))
     model = mlgmodel.Model(parameter_set, **values(scaling, yfp, Fstar, V=V), **model)
     model.check()
-    eig = numpy.linalg.eigvals(numpy.array(model.jacobian(u)))
-    freq = numpy.abs(eig.imag) / (2 * numpy.pi)
-    out = {"any": float(eig.real.max())}
-    for band, (lo, hi) in BANDS.items():
-        inside = (freq > lo) & (freq <= hi)
-        out[band] = float(eig.real[inside].max()) if inside.any() else -numpy.inf
-    return out
+    return spectrum.growth(model, BANDS, u)
 
 
 def crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed", first_only=False, **model):
     """y_fp values where the growth of `band` changes sign along `grid`
     (bisection to 1e-10 mm); with first_only, only the first of them."""
-    def g(y):
-        return growth(Fstar, y, V, scaling, **model)[band]
-    found, previous, g_prev = [], grid[0], g(grid[0])
-    for y in grid[1:]:
-        g_y = g(y)
-        if (g_y > 0) != (g_prev > 0):
-            lo, hi = previous, y
-            while hi - lo > 1e-10:
-                mid = 0.5 * (lo + hi)
-                if (g(mid) > 0) == (g_prev > 0):
-                    lo = mid
-                else:
-                    hi = mid
-            found.append(0.5 * (lo + hi))
-            if first_only:
-                break
-        previous, g_prev = y, g_y
-    return found
+    return spectrum.sign_changes(lambda y: growth(Fstar, y, V, scaling, **model)[band], grid,
+                                 tol=1e-10, first_only=first_only)
 
 
 def extreme_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN, V_LIMIT, 25),
@@ -429,13 +378,13 @@ def window_point_curve(rundir, tag, yfp, Fstar, stop, dsmax=0.02, **model):
     (variant 1) the curve turns twice in F* while eta crosses the 1e-5 m wide
     stage switch (F* 0.63-0.70); AUTO's default 1e-5 stops it (MX) there."""
     vals = {"Fstar": Fstar, "V": V_LIMIT, **SCALINGS["fixed"], **model}
-    hb = dg.hopf_point(rundir, f"{tag}_hb", "figures", "yfp", yfp, width=0.05 * yfp, **vals)
+    hb = ct.hopf_point(rundir, f"{tag}_hb", "figures", "yfp", yfp, width=0.05 * yfp, **vals)
     out = {}
     for direction, ds in (("up", 0.01), ("down", -0.01)):
         try:
-            out[direction] = dg.run(rundir, f"{tag}_{direction}", "hopf_curve", data=hb,
-                                    ICP=["Fstar", "yfp"] + dg.MEASURES + [11], DS=ds,
-                                    DSMAX=dsmax, DSMIN=1e-10, UZSTOP={"Fstar": list(stop)})
+            out[direction] = ct.hopf_curve(rundir, f"{tag}_{direction}", hb, ("Fstar", "yfp"),
+                                           stop={"Fstar": list(stop)}, with_period=True, DS=ds,
+                                           DSMAX=dsmax, DSMIN=1e-10)
         except autoglue.RunError as exc:
             out[direction] = exc
     return out
@@ -501,3 +450,15 @@ def curve_points(curve, x, y):
     a, b = (run[0] for run in curve)
     return (numpy.r_[numpy.asarray(b[x])[::-1], numpy.asarray(a[x])],
             numpy.r_[numpy.asarray(b[y])[::-1], numpy.asarray(a[y])])
+
+
+def stored_curves(curves, columns=("yfp", "V")):
+    """Curves (pairs of runs) for the cache: [{column: polyline}]
+    (curve_points); "freq" is 1/T along a curve with the period printed."""
+    out = []
+    for curve in curves:
+        line = {c: curve_points(curve, "yfp", c)[1] for c in columns if c != "freq"}
+        if "freq" in columns:
+            line["freq"] = 1.0 / curve_points(curve, "yfp", "T")[1]
+        out.append(line)
+    return out

@@ -7,7 +7,7 @@ ours_* map a quantity (e.g. "H1 [m/s]") to a value; quantities the paper
 does not print are listed with "-" in its column."""
 import os
 
-import autoglue
+import paths
 
 # Section IV of the paper (the `figures` set is calibrated on the first one).
 PAPER = {
@@ -37,9 +37,10 @@ def report(figure, ours, ours_table=None):
     widths = [max(len(row[k]) for row in rows) for k in range(5)]
     lines = ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in rows]
     text = f"{figure}: paper vs ours (rel. error of the figures set)\n" + "\n".join(lines) + "\n"
-    directory = os.path.join(autoglue.RUN_ROOT, "tables")
-    os.makedirs(directory, exist_ok=True)
-    with open(os.path.join(directory, f"{figure}.txt"), "w") as out:
+    os.makedirs(paths.TABLES_DIR, exist_ok=True)
+    path = os.path.join(paths.TABLES_DIR, f"{figure}.txt")
+    with open(f"{path}.{os.getpid()}.part", "w") as out:
         out.write(text)
+    os.replace(f"{path}.{os.getpid()}.part", path)
     print(text, end="")
     return text

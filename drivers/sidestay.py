@@ -19,7 +19,9 @@ import matplotlib.pyplot as plt
 import numpy
 
 import autoglue
-import diagrams as dg
+import continuation as ct
+import paths
+import plotting
 
 V_START, V_STOP = 0.5, 600.0      # at V = 0 the tyre states are undetermined (docs 4.20)
 FSTAR_RANGE = [0.1, 3.5]
@@ -43,18 +45,15 @@ def case_values(rho_deg, mu_deg, eom_terms):
 
 def starts(rho_deg, mu_deg, eom_terms):
     """{case tag: Start}; validates every parameter set first (ValueError)."""
-    return {tag: dg.Start("figures", V=V_START, **values)
+    return {tag: ct.Start("figures", V=V_START, **values)
             for tag, values in case_values(rho_deg, mu_deg, eom_terms).items()}
 
 
 def hopf_points(rundir, tag, values):
-    """AUTO's HB points of straight rolling in V in [V_START, V_STOP], each
-    found by the library's eigenvalue scan (0.2 m/s grid), located by AUTO."""
-    grid = numpy.linspace(V_START, V_STOP, 3000)
-    speeds = [v for v, kind, _ in dg.stability_changes("figures", "V", grid, **values)
-              if kind == "HB"]
-    return [dg.hopf_point(rundir, f"hb_{tag}_{k}", "figures", "V", v, **values)
-            for k, v in enumerate(speeds, 1)]
+    """AUTO's HB points of straight rolling in V in [V_START, V_STOP]
+    (continuation.hopf_points on a 0.2 m/s grid)."""
+    return ct.hopf_points(rundir, f"hb_{tag}_", "figures", "V",
+                          numpy.linspace(V_START, V_STOP, 3000), **values)
 
 
 def attempt(name, run, notes):
@@ -75,20 +74,20 @@ def compute(rho_deg, mu_deg, eom_terms):
     """{case tag: (equilibria, [HB points], [orbits], [Hopf curves], [notes])}."""
     where = starts(rho_deg, mu_deg, eom_terms)
     values = case_values(rho_deg, mu_deg, eom_terms)
-    rundir = dg.rundir(name_of(rho_deg, mu_deg))
+    rundir = paths.rundir(name_of(rho_deg, mu_deg))
     result = {}
     for _, tag, _ in CASES:
-        eq = dg.equilibria(rundir, f"eq_{tag}", where[tag], stop={"V": V_STOP})
+        eq = ct.equilibria(rundir, f"eq_{tag}", where[tag], stop={"V": V_STOP})
         hopf = hopf_points(rundir, tag, values[tag])
         orbits, curves, notes = [], [], []
         for k, point in enumerate(hopf, 1):
             name = f"po_{tag}_{k}"
-            orbits.append(attempt(name, lambda: dg.periodic_from(
+            orbits.append(attempt(name, lambda: ct.periodic_from(
                 rundir, name, point, stop={"V": [V_START, V_STOP], "psi_amp": PSI_AMP_STOP},
                 allow_mx=True, **ORBIT_STEPS[tag]), notes))
             for direction, ds in (("up", 0.01), ("down", -0.01)):
                 name = f"hopf_{tag}_{k}_{direction}"
-                curves.append(attempt(name, lambda: dg.hopf_curve(
+                curves.append(attempt(name, lambda: ct.hopf_curve(
                     rundir, name, point, DS=ds, allow_mx=True,
                     stop={"Fstar": FSTAR_RANGE, "V": [V_START, V_STOP]}), notes))
         result[tag] = (eq, hopf, [o for o in orbits if o is not None],
@@ -103,9 +102,9 @@ def plot(name, title, result, reference):
     for ax, (label, tag, _) in zip(axes[:2], CASES):
         for data, style in ((reference, {"color": "0.6", "lw": 1.0}), (result, {})):
             eq, hopf, orbits, _, _ = data[tag]
-            dg.plot_branch(ax, eq, "V", "psi_amp", scale=deg, **style)
+            plotting.plot_branch(ax, eq, "V", "psi_amp", scale=deg, **style)
             for orbit in orbits:
-                dg.plot_branch(ax, orbit, "V", "psi_amp", scale=deg, **style)
+                plotting.plot_branch(ax, orbit, "V", "psi_amp", scale=deg, **style)
             for point in hopf:
                 ax.plot(point["V"], 0.0, "o", ms=4, color=style.get("color", "k"))
         ax.set_title(f"F* = 1, {label}")
@@ -129,7 +128,7 @@ def plot(name, title, result, reference):
     ax.set_title("Hopf curves (dashed: rho = mu = 0)")
     ax.legend(fontsize=7, loc="upper right")
     fig.suptitle(f"{title}; grey / dashed: rho = mu = 0; solid green stable, dashed red unstable")
-    dg.save(fig, name)
+    plotting.save(fig, name)
 
 
 def report(tag_label, result):

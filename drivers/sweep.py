@@ -23,10 +23,10 @@ import shlex
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-# as autoglue.RUN_ROOT, without importing AUTO (make reads `targets` at parse time)
-SWEEP_DIR = os.path.join(os.path.abspath(os.environ.get("MLG_RUN_ROOT",
-                                                        os.path.join(ROOT, "build"))), "sweep")
+import paths
+
+ROOT = paths.ROOT
+SWEEP_DIR = os.path.join(paths.RUN_ROOT, "sweep")
 DEFAULT_GRID = "-10,0,10"
 V_START, V_STOP = 0.5, 600.0
 
@@ -95,17 +95,14 @@ def check(points):
 
 
 def run_point(name):
+    import continuation as ct
     import numpy
-    import diagrams as dg
     rho, mu = parse_point(name)
     started = time.monotonic()
     values = parameters(rho, mu)
-    dg.Start("figures", V=V_START, **values)                 # validates first
-    grid = numpy.linspace(V_START, V_STOP, 3000)
-    first = [v for v, kind, _ in dg.stability_changes("figures", "V", grid, **values)
-             if kind == "HB"][:1]
-    hopf = [dg.hopf_point(dg.rundir(os.path.join("sweep", name)), "hb1", "figures", "V", v,
-                          **values) for v in first]
+    ct.Start("figures", V=V_START, **values)                 # validates first
+    hopf = ct.hopf_points(paths.rundir(os.path.join("sweep", name)), "hb", "figures", "V",
+                          numpy.linspace(V_START, V_STOP, 3000), limit=1, **values)
     result = {"rho_deg": rho, "mu_deg": mu, "critical_V": hopf[0]["V"] if hopf else None,
               "seconds": round(time.monotonic() - started, 2)}
     with open(result_path(rho, mu), "w") as out:
@@ -117,7 +114,7 @@ def run_point(name):
 def summary(points):
     import matplotlib.pyplot as plt
     import numpy
-    import diagrams as dg
+    import plotting
     rhos = sorted({rho for rho, _ in points})
     mus = sorted({mu for _, mu in points})
     speed = numpy.full((len(mus), len(rhos)), numpy.nan)
@@ -142,7 +139,7 @@ def summary(points):
     fig.colorbar(mesh, label="critical shimmy speed [m/s]")
     ax.set_title("First Hopf point of straight rolling\n"
                  "zero freeplay, F* = 1, `figures` set, eom_terms = 2")
-    dg.save(fig, "sweep_critical_speed")
+    plotting.save(fig, "sweep_critical_speed")
 
 
 def main():

@@ -14,9 +14,13 @@ import textwrap
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 import autoglue  # noqa: E402
-import diagrams as dg  # noqa: E402
+import branches  # noqa: E402
+import continuation as ct  # noqa: E402
 import mlgmodel  # noqa: E402
-from check import approx, check, check_close  # noqa: E402
+import paths  # noqa: E402
+import simulator  # noqa: E402
+import spectrum  # noqa: E402
+from check import check, check_close  # noqa: E402
 
 RUNDIR = os.path.join(autoglue.BUILD, "tests", "auto-plugin")
 
@@ -24,7 +28,7 @@ RUNDIR = os.path.join(autoglue.BUILD, "tests", "auto-plugin")
 def constants_agree():
     """constants/c.mlg names every PAR slot of the library, the period and the
     measures of MLG_MEASURES; its unames follow the library's states."""
-    c = autoglue.auto.parseC.parseC(dg.CONSTANTS)
+    c = autoglue.auto.parseC.parseC(ct.CONSTANTS)
     parnames = {int(k): v for k, v in c["parnames"]}
     unames = {int(k): v for k, v in c["unames"]}
     ours = {k + 1: name for k, name in enumerate(mlgmodel.PARNAMES) if name is not None}
@@ -36,8 +40,8 @@ def constants_agree():
     extra = {k: v for k, v in parnames.items() if k not in ours}
     check("constants: c.mlg parnames names nothing the library does not", not extra,
           f"unknown to the library: {extra}")
-    check("constants: drivers use the library's measures", dg.MEASURES == mlgmodel.MEASURES,
-          f"diagrams {dg.MEASURES}, library {mlgmodel.MEASURES}")
+    check("constants: drivers use the library's measures", ct.MEASURES == mlgmodel.MEASURES,
+          f"continuation {ct.MEASURES}, library {mlgmodel.MEASURES}")
     check("constants: unames match the library's state order",
           [unames.get(i + 1) for i in range(mlgmodel.NX)] == mlgmodel.UNAMES,
           f"c.mlg {unames}, library {mlgmodel.UNAMES}")
@@ -93,8 +97,8 @@ def clui(name, bad, ds=1.0, files=None):
     for filename, text in (files or {}).items():
         with open(os.path.join(rundir, filename), "w") as out:
             out.write(text)
-    code = CLUI_RUN.format(drivers=os.path.join(dg.ROOT, "drivers"), model=dg.MODEL,
-                           constants=dg.CONSTANTS, bad=bad, ds=ds)
+    code = CLUI_RUN.format(drivers=os.path.join(paths.ROOT, "drivers"), model=ct.MODEL,
+                           constants=ct.CONSTANTS, bad=bad, ds=ds)
     proc = subprocess.run([sys.executable, "-c", code], cwd=rundir, capture_output=True,
                           text=True)
     lines = (proc.stdout + proc.stderr).splitlines()
@@ -126,9 +130,9 @@ def bad_starts_stop():
     check("CLUI: ... and without a message", status == 0 and not messages,
           f"exit status {status}, model lines {messages}")
     try:
-        autoglue.run(os.path.join(RUNDIR, "autoglue-bad"), "bad", constants=dg.CONSTANTS,
-                     e=dg.MODEL, PAR=dict(dg.Start("figures").PAR, eom_terms=5),
-                     U=dg.Start("figures").U)
+        autoglue.run(os.path.join(RUNDIR, "autoglue-bad"), "bad", constants=ct.CONSTANTS,
+                     e=ct.MODEL, PAR=dict(ct.Start("figures").PAR, eom_terms=5),
+                     U=ct.Start("figures").U)
         check("autoglue: invalid starting parameters raise RunError", False, "no error")
     except autoglue.RunError as exc:
         check("autoglue: invalid starting parameters raise RunError", True, str(exc))
@@ -138,10 +142,10 @@ def constants_reach_auto():
     """A constant set from Python reaches AUTO's FUNC: with k_relax = 0.9
     AUTO's Hopf point at F* = 1 is the library's eigenvalue-scan value
     (360.56 m/s; 346.10 with the default 0.7)."""
-    scan = [v for v, kind, _ in dg.stability_changes("figures", "V", [300.0, 340.0, 380.0],
+    scan = [v for v, kind, _ in spectrum.stability_changes("figures", "V", [300.0, 340.0, 380.0],
                                                      Fstar=1.0, k_relax=0.9) if kind == "HB"]
-    start = dg.Start("figures", Fstar=1.0, V=0.0, k_relax=0.9)
-    hb = dg.equilibria(RUNDIR, "eq_krelax", start, stop={"V": 400.0}, expect=["HB"])("HB1")
+    start = ct.Start("figures", Fstar=1.0, V=0.0, k_relax=0.9)
+    hb = ct.equilibria(RUNDIR, "eq_krelax", start, stop={"V": 400.0}, expect=["HB"])("HB1")
     print(f"# k_relax = 0.9: AUTO's Hopf at {hb['V']:.4f} m/s, eigenvalue scan {scan}")
     check("constants: k_relax = 0.9 reaches AUTO (one Hopf crossing in the scan)", len(scan) == 1,
           f"scan {scan}")
@@ -160,10 +164,10 @@ def constants_reach_auto():
 
 
 def hopf_and_jacobian_parity():
-    start = dg.Start("figures", Fstar=1.0, V=0.0)
+    start = ct.Start("figures", Fstar=1.0, V=0.0)
     eq = {}
     for jac in (1, 0):
-        eq[jac] = dg.equilibria(RUNDIR, f"eq_jac{jac}", start, stop={"V": 400.0},
+        eq[jac] = ct.equilibria(RUNDIR, f"eq_jac{jac}", start, stop={"V": 400.0},
                                 expect=["HB"], JAC=jac)
     hb1, hb0 = eq[1]("HB1"), eq[0]("HB1")
     check_close("figures set: Hopf at F* = 1 is the paper's 346.1 m/s", hb1["V"], 346.1,
@@ -172,7 +176,7 @@ def hopf_and_jacobian_parity():
 
     po = {}
     for jac in (1, 0):
-        po[jac] = dg.periodic_from(RUNDIR, f"po_jac{jac}", eq[jac]("HB1"), stop={"V": 370.0},
+        po[jac] = ct.periodic_from(RUNDIR, f"po_jac{jac}", eq[jac]("HB1"), stop={"V": 370.0},
                                    UZR={"V": [355.0, 365.0]}, expect=["UZ"], JAC=jac,
                                    NMX=200)
     for label in ("UZ1", "UZ2"):
@@ -182,7 +186,7 @@ def hopf_and_jacobian_parity():
                         rel=1e-6)
 
     branch = po[1][0]
-    stable = dg.stable_mask(branch)
+    stable = branches.stable_mask(branch)
     beyond = [v > hb1["V"] for v in branch["V"][1:]]
     check("supercritical Hopf: orbits exist past the Hopf speed, where straight rolling is "
           "unstable", all(beyond), f"V along the branch {list(branch['V'][:5])}")
@@ -192,16 +196,13 @@ def hopf_and_jacobian_parity():
 
 def orbit_matches_simulation():
     """Fig. 7 orbit vs Fig. 8 simulation at V = 300 m/s, F* = 0.2 (settled)."""
-    start = dg.Start("figures", Fstar=0.2, V=0.0)
-    eq = dg.equilibria(RUNDIR, "eq_F0.2", start, stop={"V": 400.0}, expect=["HB"])
-    orbit = dg.periodic_from(RUNDIR, "po_F0.2", eq("HB1"), stop={"V": 300.0},
+    start = ct.Start("figures", Fstar=0.2, V=0.0)
+    eq = ct.equilibria(RUNDIR, "eq_F0.2", start, stop={"V": 400.0}, expect=["HB"])
+    orbit = ct.periodic_from(RUNDIR, "po_F0.2", eq("HB1"), stop={"V": 300.0},
                              expect=["UZ"])("UZ1")
-    simulate = os.path.join(autoglue.BUILD, "bin", "mlg_simulate")
-    out = subprocess.run([simulate, "--V", "300", "--Fstar", "0.2", "--t-end", "60",
-                          "--dt-out", "2e-4", "--out", os.path.join(RUNDIR, "sim.csv")],
-                         capture_output=True, text=True, check=True).stdout
-    summary = dict(line.split(None, 1) for line in out.splitlines() if line.strip())
-    sim_psi, sim_freq = float(summary["psi_amplitude_rad"]), float(summary["frequency_hz"])
+    summary = simulator.simulate(os.path.join(RUNDIR, "sim.csv"), "--V", 300, "--Fstar", 0.2,
+                                 "--t-end", 60, "--dt-out", 2e-4)
+    sim_psi, sim_freq = summary["psi_amplitude_rad"], summary["frequency_hz"]
     print(f"# V = 300, F* = 0.2: AUTO psi amplitude {orbit['psi_amp']:.6e} rad, "
           f"simulation (last second of 60 s) {sim_psi:.6e} rad; "
           f"frequency {orbit['freq']:.6f} vs {sim_freq:.6f} Hz")
@@ -211,7 +212,7 @@ def orbit_matches_simulation():
 
 def invalid_parameters_rejected():
     try:
-        dg.Start("figures", yfp=-1.0)
+        ct.Start("figures", yfp=-1.0)
         check("invalid parameters rejected before AUTO runs", False, "no error")
     except ValueError as exc:
         check("invalid parameters rejected before AUTO runs", "yfp" in str(exc), str(exc))

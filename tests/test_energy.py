@@ -13,7 +13,6 @@ shrinks with the tolerance: 1e-7 at rtol 1e-12, 2e-9 at 1e-14).  The equations a
 it: their drift is printed and must exceed 1e-5 (the test can tell them apart).
 """
 import os
-import subprocess
 import sys
 import tempfile
 
@@ -24,8 +23,8 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check  # noqa: E402
 import mlgmodel  # noqa: E402
+import simulator  # noqa: E402
 
-SIMULATOR = os.path.join(os.path.dirname(HERE), "build", "bin", "mlg_simulate")
 CONSERVATIVE = {"tyre_forces": 0, "c_psi": 0, "c_beta": 0, "zeta_delta": 0,
                 "c_eta1": 0, "c_eta2a": 0, "c_eta2b": 0, "V": 0}
 CASES = [  # (name, parameters)
@@ -39,13 +38,8 @@ CASES = [  # (name, parameters)
 def relative_drift(tmp, values):
     """max |E(t) - E(0)| / (E(0) - E(equilibrium)) over the trajectory."""
     csv = os.path.join(tmp, "energy.csv")
-    args = [SIMULATOR, "--t-end", "5", "--dt-out", "2e-3", "--method", "adams", "--rtol", "1e-13",
-            "--atol", "1e-15", "--psi0", "3e-3", "--delta0", "3e-3", "--out", csv]
-    for name, value in values.items():
-        args += ["--param", f"{name}={value}"]
-    proc = subprocess.run(args, capture_output=True, text=True)
-    if proc.returncode != 0:
-        raise RuntimeError(proc.stderr.strip())
+    simulator.simulate(csv, "--t-end", 5, "--dt-out", 2e-3, "--method", "adams", "--rtol", 1e-13,
+                       "--atol", 1e-15, "--psi0", 3e-3, "--delta0", 3e-3, params=values)
     samples = np.loadtxt(csv, delimiter=",", skiprows=1)[:, 1:]
     model = mlgmodel.Model("figures", **values)
     rest = [model.equilibrium()[name] for name in mlgmodel.UNAMES]

@@ -10,7 +10,9 @@ from check import check, check_close  # noqa: E402
 import numpy  # noqa: E402
 
 import autoglue  # noqa: E402
-import diagrams as dg  # noqa: E402
+import continuation as ct  # noqa: E402
+import paths  # noqa: E402
+import spectrum  # noqa: E402
 
 FREEPLAY = dict(yfp=1.0, eps_rel=0.1)
 
@@ -18,7 +20,7 @@ FREEPLAY = dict(yfp=1.0, eps_rel=0.1)
 def hopf_speeds_at_unit_load():
     """Section IV.B: H at 1.5, 28.1 and 142.5 m/s.  The paper prints one
     decimal: H1 within rounding (+-0.05) plus 0.5 %; H2 and H3 within 2 %."""
-    changes = dg.stability_changes("figures", "V", numpy.linspace(0.5, 600, 3000), Fstar=1.0,
+    changes = spectrum.stability_changes("figures", "V", numpy.linspace(0.5, 600, 3000), Fstar=1.0,
                                    **FREEPLAY)
     speeds = [v for v, kind, _ in changes if kind == "HB"]
     check("three Hopf points in V at F* = 1", len(speeds) == 3, f"found {speeds}")
@@ -34,10 +36,10 @@ def fold_and_auto_hopf(speeds):
     """AUTO locates the scanned Hopf point to 1e-7 relative, and the orbits
     born there fold at S (paper: 41.5 m/s) within 1 %, with the frequency at
     the Hopf point equal to the critical eigenvalue's."""
-    rundir = dg.rundir("tests/freeplay")
-    point = dg.hopf_point(rundir, "hb3", "figures", "V", speeds[2], Fstar=1.0, **FREEPLAY)
+    rundir = paths.rundir("tests/freeplay")
+    point = ct.hopf_point(rundir, "hb3", "figures", "V", speeds[2], Fstar=1.0, **FREEPLAY)
     check_close("AUTO HB = scanned Hopf (H3)", point["V"], speeds[2], rel=1e-7)
-    orbits = dg.periodic_from(rundir, "po3", point, stop={"V": [30.0, 200.0]}, DS=0.05,
+    orbits = ct.periodic_from(rundir, "po3", point, stop={"V": [30.0, 200.0]}, DS=0.05,
                               DSMAX=1.0, NMX=600, expect=["LP"])
     check_close("fold S vs paper 41.5 m/s", orbits("LP1")["V"], 41.5, rel=0.01)
     fold_curve_meets_diagram(rundir, orbits("LP1"))
@@ -49,16 +51,16 @@ def fold_curve_meets_diagram(rundir, fold, Fstar=1.8):
     the period held fixed, as AUTO does unless PAR(11) is third in ICP, it
     missed by 1 %), and the frequency changes along it."""
     try:
-        curve = dg.fold_curve(rundir, "fold_S", fold, ("V", "Fstar"), DS=0.05, DSMAX=1.0,
+        curve = ct.fold_curve(rundir, "fold_S", fold, ("V", "Fstar"), DS=0.05, DSMAX=1.0,
                               NMX=200, stop={"Fstar": Fstar})
     except autoglue.RunError as exc:
         check(f"fold S continued in (V, F*) to F* = {Fstar:g}", False, str(exc))
         return
     on_curve = curve("UZ")[-1]
-    speed = [v for v, kind, _ in dg.stability_changes(
+    speed = [v for v, kind, _ in spectrum.stability_changes(
         "figures", "V", numpy.linspace(100, 200, 500), Fstar=Fstar, **FREEPLAY) if kind == "HB"]
-    point = dg.hopf_point(rundir, "hb_1.8", "figures", "V", speed[-1], Fstar=Fstar, **FREEPLAY)
-    orbits = dg.periodic_from(rundir, "po_1.8", point, stop={"V": [30.0, 200.0]}, DS=0.05,
+    point = ct.hopf_point(rundir, "hb_1.8", "figures", "V", speed[-1], Fstar=Fstar, **FREEPLAY)
+    orbits = ct.periodic_from(rundir, "po_1.8", point, stop={"V": [30.0, 200.0]}, DS=0.05,
                               DSMAX=1.0, NMX=600, expect=["LP"])
     check_close(f"fold curve at F* = {Fstar:g} = fold of the diagram in V", on_curve["V"],
                 orbits("LP1")["V"], rel=1e-4)
@@ -71,7 +73,7 @@ def loads_at_50():
     """Fig. 12 (V = 50): two pitchforks at low load that do not move with V,
     then one Hopf point; straight rolling is stable between them."""
     grid = numpy.linspace(0.02, 3.5, 800)
-    found = {V: dg.stability_changes("figures", "Fstar", grid, V=V, **FREEPLAY)
+    found = {V: spectrum.stability_changes("figures", "Fstar", grid, V=V, **FREEPLAY)
              for V in (50.0, 300.0)}
     kinds = [kind for _, kind, _ in found[50.0]]
     check("V = 50: pitchfork, pitchfork, Hopf in F*", kinds == ["BP", "BP", "HB"], str(kinds))
@@ -91,7 +93,7 @@ def joined_hopf_curve():
     (V about 113 m/s, above the plot); in between all three Hopf points
     exist in V, outside only one."""
     for Fstar, count in ((0.65, 1), (0.70, 3), (0.80, 3), (6.85, 3), (6.9, 1)):
-        speeds = [v for v, kind, _ in dg.stability_changes(
+        speeds = [v for v, kind, _ in spectrum.stability_changes(
             "figures", "V", numpy.linspace(0.5, 600, 3000), Fstar=Fstar, **FREEPLAY)
             if kind == "HB"]
         check(f"F* = {Fstar:g}: {count} Hopf point(s) in V", len(speeds) == count, f"{speeds}")

@@ -14,7 +14,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "drivers"))
 import autoglue  # noqa: E402
-import diagrams as dg  # noqa: E402
+import continuation as ct  # noqa: E402
 from check import check  # noqa: E402
 
 RUN_ROOT = os.path.join(ROOT, "build", "tests", "isolated")
@@ -25,10 +25,10 @@ HOPF_V = 346.1  # m/s, zero freeplay, F* = 1 (Fig. 7, reference fig07/b.eq_F1)
 JOB = """
 import os, sys, time
 sys.path.insert(0, os.path.join(sys.argv[1], "drivers"))
-import autoglue, diagrams as dg
-rundir = dg.rundir("shared")
-start = dg.Start("figures", Fstar=1.0, V=0.0)
-dg.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
+import autoglue, continuation as ct, paths
+rundir = paths.rundir("shared")
+start = ct.Start("figures", Fstar=1.0, V=0.0)
+ct.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
 time.sleep(2.0)
 branch = autoglue.auto.parseB.parseBR(os.path.join(rundir, "b.eq"))[0]
 hb = [i for i in branch.labels.getIndices() if "HB" in branch.labels[i]][0]
@@ -78,9 +78,9 @@ def quiet_console(stdout):
 
 def failures():
     rundir = os.path.join(RUN_ROOT, "failure")
-    start = dg.Start("figures", Fstar=1.0, V=0.0)
+    start = ct.Start("figures", Fstar=1.0, V=0.0)
     try:
-        dg.equilibria(rundir, "eq", start, stop={"V": 10.0}, expect=["HB"])
+        ct.equilibria(rundir, "eq", start, stop={"V": 10.0}, expect=["HB"])
         message = "no error"
     except autoglue.RunError as exc:
         message = str(exc)

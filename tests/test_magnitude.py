@@ -13,7 +13,8 @@ import numpy
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 import autoglue  # noqa: E402
-import diagrams as dg  # noqa: E402
+import continuation as ct  # noqa: E402
+import spectrum  # noqa: E402
 import fig15  # noqa: E402
 import magnitude as mg  # noqa: E402
 import mlgmodel  # noqa: E402
@@ -27,10 +28,10 @@ A_REPORTED, B_REPORTED = 0.054242, 0.213609
 def low_branch(yfp):
     """The orbit at V = 15 m/s on the branch born at the first Hopf point."""
     vals = mg.values("ratio", yfp)
-    hopf = [v for v, kind, _ in dg.stability_changes("figures", "V", mg.V_SCAN, **vals)
+    hopf = [v for v, kind, _ in spectrum.stability_changes("figures", "V", mg.V_SCAN, **vals)
             if kind == "HB"]
-    hb = dg.hopf_point(RUNDIR, f"hb_{yfp:g}", "figures", "V", hopf[0], **vals)
-    run = dg.periodic_from(RUNDIR, f"po_{yfp:g}", hb, stop={"V": 15.5}, UZR={"V": [15.0]},
+    hb = ct.hopf_point(RUNDIR, f"hb_{yfp:g}", "figures", "V", hopf[0], **vals)
+    run = ct.periodic_from(RUNDIR, f"po_{yfp:g}", hb, stop={"V": 15.5}, UZR={"V": [15.0]},
                            expect=["UZ"], DS=1e-4, DSMAX=mg.DSMAX_V, DSMIN=1e-9, THU=mg.THU)
     return hopf, run("UZ1")
 
@@ -52,7 +53,7 @@ def thresholds():
     check_close("eps = 0.1 mm: b (V = 120) as reported", b, B_REPORTED, rel=2e-5)
     vals = {"Fstar": mg.FSTAR, "V": mg.V_LIMIT, **mg.SCALINGS["fixed"]}
     for name, y in (("a", a), ("b", b)):
-        hb = dg.hopf_point(RUNDIR, f"hb_{name}", "figures", "yfp", y, width=0.05 * y, **vals)
+        hb = ct.hopf_point(RUNDIR, f"hb_{name}", "figures", "yfp", y, width=0.05 * y, **vals)
         check_close(f"eps = 0.1 mm: AUTO's Hopf point in y_fp at {name}", hb["yfp"], y, rel=1e-5)
     check("eps = 0.1 mm: straight rolling stable up to 120 m/s just below a",
           all(max(mg.growth(mg.FSTAR, 0.99 * a, V).values()) < 0

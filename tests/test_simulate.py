@@ -8,7 +8,6 @@ V = 346.1 m/s); at V = 300 m/s, F* = 0.2 the shimmy pair 0.41 +- 238.6i rad/s
 grows into the limit cycle of Fig. 8.
 """
 import os
-import subprocess
 import sys
 import tempfile
 
@@ -16,18 +15,18 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check  # noqa: E402
-
-SIMULATOR = os.path.join(os.path.dirname(HERE), "build", "bin", "mlg_simulate")
+import simulator  # noqa: E402
 
 
 def simulate(tmp, name, *args):
     """Run the simulator; return (exit status, summary dict, samples, stderr)."""
     csv = os.path.join(tmp, name + ".csv")
-    proc = subprocess.run([SIMULATOR, *args, "--out", csv], capture_output=True, text=True)
+    proc = simulator.run(csv, *args)
     summary, data = {}, None
     if proc.returncode == 0:
-        summary = {k: float(v) for k, v in (line.split() for line in proc.stdout.splitlines())}
+        summary = simulator.summary(proc.stdout)
         data = np.genfromtxt(csv, delimiter=",", names=True)
     return proc.returncode, summary, data, proc.stderr
 

@@ -8,18 +8,18 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "drivers"))
 import autoglue  # noqa: E402
-import diagrams as dg  # noqa: E402
+import continuation as ct  # noqa: E402
 
 RUNDIR = os.path.join(autoglue.BUILD, "bench", "auto-jacobian")
 
 
 def main():
-    start = dg.Start("figures", Fstar=1.0, V=0.0)
-    eq = dg.equilibria(RUNDIR, "eq", start, stop={"V": 400.0}, expect=["HB"])
+    start = ct.Start("figures", Fstar=1.0, V=0.0)
+    eq = ct.equilibria(RUNDIR, "eq", start, stop={"V": 400.0}, expect=["HB"])
     seconds, points = {}, {}
     for jac in (1, 0):
         begin = time.perf_counter()
-        po = dg.periodic_from(RUNDIR, f"po_jac{jac}", eq("HB1"), stop={"V": 500.0},
+        po = ct.periodic_from(RUNDIR, f"po_jac{jac}", eq("HB1"), stop={"V": 500.0},
                               expect=["UZ"], JAC=jac)
         seconds[jac] = time.perf_counter() - begin
         points[jac] = len(po[0])

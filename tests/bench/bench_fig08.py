@@ -5,22 +5,22 @@ Prints the best of three integration wall times as measured by the simulator
 (CSV writing included, equilibrium solve excluded) and the solver counts.
 """
 import os
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-SIMULATOR = os.path.join(ROOT, "build", "bin", "mlg_simulate")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "drivers"))
+import simulator  # noqa: E402
+
 REPEATS = 3
 
 
 def run_once(csv):
-    proc = subprocess.run([SIMULATOR, "--V", "300", "--Fstar", "0.2", "--yfp", "0",
-                           "--t-end", "15", "--dt-out", "1e-3", "--psi0", "1e-3",
-                           "--out", csv], capture_output=True, text=True)
-    if proc.returncode != 0:
-        sys.exit(f"bench_fig08: mlg_simulate failed:\n{proc.stderr}")
-    return {k: float(v) for k, v in (line.split() for line in proc.stdout.splitlines())}
+    try:
+        return simulator.simulate(csv, "--V", 300, "--Fstar", 0.2, "--yfp", 0, "--t-end", 15,
+                                  "--dt-out", 1e-3, "--psi0", 1e-3)
+    except simulator.SimulationError as exc:
+        sys.exit(f"bench_fig08: {exc}")
 
 
 def main():

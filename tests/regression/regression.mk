@@ -10,7 +10,7 @@
 #   make refs-<fig>      one figure
 #
 # A figure <fig> of REGRESS_FIGURES is a make target whose driver writes its
-# runs to $MLG_RUN_ROOT/<fig>/ (drivers/diagrams.py: rundir; default build/).
+# runs to $MLG_RUN_ROOT/<fig>/ (drivers/paths.py: rundir; default build/).
 # REGRESS_QUICK lists the fast ones that `make test` also compares
 # (tests/test_regression_quick.py runs drivers/<fig>.py for each).
 # Only the refs recipes write into tests/reference/.

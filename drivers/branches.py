@@ -1,0 +1,49 @@
+"""Reading AUTO branches (parseB/bifDiag branch objects), with no AUTO
+import: the labelled points of a branch and its split by stability.
+
+    for index, label, kind in labelled_points(branch): ...
+    for xs, ys, stable in segments(branch, "V", "psi_amp"): ...
+"""
+import numpy
+
+
+def labelled_points(branch, kind=None):
+    """[(point index, label, type)] of the labelled special points of one
+    branch, in order (of type `kind` only, if given).  AUTO also lists
+    unlabelled stability entries ({"No Label": ...}); they are skipped."""
+    found = []
+    for index in branch.labels.getIndices():
+        for ty, info in list(branch.labels[index].items()):
+            if "LAB" in info and kind in (None, ty):
+                found.append((index, info["LAB"], ty))
+    return found
+
+
+def stable_mask(branch):
+    """Per point: True where stable.  AUTO's stability() lists the last point
+    index of each run of equal stability, negative for stable runs."""
+    mask = numpy.zeros(len(branch), dtype=bool)
+    start = 0
+    for end in branch.stability():
+        mask[start:abs(end)] = end < 0
+        start = abs(end)
+    return mask
+
+
+def runs_of(mask, overlap=True):
+    """Slices of equal values of a boolean array; with overlap each reaches
+    one point into the next, so that plotted segments join."""
+    mask = numpy.asarray(mask)
+    out, start = [], 0
+    for i in range(1, len(mask) + 1):
+        if i == len(mask) or mask[i] != mask[start]:
+            out.append(slice(start, min(i + int(overlap), len(mask))))
+            start = i
+    return out
+
+
+def segments(branch, x, y):
+    """One branch split into runs of equal stability: [(xs, ys, stable)]."""
+    xs, ys = numpy.asarray(branch[x]), numpy.asarray(branch[y])
+    stable = stable_mask(branch)
+    return [(xs[s], ys[s], bool(stable[s.start])) for s in runs_of(stable)]

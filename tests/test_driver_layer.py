@@ -1,0 +1,103 @@
+"""The driver layer's structure and its cache: figure modules import only the
+shared layer, the layer's AUTO-free modules stay AUTO-free, and a cached
+result reads back as the AUTO branches it was made from."""
+import ast
+import glob
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DRIVERS = os.path.join(os.path.dirname(HERE), "drivers")
+sys.path.insert(0, HERE)
+sys.path.insert(0, DRIVERS)
+from check import check  # noqa: E402
+
+FIGURE_MODULE = re.compile(r"fig\d\d$")
+
+
+def imports(path):
+    """The top-level names of every module a file imports."""
+    tree = ast.parse(open(path).read())
+    names = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names |= {alias.name.split(".")[0] for alias in node.names}
+        elif isinstance(node, ast.ImportFrom) and node.module:
+            names.add(node.module.split(".")[0])
+    return names
+
+
+def no_figure_imports_a_figure():
+    for path in sorted(glob.glob(os.path.join(DRIVERS, "*.py"))):
+        figures = sorted(n for n in imports(path) if FIGURE_MODULE.match(n))
+        check(f"{os.path.basename(path)} imports no figure module", not figures, str(figures))
+
+
+def auto_free(module):
+    """Whether importing drivers/<module>.py loads neither AUTO nor autoglue
+    (run in a fresh interpreter, with AUTO_DIR pointing nowhere)."""
+    code = (f"import sys; sys.path.insert(0, {DRIVERS!r}); import {module}; "
+            "bad = [m for m in ('auto', 'autoglue') if m in sys.modules]; "
+            "print(' '.join(bad)); sys.exit(1 if bad else 0)")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          env=dict(os.environ, AUTO_DIR="/nonexistent", MPLBACKEND="Agg"))
+    return proc.returncode == 0, (proc.stdout + proc.stderr).strip()[-300:]
+
+
+def layer_without_auto():
+    for module in ("paths", "branches", "spectrum", "plotting", "results", "simulator",
+                   "paper_table", "fig06", "fig19"):
+        ok, detail = auto_free(module)
+        check(f"{module} imports no AUTO", ok, detail)
+
+
+def cache_round_trip():
+    """A stored branch reads back with the same columns, stability and
+    labels as AUTO's own reading of the b-file; the cache file is written
+    atomically (no partial file left) and a missing result names its make
+    target."""
+    os.environ.setdefault("AUTO_DIR", os.path.join(os.path.dirname(HERE), "build", "auto", "07p"))
+    with tempfile.TemporaryDirectory() as tmp:
+        os.environ["MLG_RUN_ROOT"] = tmp
+        import autoglue
+        import branches
+        import numpy
+        import results
+        reference = os.path.join(os.path.dirname(HERE), "tests", "reference", "fig13", "b.y1_po0")
+        bd = autoglue.auto.parseB.parseBR(reference)
+        path = results.write("test", {"orbits": results.stored(bd, ("V", "psi_amp", "T")),
+                                      "inf": numpy.inf})
+        check("cache: no partial file left beside the result",
+              os.listdir(os.path.dirname(path)) == ["result.json"],
+              str(os.listdir(os.path.dirname(path))))
+        data = results.read("test")
+        back = results.loaded(data["orbits"])
+        same = all(numpy.array_equal(numpy.asarray(a[c]), b[c]) for a, b in zip(bd, back)
+                   for c in ("V", "psi_amp", "T"))
+        check("cache: columns read back exactly", len(back) == len(bd) and same)
+        check("cache: stability read back", all(
+            numpy.array_equal(branches.stable_mask(a), branches.stable_mask(b))
+            for a, b in zip(bd, back)))
+        check("cache: labelled points read back", all(
+            branches.labelled_points(a) == branches.labelled_points(b) for a, b in zip(bd, back)),
+            str(branches.labelled_points(back[0])))
+        check("cache: infinity kept", data["inf"] == numpy.inf, str(data["inf"]))
+        try:
+            results.read("fig99")
+            check("cache: a missing result is an error naming `make fig99`", False, "no error")
+        except results.MissingResult as exc:
+            check("cache: a missing result is an error naming `make fig99`",
+                  "make fig99" in str(exc), str(exc))
+
+
+def main():
+    no_figure_imports_a_figure()
+    layer_without_auto()
+    cache_round_trip()
+
+
+if __name__ == "__main__":
+    main()
