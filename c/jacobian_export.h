@@ -17,10 +17,10 @@ int JACOBIAN_FUNCTION(const mlg_params *p, const double u[MLG_NX], double f[MLG_
     int status = vector_field(p, x, fx, NULL);
     for (int i = 0; i < MLG_NX; i++) {
         f[i] = fx[i].v;
-        for (int j = 0; j < MLG_NX; j++) dfdu[i + MLG_NX * j] = fx[i].d[j];
+        for (int j = 0; j < MLG_NX; j++) dfdu[i + MLG_NX * j] = d_slope(fx[i], j);
         if (dfdp != NULL)
-            for (int k = 0; k < MLG_NPAR && MLG_NX + k < DUAL_N; k++)
-                dfdp[i + MLG_NX * k] = fx[i].d[MLG_NX + k];
+            for (int k = 0; k < MLG_NPAR && MLG_DIR_PAR0 + k < DUAL_N; k++)
+                dfdp[i + MLG_NX * k] = d_slope(fx[i], MLG_DIR_PAR0 + k);
     }
     return status;
 }

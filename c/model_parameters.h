@@ -6,31 +6,30 @@
 #include "dual.h"
 #include "mlg_model.h"
 
+/* Derivative direction of PAR(1): the states fill whole blocks first. */
+#define MLG_DIR_PAR0 (((MLG_NX + DUAL_LANES - 1) / DUAL_LANES) * DUAL_LANES)
+
 typedef struct {
     const mlg_params *c;     /* every constant, plain */
     dual V, F_z, yfp, eps, c_psi, rho, mu, k_tlk;   /* SI: yfp and eps in metres */
 } model_parameters;
 
-static inline dual par_var(const mlg_params *p, int index)
-{
-    double par[MLG_PAR_SLOTS];
-    mlg_params_get_par(p, par);
-    return d_var(par[index], MLG_NX + index);
-}
+/* PAR(k+1) as an independent variable, in PAR units */
+#define PAR_VAR(p, name) d_var((p)->name, MLG_DIR_PAR0 + MLG_PAR_##name)
 
 static inline model_parameters model_parameters_seed(const mlg_params *p)
 {
     model_parameters mp;
     mp.c = p;
-    mp.V = par_var(p, MLG_PAR_V);
-    mp.F_z = d_mulc(par_var(p, MLG_PAR_Fstar), p->g_0 * p->m_0);     /* II.A */
-    mp.yfp = d_mulc(par_var(p, MLG_PAR_yfp), 1e-3);
-    mp.eps = d_mulc(d_add(par_var(p, MLG_PAR_eps_abs),
-                          d_mul(par_var(p, MLG_PAR_eps_rel), par_var(p, MLG_PAR_yfp))), 1e-3);
-    mp.c_psi = par_var(p, MLG_PAR_c_psi);
-    mp.rho = par_var(p, MLG_PAR_rho);
-    mp.mu = par_var(p, MLG_PAR_mu);
-    mp.k_tlk = par_var(p, MLG_PAR_k_tlk);
+    mp.V = PAR_VAR(p, V);
+    mp.F_z = d_mulc(PAR_VAR(p, Fstar), p->g_0 * p->m_0);     /* II.A */
+    dual yfp = PAR_VAR(p, yfp);
+    mp.yfp = d_mulc(yfp, 1e-3);
+    mp.eps = d_mulc(d_add(PAR_VAR(p, eps_abs), d_mul(PAR_VAR(p, eps_rel), yfp)), 1e-3);
+    mp.c_psi = PAR_VAR(p, c_psi);
+    mp.rho = PAR_VAR(p, rho);
+    mp.mu = PAR_VAR(p, mu);
+    mp.k_tlk = PAR_VAR(p, k_tlk);
     return mp;
 }
 
