@@ -4,12 +4,12 @@
 #include "mlg_model.h"
 #define DUAL_N 0
 #include "freeplay.h"
-#include "geometry.h"
+#include "structure.h"
 #include "strut.h"
 
 /* Integral of F_keta from eta_ref to eta: 5-point Gauss-Legendre on panels of
  * at most 0.1 mm (the integrand has no closed-form antiderivative). */
-static double strut_potential(const mlg_params *p, double eta_ref, double eta)
+static double strut_potential(const mlg_constants *c, double eta_ref, double eta)
 {
     static const double node[5] = {-0.9061798459386640, -0.5384693101056831, 0.0,
                                    0.5384693101056831, 0.9061798459386640};
@@ -21,7 +21,7 @@ static double strut_potential(const mlg_params *p, double eta_ref, double eta)
     for (int k = 0; k < panels; k++) {
         double mid = eta_ref + (k + 0.5) * h;
         for (int j = 0; j < 5; j++)
-            sum += weight[j] * strut_spring_force(p, d_const(mid + 0.5 * h * node[j])).v;
+            sum += weight[j] * strut_spring_force(c, d_const(mid + 0.5 * h * node[j])).v;
     }
     return 0.5 * h * sum;
 }
@@ -38,9 +38,10 @@ int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
     sidestay g = sidestay_geometry(&mp);
     double sin_p = g.sin_p.v, cos_p = g.cos_p.v;
     double psi_s = psi + beta * sin_p, theta_a = psi_s + g.m.v;       /* after eq. (6) */
-    strut_geometry s = strut_geometry_at(&mp, &g, d_const(eta), d_const(theta_a));
-    pose q = pose_at(&mp, &g, &s, d_const(psi), d_const(delta), d_const(beta));
-    double I_a = s.I_a.v, L_beta = s.L_beta.v;
+    strut_lengths l = strut_lengths_at(mp.c, d_const(eta));
+    structure s = structure_at(mp.c, &g, &l, d_const(eta), d_const(theta_a));
+    pose q = pose_at(&mp, &g, &l, d_const(psi), d_const(delta), d_const(beta));
+    double I_a = s.I_a.v, L_beta = l.L_beta.v;
 
     /* kinetic: torsion, strut bending about u_delta and about u_beta, the axle's
      * rotation W normal to itself in the plane normal to the strut, modal mass */
@@ -52,9 +53,9 @@ int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
                           + p->M * H_dot * H_dot);
 
     /* potential: lateral and longitudinal springs, torque links, oleo, load F_z at height H */
-    double r_tlk = torque_link_radius(p, s.z_tlk).v;
+    double r_tlk = torque_link_radius(mp.c, l.z_tlk).v;
     double links = torque_link_energy(mp.k_tlk, d_const(r_tlk * psi_s), mp.yfp, mp.eps).v;
     out->potential = 0.5 * (s.k_delta.v * delta * delta + p->k_beta * beta * beta) + links
-                     + strut_potential(p, eta_ref, eta) + mp.F_z.v * L_beta * q.cos_phi.v;
+                     + strut_potential(mp.c, eta_ref, eta) + mp.F_z.v * L_beta * q.cos_phi.v;
     return MLG_OK;
 }

@@ -11,7 +11,7 @@
 /* Static axial balance at beta = 0 (eq. 4 with zero rates): F_keta = F_z cos(phi0). */
 static double axial_residual(const mlg_params *p, double eta, double cos_phi)
 {
-    return strut_spring_force(p, d_const(eta)).v - p->Fstar * p->g_0 * p->m_0 * cos_phi;
+    return strut_spring_force(&p->constants, d_const(eta)).v - p->Fstar * p->g_0 * p->m_0 * cos_phi;
 }
 
 /* Smallest root of the static axial balance in (0, z_tlk0), by scan and bisection. */

@@ -6,7 +6,7 @@
 
 /* Distance from the torque-link apex to the strut axis (section III, Fig. 5).
  * atan2 replaces the printed atan((a-b)/z): z_tlk -> 0 at eta = z_tlk0. */
-static inline dual torque_link_radius(const mlg_params *c, dual z_tlk)
+static inline dual torque_link_radius(const mlg_constants *c, dual z_tlk)
 {
     double ab = c->a_tlk - c->b_tlk;
     dual chord = d_sqrt(d_addc(d_sq(z_tlk), ab * ab));
@@ -16,7 +16,7 @@ static inline dual torque_link_radius(const mlg_params *c, dual z_tlk)
 
 /* d r_tlk / d z_tlk, from the formula above (d z_tlk / d eta = -1); the
  * complete equations need d r_tlk / d eta (docs/model.md, section 8). */
-static inline dual torque_link_radius_slope(const mlg_params *c, dual z_tlk)
+static inline dual torque_link_radius_slope(const mlg_constants *c, dual z_tlk)
 {
     double ab = c->a_tlk - c->b_tlk;
     dual chord2 = d_addc(d_sq(z_tlk), ab * ab);

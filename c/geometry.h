@@ -1,4 +1,5 @@
-/* Gear geometry: side-stay angles, axes and points of section II (Fig. 3). */
+/* Gear geometry: side-stay angles, strut lengths, and the axes and points of
+ * section II (Fig. 3).  Masses and stiffnesses are in structure.h. */
 #ifndef MLG_GEOMETRY_H
 #define MLG_GEOMETRY_H
 
@@ -34,52 +35,18 @@ static inline sidestay sidestay_geometry(const model_parameters *mp)
     return g;
 }
 
-/* Lengths and inertias that depend on the compression eta (section II.A). */
+/* Lengths that shorten with the compression eta (section II.A). */
 typedef struct {
     dual L_beta, L_delta, z_tlk;
-    dual I_a;
-    dual I_beta, dI_beta_deta;      /* I_beta and dI_beta/deta */
-    dual I_delta, dI_delta_deta;    /* I_delta (at the current theta_a) and dI_delta/deta */
-    dual k_delta, dk_delta_deta, c_delta;
-} strut_geometry;
+} strut_lengths;
 
-static inline strut_geometry strut_geometry_at(const model_parameters *mp, const sidestay *g,
-                                               dual eta, dual theta_a)
+static inline strut_lengths strut_lengths_at(const mlg_constants *c, dual eta)
 {
-    const mlg_params *c = mp->c;
-    strut_geometry s;
-    s.L_beta = d_sub(d_const(c->L_beta0), eta);
-    s.L_delta = d_sub(d_const(c->L_delta0), eta);
-    s.z_tlk = d_sub(d_const(c->z_tlk0), eta);
-    s.I_a = d_const(c->I_a2 * c->a * c->a + c->I_a0 + 2.0 * c->I_0);
-    dual cos2p = d_sq(g->cos_p);
-    /* I_beta = (640 L_b^2 - 100 L_b + 260) cos^2 p;  dL_b/deta = -1 */
-    s.I_beta = d_mul(d_addc(d_add(d_mulc(d_sq(s.L_beta), c->I_beta2),
-                                  d_mulc(s.L_beta, c->I_beta1)), c->I_beta0), cos2p);
-    s.dI_beta_deta = d_neg(d_mul(d_addc(d_mulc(s.L_beta, 2.0 * c->I_beta2), c->I_beta1), cos2p));
-    /* I_delta = 630 L_d^2 - 140 L_d + 60 + I_a cos^2 theta_a */
-    s.I_delta = d_add(d_addc(d_add(d_mulc(d_sq(s.L_delta), c->I_delta2),
-                                   d_mulc(s.L_delta, c->I_delta1)), c->I_delta0),
-                      d_mul(s.I_a, d_sq(d_cos(theta_a))));
-    s.dI_delta_deta = d_neg(d_addc(d_mulc(s.L_delta, 2.0 * c->I_delta2), c->I_delta1));
-    /* k_delta = K L_d^2 / (3bc(b+c) + a(b^2+c^2) + (b^3 + R c^3) + 2abc), c = c0 - eta */
-    {
-        double a = c->a_kdelta, b = c->b_kdelta;
-        dual cc = d_sub(d_const(c->c_kdelta0), eta);
-        dual den = d_mulc(d_mul(cc, d_addc(cc, b)), 3.0 * b);
-        den = d_add(den, d_mulc(d_addc(d_sq(cc), b * b), a));
-        den = d_add(den, d_addc(d_mulc(d_mul(cc, d_sq(cc)), c->R_kdelta), b * b * b));
-        den = d_add(den, d_mulc(cc, 2.0 * a * b));
-        s.k_delta = d_div(d_mulc(d_sq(s.L_delta), c->K_kdelta), den);
-        /* dk_delta/deta, with dL_d/deta = dc/deta = -1 (complete equations, docs/model.md 8) */
-        dual dden = d_addc(d_mulc(cc, 6.0 * b + 2.0 * a), 3.0 * b * b + 2.0 * a * b);
-        dden = d_add(dden, d_mulc(d_sq(cc), 3.0 * c->R_kdelta));
-        dual num = d_sub(d_mul(d_sq(s.L_delta), dden), d_mulc(d_mul(s.L_delta, den), 2.0));
-        s.dk_delta_deta = d_div(d_mulc(num, c->K_kdelta), d_sq(den));
-    }
-    /* c_delta: constant fraction of critical damping (docs/model.md 4.1) */
-    s.c_delta = d_mulc(d_sqrt(d_mul(s.I_delta, s.k_delta)), c->zeta_delta);
-    return s;
+    strut_lengths l;
+    l.L_beta = d_sub(d_const(c->L_beta0), eta);
+    l.L_delta = d_sub(d_const(c->L_delta0), eta);
+    l.z_tlk = d_sub(d_const(c->z_tlk0), eta);
+    return l;
 }
 
 /* Orientation and points of the gear for given (psi, delta, beta, eta). */
@@ -98,9 +65,9 @@ static inline dvec unit_horizontal(dual x, dual y)
 }
 
 static inline pose pose_at(const model_parameters *mp, const sidestay *g,
-                           const strut_geometry *s, dual psi, dual delta, dual beta)
+                           const strut_lengths *s, dual psi, dual delta, dual beta)
 {
-    const mlg_params *c = mp->c;
+    const mlg_constants *c = mp->c;
     pose q;
     dual psi_s = d_add(psi, d_mul(beta, g->sin_p));               /* psi_s = psi + beta sin p */
     dmat R_b = m_rotation(g->u_beta, beta);

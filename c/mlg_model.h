@@ -44,14 +44,30 @@ enum mlg_eom_terms {
     MLG_EOM_COMPLETE = 2     /* + the p-independent completions: the full Lagrangian */
 };
 
+/* The fixed constants and the switches: what the model reads as plain
+ * numbers.  The continuation parameters are not in it, so the model code
+ * cannot read one without its derivatives (c/model_parameters.h). */
+#define MLG_CONSTANT_FIELDS                                                        \
+    MLG_CONSTANTS(MLG_CONSTANT_FIELD)                                              \
+    MLG_SWITCHES(MLG_SWITCH_FIELD)
+#define MLG_CONSTANT_FIELD(name, value, unit, doc) double name;
+#define MLG_SWITCH_FIELD(name, par, value, unit, doc) double name;
+typedef struct {
+    MLG_CONSTANT_FIELDS
+} mlg_constants;
+
+/* Every parameter: the continuation parameters, then mlg_constants, whose
+ * fields are also members of mlg_params itself (p->r is p->constants.r). */
 typedef struct {
 #define X(name, value, unit, doc) double name;
     MLG_CONTINUATION_PARAMETERS(X)
-    MLG_CONSTANTS(X)
 #undef X
-#define X(name, par, value, unit, doc) double name;
-    MLG_SWITCHES(X)
-#undef X
+    union {
+        mlg_constants constants;
+        struct {
+            MLG_CONSTANT_FIELDS
+        };
+    };
 } mlg_params;
 
 /* Status bits of an evaluation: the state lies outside the model's domain. */

@@ -1,5 +1,7 @@
-/* The continuation parameters as dual numbers, seeded for df/dp.
- * Derivative direction MLG_NX + k is PAR(k+1), in PAR units. */
+/* The continuation parameters as dual numbers, seeded for df/dp, beside the
+ * plain constants.  Derivative direction MLG_DIR_PAR0 + k is PAR(k+1), in
+ * PAR units.  The model reads parameters only through this struct: a
+ * continuation parameter is a dual, everything else is in mlg_constants. */
 #ifndef MLG_MODEL_PARAMETERS_H
 #define MLG_MODEL_PARAMETERS_H
 
@@ -10,7 +12,7 @@
 #define MLG_DIR_PAR0 (((MLG_NX + DUAL_LANES - 1) / DUAL_LANES) * DUAL_LANES)
 
 typedef struct {
-    const mlg_params *c;     /* every constant, plain */
+    const mlg_constants *c;  /* every constant and switch, plain */
     dual V, F_z, yfp, eps, c_psi, rho, mu, k_tlk;   /* SI: yfp and eps in metres */
 } model_parameters;
 
@@ -20,7 +22,7 @@ typedef struct {
 static inline model_parameters model_parameters_seed(const mlg_params *p)
 {
     model_parameters mp;
-    mp.c = p;
+    mp.c = &p->constants;
     mp.V = PAR_VAR(p, V);
     mp.F_z = d_mulc(PAR_VAR(p, Fstar), p->g_0 * p->m_0);     /* II.A */
     dual yfp = PAR_VAR(p, yfp);

@@ -8,7 +8,7 @@
  * [atan(+k (eta - eta_s)) + pi/2]/pi, i.e. switches it on ABOVE eta_s, and the
  * stage (d e^{e eta} + f) below.  strut_variant 0 swaps the two weights so the
  * oleo is a monotone two-stage spring (docs/model.md 4.15). */
-static inline dual strut_spring_force(const mlg_params *c, dual eta)
+static inline dual strut_spring_force(const mlg_constants *c, dual eta)
 {
     dual stage_ac = d_addc(d_mulc(d_exp(d_mulc(eta, c->b_keta)), c->a_keta), c->c_keta);
     dual stage_df = d_addc(d_mulc(d_exp(d_mulc(eta, c->e_keta)), c->d_keta), c->f_keta);
@@ -22,7 +22,7 @@ static inline dual strut_spring_force(const mlg_params *c, dual eta)
 }
 
 /* F_ceta = sign(eta') (4e4/pi atan(1e4 (eta - 0.18)) + 7.5e4) eta'^2 + 1000 eta' */
-static inline dual strut_damper_force(const mlg_params *c, dual eta, dual eta_dot)
+static inline dual strut_damper_force(const mlg_constants *c, dual eta, dual eta_dot)
 {
     dual coef = d_addc(d_mulc(d_atan(d_mulc(d_addc(eta, -c->eta_orifice), c->k_eta2)),
                               c->c_eta2a / MLG_PI), c->c_eta2b);

@@ -28,6 +28,11 @@ static inline dvec v_sub(dvec a, dvec b)
     return v_make(d_sub(a.c[0], b.c[0]), d_sub(a.c[1], b.c[1]), d_sub(a.c[2], b.c[2]));
 }
 
+static inline dvec v_neg(dvec a)
+{
+    return v_make(d_neg(a.c[0]), d_neg(a.c[1]), d_neg(a.c[2]));
+}
+
 static inline dvec v_scale(dvec a, dual s)
 {
     return v_make(d_mul(a.c[0], s), d_mul(a.c[1], s), d_mul(a.c[2], s));

@@ -25,7 +25,7 @@ int mlg_diagnose(const mlg_params *p, const double u[MLG_NX], mlg_diagnostics *o
 
 double mlg_r_tlk(const mlg_params *p, double eta)
 {
-    return torque_link_radius(p, d_const(p->z_tlk0 - eta)).v;
+    return torque_link_radius(&p->constants, d_const(p->z_tlk0 - eta)).v;
 }
 
 double mlg_torque_link_force(double k_tlk, double y_tlk, double yfp_m, double eps_m)
