@@ -8,8 +8,8 @@
 #include "dual.h"
 #include "mlg_model.h"
 
-/* Derivative direction of PAR(1): the states fill whole blocks first. */
-#define MLG_DIR_PAR0 (((MLG_NX + DUAL_LANES - 1) / DUAL_LANES) * DUAL_LANES)
+/* Derivative direction of PAR(1): right after the states. */
+#define MLG_DIR_PAR0 MLG_NX
 
 typedef struct {
     const mlg_constants *c;  /* every constant and switch, plain */
