@@ -24,6 +24,7 @@ import sys
 import time
 
 import paths
+from jobgrid import GridError, axis
 
 ROOT = paths.ROOT
 SWEEP_DIR = os.path.join(paths.RUN_ROOT, "sweep")
@@ -40,35 +41,9 @@ def parse_point(name):
     return float(rho), float(mu)
 
 
-class GridError(ValueError):
-    """A grid that is not a list of distinct numbers (named by its make variable)."""
-
-
-def axis(text, variable):
-    """The values of one grid axis, "a,b,c" in degrees.  Each must be a finite
-    number, and no two may share a run directory (point_name rounds to 6
-    significant digits: 10 and 10.0000001 would be one job)."""
-    values, names = [], {}
-    for item in text.split(","):
-        try:
-            value = float(item)
-        except ValueError:
-            raise GridError(f"{variable}={text!r}: {item.strip()!r} is not a number "
-                            "(give comma-separated angles in degrees, e.g. -10,0,10)") from None
-        if not math.isfinite(value):
-            raise GridError(f"{variable}={text!r}: {item.strip()!r} is not a finite angle")
-        name = f"{value:g}"
-        if name in names:
-            raise GridError(f"{variable}={text!r}: {names[name]} and {item.strip()} are the "
-                            f"same grid point ({name} deg, one run directory); list each "
-                            "angle once, distinct to 6 significant digits")
-        names[name] = item.strip()
-        values.append(value)
-    return values
-
-
 def grid(args):
-    rhos, mus = axis(args.rho, "SWEEP_RHO (--rho)"), axis(args.mu, "SWEEP_MU (--mu)")
+    rhos = axis(args.rho, "SWEEP_RHO (--rho)", "angles in degrees")
+    mus = axis(args.mu, "SWEEP_MU (--mu)", "angles in degrees")
     return [(rho, mu) for rho in rhos for mu in mus]
 
 

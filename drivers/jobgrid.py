@@ -1,0 +1,54 @@
+"""Grids of independent jobs (the side-stay sweep, the attractor atlas): the
+axis values a user types, checked before any job runs.
+
+An axis is "a,b,c" (values) or "start:stop:step" (start, start + step, ...
+up to stop inclusive), or several of these joined by commas.  Every value
+must be a finite number, and no two may share a job (job names use 6
+significant digits, f"{value:g}").
+"""
+import math
+
+
+class GridError(ValueError):
+    """An axis that is not a list of distinct numbers (named by its variable)."""
+
+
+def _number(item, text, variable, unit):
+    try:
+        value = float(item)
+    except ValueError:
+        raise GridError(f"{variable}={text!r}: {item.strip()!r} is not a number "
+                        f"(give comma-separated {unit}, or start:stop:step)") from None
+    if not math.isfinite(value):
+        raise GridError(f"{variable}={text!r}: {item.strip()!r} is not finite")
+    return value
+
+
+def _range(item, text, variable, unit):
+    start, stop, step = (_number(part, text, variable, unit) for part in item.split(":"))
+    if not step > 0 or stop < start:
+        raise GridError(f"{variable}={text!r}: {item.strip()!r} needs step > 0 and "
+                        "stop >= start")
+    count = int(math.floor((stop - start) / step + 1e-9)) + 1
+    return [round(start + k * step, 12) for k in range(count)]
+
+
+def axis(text, variable, unit="numbers"):
+    """The values of one axis; raises GridError naming `variable`."""
+    values, names = [], {}
+    for item in text.split(","):
+        if item.count(":") == 2:
+            items = [(value, f"{value:g}") for value in _range(item, text, variable, unit)]
+        elif ":" in item:
+            raise GridError(f"{variable}={text!r}: {item.strip()!r} is not start:stop:step")
+        else:
+            items = [(_number(item, text, variable, unit), item.strip())]
+        for value, typed in items:
+            name = f"{value:g}"
+            if name in names:
+                raise GridError(f"{variable}={text!r}: {names[name]} and {typed} are the "
+                                f"same grid point ({name}, one job); list each value once, "
+                                "distinct to 6 significant digits")
+            names[name] = typed
+            values.append(value)
+    return values
