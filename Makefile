@@ -58,6 +58,7 @@ include mk/auto.mk
 -include drivers/figures.mk
 -include drivers/magnitude.mk
 -include drivers/criterion.mk
+-include drivers/atlas.mk
 -include tests/regression/regression.mk
 
 setup: packages auto

@@ -1,0 +1,167 @@
+"""Attractor atlas: what a time simulation settles on over the (V, F*) plane
+of Fig. 11 (y_fp = 1 mm, epsilon = 0.1 mm absolute, `figures` set).
+
+Every grid cell is an independent job with its own directory
+$MLG_RUN_ROOT/atlas/V<v>_F<f>/ (default build/): build/bin/mlg_simulate is
+started from each of STARTS, each run classified by drivers/attractor.py,
+and the cell's result written to result.json there.  A run that is not
+settled after STAGES[0] seconds is run again for STAGES[1]; still unsettled,
+it is reported as such.  Subcommands (axes as in drivers/jobgrid.py: "a,b,c"
+or "start:stop:step"; the default is DEFAULT_V x DEFAULT_FSTAR):
+
+  atlas.py check   [--V L --Fstar L]   validate every cell (no simulation)
+  atlas.py targets [--V L --Fstar L]   the result files, for make
+  atlas.py jobs    [--V L --Fstar L]   one shell command per cell, for GNU
+                                       parallel or a Slurm array (README)
+  atlas.py cell V<v>_F<f>              simulate and classify one cell
+  atlas.py summary [--V L --Fstar L]   summary.txt, summary.json and the plot
+                                       build/figures/atlas.{png,pdf}
+
+`make atlas` (with -j N for N cells at once) runs check, every cell, summary.
+"""
+import argparse
+import json
+import os
+import shlex
+import sys
+import tempfile
+
+import atlas_cell
+import paths
+from jobgrid import GridError, axis
+
+ATLAS_DIR = os.path.join(paths.RUN_ROOT, "atlas")
+# 18 x 13 cells: every region of Fig. 11 holds at least one (the stable
+# straight-rolling band at F* = 1 lies between 28.3 and 41.5 m/s: V = 30, 40;
+# the off-centre-yaw band between F* = 0.037 and 0.408: 0.1, 0.2, 0.3)
+DEFAULT_V = "5,10,20,30,40,50,70,100,150:600:50"
+DEFAULT_FSTAR = "0.02,0.1,0.2,0.3,0.5,0.8,1,1.4,1.8,2.2,2.6,3,3.5"
+
+
+def cell_name(v, fstar):
+    return f"V{v:g}_F{fstar:g}"
+
+
+def parse_cell(name):
+    v, fstar = name[len("V"):].split("_F")
+    return float(v), float(fstar)
+
+
+def grid(args):
+    vs = axis(args.V, "ATLAS_V (--V)", "speeds in m/s")
+    fstars = axis(args.Fstar, "ATLAS_FSTAR (--Fstar)", "loads F*")
+    return [(v, f) for f in fstars for v in vs]
+
+
+def result_path(v, fstar):
+    return os.path.join(ATLAS_DIR, cell_name(v, fstar), "result.json")
+
+
+def check(points):
+    import simulator
+    bad = []
+    for v, fstar in points:
+        # a 1 ms run validates the parameters and finds the equilibrium
+        with tempfile.TemporaryDirectory() as tmp:
+            proc = simulator.run(os.path.join(tmp, "c.csv"),
+                                 *atlas_cell.simulator_args(v, fstar, 0.0, atlas_cell.DT_OUT))
+        if proc.returncode != 0:
+            bad.append(f"V = {v:g} m/s, F* = {fstar:g}: {proc.stderr.strip()}")
+    if bad:
+        sys.exit("atlas: grid rejected before any simulation:\n  " + "\n  ".join(bad))
+    print(f"atlas: {len(points)} cells valid")
+
+
+def run_cell(name):
+    try:
+        v, fstar = parse_cell(name)
+    except ValueError:
+        sys.exit(f"atlas: {name!r} is not a cell name V<v>_F<f> (see `atlas.py targets`)")
+    rundir = os.path.dirname(result_path(v, fstar))
+    os.makedirs(rundir, exist_ok=True)
+    result = atlas_cell.cell(v, fstar, rundir)
+    # written whole or not at all: make sees a result only when it is complete
+    with tempfile.NamedTemporaryFile("w", dir=rundir, delete=False, suffix=".tmp") as out:
+        json.dump(result, out, indent=1)
+    os.replace(out.name, result_path(v, fstar))
+    print(f"atlas: {name}: {result['label']} ({result['cpu_seconds']:.1f} s CPU)")
+
+
+def load(points):
+    cells = []
+    for v, fstar in points:
+        path = result_path(v, fstar)
+        if not os.path.exists(path):
+            sys.exit(f"atlas: no result for V = {v:g}, F* = {fstar:g} ({path}); "
+                     "run `make atlas` (or atlas.py cell) first")
+        with open(path) as f:
+            cells.append(json.load(f))
+    return cells
+
+
+def summary(points):
+    cells = load(points)
+    counts = {}
+    for c in cells:
+        counts[c["label"]] = counts.get(c["label"], 0) + 1
+    cpu = [c["cpu_seconds"] for c in cells]
+    lines = [f"atlas: {len(cells)} cells, y_fp = {atlas_cell.FREEPLAY['yfp']:g} mm, epsilon = "
+             f"{atlas_cell.FREEPLAY['eps_abs']:g} mm; starts " +
+             ", ".join(f"{k} psi0 = {v:g} rad" for k, v in atlas_cell.STARTS.items()),
+             f"CPU per cell: mean {sum(cpu) / len(cpu):.2f} s, max {max(cpu):.2f} s; "
+             f"total {sum(cpu):.0f} s", "cells by label:"]
+    lines += [f"  {n:5d}  {lab}" for lab, n in sorted(counts.items(), key=lambda x: -x[1])]
+    lines.append("V [m/s]  F*  label  |  per start: kind amplitude[rad] frequency[Hz] "
+                 "mean[rad] (modulation [Hz])")
+    for c in cells:
+        parts = []
+        for start, s in c["starts"].items():
+            if s["kind"] == "domain":
+                parts.append(f"{start}: domain ({s['reason']})")
+                continue
+            text = (f"{start}: {s['kind']} {s['amplitude_rad']:.4g} {s['frequency_hz']:.3g} "
+                    f"{s['mean_rad']:.3g}")
+            if s.get("modulation_hz"):
+                text += f" ({s['modulation_hz']:.3g})"
+            parts.append(text)
+        lines.append(f"{c['V']:g} {c['Fstar']:g} {c['label']} | " + "; ".join(parts))
+    text = "\n".join(lines) + "\n"
+    for name, content in (("summary.txt", text), ("summary.json", json.dumps(cells, indent=1))):
+        with tempfile.NamedTemporaryFile("w", dir=ATLAS_DIR, delete=False) as out:
+            out.write(content)
+        os.replace(out.name, os.path.join(ATLAS_DIR, name))
+    print("\n".join(lines[:3 + len(counts)]))
+    print(f"atlas: wrote {ATLAS_DIR}/summary.txt, summary.json")
+    import atlas_plot
+    atlas_plot.plot(cells, atlas_cell.NAMES, atlas_cell.KINDS)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("command", choices=["check", "targets", "jobs", "cell", "summary"])
+    parser.add_argument("name", nargs="?", help="V<v>_F<f> (cell only)")
+    parser.add_argument("--V", default=DEFAULT_V, help="speeds [m/s]")
+    parser.add_argument("--Fstar", default=DEFAULT_FSTAR, help="loads F*")
+    args = parser.parse_args()
+    try:
+        points = grid(args)
+    except GridError as exc:
+        sys.exit(f"atlas: grid rejected: {exc}")
+    if args.command == "targets":
+        print(" ".join(result_path(*p) for p in points))
+    elif args.command == "jobs":
+        for v, fstar in points:
+            print(f"cd {shlex.quote(paths.ROOT)} && {shlex.quote(sys.executable)} "
+                  f"drivers/atlas.py cell {cell_name(v, fstar)}")
+    elif args.command == "check":
+        check(points)
+    elif args.command == "cell":
+        if args.name is None:
+            parser.error("cell needs V<v>_F<f>")
+        run_cell(args.name)
+    else:
+        summary(points)
+
+
+if __name__ == "__main__":
+    main()

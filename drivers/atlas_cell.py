@@ -1,0 +1,144 @@
+"""One cell of the attractor atlas (drivers/atlas.py): simulations of the
+MLG model from each of STARTS at one (V, F*), y_fp = 1 mm, epsilon = 0.1 mm
+absolute, `figures` set, each end state classified by drivers/attractor.py.
+A start not settled after STAGES[0] seconds is run again for STAGES[1];
+still unsettled, it is reported as such.
+"""
+import os
+import resource
+
+FREEPLAY = {"yfp": 1.0, "eps_abs": 0.1, "eps_rel": 0.0}      # mm (Fig. 11)
+
+# Initial states: the straight-rolling equilibrium with psi displaced [rad].
+# The freeplay angle y_fp / r_tlk is about 2.1e-3 rad; the stable shimmy
+# orbits of Fig. 11 reach 0.005-0.27 rad.  A start outside the model's
+# domain at t = 0 (at F* = 0.02 a wheel lifts off at psi = 0.05) is halved
+# until it is inside; the psi0 used is recorded.
+STARTS = {"rolling": 1e-4,       # straight rolling, slightly perturbed
+          "yawed": 4e-3,         # yawed twice the freeplay angle, at rest
+          "shimmy": 0.05}        # a large-amplitude torsional swing
+STAGES = (40.0, 120.0)           # time limits [s], the second only if needed
+WINDOW = 5.0                     # attractor.classify's window [s]
+DT_OUT = 1e-3                    # sampling [s]: 25 samples per 40 Hz period
+
+
+def simulator_args(v, fstar, psi0, t_end):
+    return ["--set", "figures", "--V", v, "--Fstar", fstar, "--yfp", FREEPLAY["yfp"],
+            "--eps-abs", FREEPLAY["eps_abs"], "--eps-rel", FREEPLAY["eps_rel"],
+            "--t-end", t_end, "--dt-out", DT_OUT, "--psi0", psi0]
+
+
+def left_domain(proc):
+    """The simulator's reason if the model left its domain, else None."""
+    for line in proc.stderr.splitlines():
+        if line.startswith("mlg_simulate: model evaluation failed"):
+            return line[len("mlg_simulate: "):]
+    return None
+
+
+def discard(path):
+    if os.path.exists(path):
+        os.remove(path)
+
+
+def inside_start(v, fstar, psi0, csv):
+    """psi0, halved until the initial state is inside the model's domain."""
+    import simulator
+    for _ in range(20):
+        proc = simulator.run(csv, *simulator_args(v, fstar, psi0, DT_OUT))
+        if proc.returncode == 0 or left_domain(proc) is None:
+            discard(csv)
+            return psi0
+        psi0 *= 0.5
+    discard(csv)
+    raise RuntimeError(f"atlas: no start inside the domain at V = {v:g}, F* = {fstar:g}")
+
+
+def run_stage(v, fstar, psi0, t_end, rundir):
+    """Simulate t_end seconds from psi0 and classify the end state
+    (attractor.classify; `domain` if the model leaves its domain)."""
+    import numpy
+    import attractor
+    import simulator
+    csv = os.path.join(rundir, "run.csv")
+    proc = simulator.run(csv, *simulator_args(v, fstar, psi0, t_end))
+    if proc.returncode != 0:
+        reason = left_domain(proc)
+        if reason is None:
+            discard(csv)
+            raise RuntimeError(f"atlas: mlg_simulate failed at V = {v:g}, F* = {fstar:g}, "
+                               f"psi0 = {psi0:g}: {proc.stderr.strip()}")
+        discard(csv)
+        return {"kind": "domain", "t_end": t_end, "psi0": psi0, "reason": reason}
+    data = numpy.loadtxt(csv, delimiter=",", skiprows=1, usecols=(0, 1))
+    os.remove(csv)
+    if data[-1, 0] < t_end - 1e-9:
+        raise RuntimeError(f"atlas: the run stopped at t = {data[-1, 0]:g} s of {t_end:g}")
+    result = attractor.classify(data[:, 0], data[:, 1], WINDOW)
+    result.update(t_end=t_end, psi0=psi0)
+    return result
+
+
+def simulate_start(v, fstar, psi0, rundir):
+    """Classify one start: the first stage that settles, else `unsettled`
+    after the last."""
+    psi0 = inside_start(v, fstar, psi0, os.path.join(rundir, "probe.csv"))
+    for t_end in STAGES:
+        result = run_stage(v, fstar, psi0, t_end, rundir)
+        if result["kind"] != "unsettled":
+            break
+    return result
+
+
+def cell(v, fstar, rundir):
+    """The cell's result: every start's end state, the cell's label and the
+    CPU time its simulations took."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    starts = {start: simulate_start(v, fstar, psi0, rundir) for start, psi0 in STARTS.items()}
+    # An orbit next to a torus attractor may be weakly unstable, its
+    # modulation growing too slowly to show within the first limit: when a
+    # start ends quasi-periodic, every periodic end is checked over the last.
+    if any(s["kind"] == "quasi" for s in starts.values()):
+        for start, s in starts.items():
+            if s["kind"] in ("low", "high") and s["t_end"] < STAGES[-1]:
+                starts[start] = run_stage(v, fstar, s["psi0"], STAGES[-1], rundir)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)
+    return {"V": v, "Fstar": fstar, "starts": starts, "label": label(starts),
+            "cpu_seconds": round(cpu, 2)}
+
+
+# cell labels: the distinct kinds its starts reached, in this order
+KINDS = ("straight", "yaw", "low", "high", "quasi", "domain", "unsettled")
+NAMES = {"straight": "straight rolling", "yaw": "off-centre yaw",
+         "low": "low-frequency shimmy", "high": "high-frequency shimmy",
+         "quasi": "quasi-periodic shimmy", "domain": "left the domain",
+         "unsettled": "not settled"}
+
+
+SAME = 0.02    # orbits of one kind are one attractor if amplitude and
+               # frequency agree to this relative tolerance
+
+
+def distinct(states):
+    """The states that are different attractors (by amplitude, frequency)."""
+    kept = []
+    for s in states:
+        if not any(abs(s["amplitude_rad"] - k["amplitude_rad"]) <= SAME * k["amplitude_rad"]
+                   and abs(s["frequency_hz"] - k["frequency_hz"]) <= SAME * k["frequency_hz"]
+                   for k in kept):
+            kept.append(s)
+    return kept
+
+
+def label(starts):
+    """The kinds the starts reached, in KINDS order; "high x2": two
+    different high-frequency orbits."""
+    parts = []
+    for kind in KINDS:
+        states = [s for s in starts.values() if s["kind"] == kind]
+        if not states:
+            continue
+        count = len(distinct(states)) if kind in ("low", "high", "quasi") else 1
+        parts.append(kind if count == 1 else f"{kind} x{count}")
+    return " + ".join(parts)

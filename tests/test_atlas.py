@@ -1,0 +1,127 @@
+"""Tests of the attractor atlas's classifier (drivers/attractor.py) and of
+single cells simulated by drivers/atlas_cell.py (y_fp = 1 mm, epsilon = 0.1 mm).
+
+Synthetic signals check each criterion exactly; three simulated starts check
+known states: straight rolling at V = 100 m/s, F* = 1 (stable, the Hopf
+points are at 28.3 and 144.3 m/s), the low-frequency orbit at V = 20, F* = 1
+(Fig. 10: 1.7-4.7 Hz inside the freeplay), and the high-frequency orbit at
+V = 450, F* = 0.3 (the issue's run: psi amplitude 0.120-0.121 rad, ~40 Hz),
+whose slowly growing modulation must not be called settled after 20 s.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
+from check import check, check_close  # noqa: E402
+import atlas_cell  # noqa: E402
+import attractor  # noqa: E402
+
+T = np.arange(0.0, 10.0 + 1e-9, 1e-3)       # two 5 s windows, atlas sampling
+W = atlas_cell.WINDOW
+
+
+def synthetic():
+    sine = 0.12 * np.sin(2 * np.pi * 40.0 * T)
+    r = attractor.classify(T, sine, W)
+    check("synthetic 40 Hz sine: high", r["kind"] == "high", r)
+    check_close("synthetic 40 Hz sine: amplitude", r["amplitude_rad"], 0.12, rel=1e-4)
+    check_close("synthetic 40 Hz sine: frequency", r["frequency_hz"], 40.0, rel=1e-4)
+    check("synthetic 40 Hz sine: peak spread below 1e-6 (quartic fit)",
+          r["peak_spread"] < 1e-6, r["peak_spread"])
+
+    r = attractor.classify(T, 2e-3 * np.sin(2 * np.pi * 3.0 * T + 0.3), W)
+    check("synthetic 3 Hz sine: low", r["kind"] == "low", r)
+    check_close("synthetic 3 Hz sine: frequency", r["frequency_hz"], 3.0, rel=1e-3)
+
+    modulated = 0.12 * (1 + 0.03 * np.sin(2 * np.pi * 1.03 * T)) * np.sin(2 * np.pi * 39.8 * T)
+    r = attractor.classify(T, modulated, W)
+    check("synthetic 3 % modulation at 1.03 Hz: quasi", r["kind"] == "quasi", r)
+    check_close("synthetic modulation: its frequency", r["modulation_hz"] or 0, 1.03, rel=0.05)
+
+    growing = 0.12 * (1 + 1e-4 * np.exp(0.2 * T) * np.sin(2 * np.pi * 1.4 * T)) \
+        * np.sin(2 * np.pi * 42.0 * T)
+    r = attractor.classify(T, growing, W)
+    check("synthetic modulation growing at 0.2 /s from 1e-4: unsettled",
+          r["kind"] == "unsettled", r)
+
+    decaying = 1e-4 * np.exp(-0.3 * T) * np.sin(2 * np.pi * 38.0 * T)
+    r = attractor.classify(T, decaying, W)
+    check("synthetic decay at 0.3 /s: unsettled, not straight", r["kind"] == "unsettled", r)
+
+    r = attractor.classify(T, np.zeros_like(T), W)
+    check("synthetic rest at psi = 0: straight", r["kind"] == "straight", r)
+    r = attractor.classify(T, np.full_like(T, 1.7e-3), W)
+    check("synthetic rest at psi = 1.7e-3: yaw", r["kind"] == "yaw", r)
+    check_close("synthetic yaw: mean", r["mean_rad"], 1.7e-3, rel=1e-9)
+
+    two = 0.1 * np.sin(2 * np.pi * 40.0 * T) * (1 + 0.05 * np.sign(np.sin(2 * np.pi * 20.0 * T
+                                                                            + 0.1)))
+    r = attractor.classify(T, two, W)
+    check("synthetic period-2 (two peak levels): high with levels 2",
+          r["kind"] == "high" and r["levels"] == 2, r)
+
+    try:
+        attractor.classify(T[:3000], T[:3000], W)
+        check("3 s of samples for two 5 s windows: refused", False, "no error")
+    except ValueError as exc:
+        check("3 s of samples for two 5 s windows: refused", "window" in str(exc), exc)
+
+
+def simulated():
+    with tempfile.TemporaryDirectory() as tmp:
+        r = atlas_cell.run_stage(100.0, 1.0, atlas_cell.STARTS["rolling"], 20.0, tmp)
+        check("V = 100, F* = 1 from straight rolling + 1e-4 rad: straight",
+              r["kind"] == "straight", r)
+
+        r = atlas_cell.run_stage(20.0, 1.0, atlas_cell.STARTS["shimmy"], 20.0, tmp)
+        check("V = 20, F* = 1 from 0.05 rad: low", r["kind"] == "low", r)
+        check_close("V = 20, F* = 1: frequency (Fig. 10's 1.7-4.7 Hz branch)",
+                    r["frequency_hz"], 4.70, rel=0.01)
+        check("V = 20, F* = 1: amplitude inside the freeplay angle (2.1e-3 rad)",
+              1.5e-3 < r["amplitude_rad"] < 2.2e-3, r["amplitude_rad"])
+
+        r = atlas_cell.run_stage(450.0, 0.3, 0.05, 20.0, tmp)
+        check_close("V = 450, F* = 0.3: psi amplitude 0.120 rad", r["amplitude_rad"], 0.120,
+                    abs=0.002)
+        check_close("V = 450, F* = 0.3: frequency 39.8 Hz", r["frequency_hz"], 39.8, abs=0.2)
+        check("V = 450, F* = 0.3 after 20 s: growing modulation, so unsettled",
+              r["kind"] == "unsettled", r)
+        check("no simulator output left behind", os.listdir(tmp) == [], os.listdir(tmp))
+
+
+def bad_input():
+    """A grid the atlas cannot run stops before any cell, naming the variable."""
+    atlas = os.path.join(os.path.dirname(HERE), "drivers", "atlas.py")
+    with tempfile.TemporaryDirectory() as tmp:
+        env = dict(os.environ, MLG_RUN_ROOT=tmp)
+        for args, words in ((["targets", "--V=10,10.0000001"], ["ATLAS_V", "same grid point"]),
+                            (["jobs", "--Fstar=0:1:0"], ["ATLAS_FSTAR", "step > 0"]),
+                            (["check", "--V=-5", "--Fstar=1"], ["V = -5", "must be >= 0"]),
+                            (["cell", "V1_G2"], ["not a cell name"])):
+            proc = subprocess.run([sys.executable, atlas, *args], capture_output=True,
+                                  text=True, env=env)
+            check(f"atlas.py {' '.join(args)}: refused naming {words[0]}",
+                  proc.returncode != 0 and all(w in proc.stderr for w in words)
+                  and not os.path.exists(os.path.join(tmp, "atlas", "V1_G2")),
+                  f"exit status {proc.returncode}, stderr {proc.stderr.strip()!r}")
+        proc = subprocess.run([sys.executable, atlas, "targets", "--V=150:300:50",
+                               "--Fstar=0.1"], capture_output=True, text=True, env=env)
+        names = [os.path.basename(os.path.dirname(p)) for p in proc.stdout.split()]
+        check("atlas.py targets --V=150:300:50: four cells",
+              names == ["V150_F0.1", "V200_F0.1", "V250_F0.1", "V300_F0.1"], names)
+
+
+def main():
+    synthetic()
+    bad_input()
+    simulated()
+
+
+if __name__ == "__main__":
+    main()
