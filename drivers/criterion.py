@@ -193,10 +193,10 @@ def plot(groups):
         ax.set(xlabel=AXES[group], ylim=(0, 0.45))
         twin.set(ylim=(0, 0.45))
         if group == "strut":
-            ax.set_xticks(VARIANTS)
+            ax.set(xticks=VARIANTS, xlim=(-0.5, 1.5))
         if ax is axes[0]:
             ax.set_ylabel(r"$\kappa^*$ (circles, solid)")
-            ax.legend(fontsize=7, loc="lower right")
+            ax.legend(fontsize=7, loc="upper right")
         if ax is axes[-1]:
             twin.set_ylabel(r"$\eta^*$ at the minimum [m] (squares, dotted)")
     fig.suptitle(r"Allowable freeplay $y_{fp}/\epsilon < \kappa^*$ (eq. 17: $V \leq$ 120 m/s, "
