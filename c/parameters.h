@@ -52,7 +52,7 @@
 #define MLG_PAR_CONSTANTS_FILE 15
 
 /* Solution measures written by PVLS (models/mlg.c) into PAR(21) onwards,
- * in this order; constants/c.mlg names them and drivers/diagrams.py lists
+ * in this order; constants/c.mlg names them and drivers/continuation.py lists
  * them through drivers/mlgmodel.py.
  * X(name, kind, state, unit, description); kind AMP: (max - min)/2 of the
  * state over the solution, MEAN: its mean, FREQ: 1/T (0 on equilibria). */
