@@ -59,6 +59,7 @@ include mk/auto.mk
 -include drivers/magnitude.mk
 -include drivers/criterion.mk
 -include drivers/atlas.mk
+-include drivers/torus.mk
 -include tests/regression/regression.mk
 
 setup: packages auto

@@ -1,0 +1,74 @@
+"""Floquet multipliers of AUTO's periodic-orbit runs, read from the d-file,
+and the torus (Neimark-Sacker) crossings found from them.
+
+AUTO 0.9.2 labels a TR point only when its count of multipliers inside the
+unit circle (tolerance 1e-5 on |z|) changes at the same step as the sign of
+its test function |mu_2| - 1 (periodic.f90, FNSPBV: otherwise the type gets
+a trailing 0 and is dropped).  On the MLG orbits the critical pair moves
+through |z| = 1 by only ~1e-5 per m/s, so most crossings go unlabelled (at
+F* = 0.2 the count changes 1.2 m/s after the sign).  The crossings are
+therefore found here, from the multipliers of every step.
+"""
+import re
+
+import numpy
+
+_ITERATION = re.compile(r"^\s*-?\d+\s+-?\d+\s+\d+\s+(\S+)\s+\S+\s*$")
+_MULTIPLIER = re.compile(r"^\s*-?\d+\s+(-?\d+)\s+Multiplier\s+\d+\s+(\S+)\s+(\S+)\s+Abs")
+
+COMPLEX = 3e-3    # |Im mu| above this: a complex pair (AUTO: sqrt(EPSS))
+
+
+def read(path):
+    """[(parameter value, multipliers as complex array)] per point of the
+    branch in the d-file at path, in branch order.  AUTO writes a block for
+    each Newton solve; while it locates a special point it solves several
+    times for one point number, and the last block is the point kept."""
+    points, value, last_value, current, point = {}, None, None, [], None
+    with open(path) as f:
+        for line in f:
+            m = _MULTIPLIER.match(line)
+            if m:
+                point = abs(int(m.group(1)))
+                current.append(complex(float(m.group(2)), float(m.group(3))))
+                continue
+            m = _ITERATION.match(line)
+            if m:
+                if current:
+                    points[point] = (last_value, numpy.array(current))
+                    current = []
+                value = float(m.group(1).replace("D", "E"))
+            last_value = value
+    if current:
+        points[point] = (last_value, numpy.array(current))
+    return [points[k] for k in sorted(points)]
+
+
+def critical(mults):
+    """The complex multiplier of largest modulus, the trivial one (nearest 1)
+    left out: (|mu| - 1, angle in rad)."""
+    rest = numpy.delete(mults, numpy.argmin(numpy.abs(mults - 1.0)))
+    pairs = rest[numpy.abs(rest.imag) > COMPLEX]
+    if len(pairs) == 0:
+        return -1.0, 0.0
+    mu = pairs[numpy.argmax(numpy.abs(pairs))]
+    return abs(mu) - 1.0, abs(numpy.angle(mu))
+
+
+def torus_crossings(steps):
+    """Where a complex pair crosses the unit circle between two steps:
+    [{"value", "angle", "direction"}], the value and angle interpolated
+    linearly in |mu| - 1; direction +1 = leaves (the orbit loses
+    stability), -1 = enters."""
+    out = []
+    previous = None
+    for value, mults in steps:
+        g, angle = critical(mults)
+        if previous is not None and (previous[1] < 0) != (g < 0) and previous[0] != value:
+            v0, g0, a0 = previous
+            s = g0 / (g0 - g)
+            out.append({"value": v0 + s * (value - v0), "angle": a0 + s * (angle - a0),
+                        "direction": 1 if g > g0 else -1,
+                        "slope_per_unit": (g - g0) / (value - v0)})
+        previous = (value, g, angle)
+    return out
