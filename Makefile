@@ -15,6 +15,7 @@
 #   TEST_DEPS       other files the tests need built first (e.g. model .exe)
 #   FIGURES         make targets (e.g. fig05) built by `make figures`
 #   BENCH_PROGRAMS  programs run by `make bench` (executables or .py scripts)
+#   BENCH_DEPS      other files the benchmarks need built first
 #   REGRESS_FIGURES figure targets compared with tests/reference/<fig>/ by
 #                   `make regress` (tests/regression/regression.mk)
 #   REGRESS_QUICK   those of them `make test` also compares (fast ones)
@@ -45,6 +46,7 @@ TEST_PROGRAMS :=
 TEST_DEPS :=
 FIGURES :=
 BENCH_PROGRAMS :=
+BENCH_DEPS :=
 REGRESS_FIGURES :=
 REGRESS_QUICK :=
 
@@ -92,7 +94,7 @@ figures: setup $(FIGURES)
 	    echo "figures: $(strip $(FIGURES)) -> build/figures/"; \
 	fi
 
-bench: setup $(BENCH_PROGRAMS)
+bench: setup $(BENCH_DEPS) $(BENCH_PROGRAMS)
 	@if [ -z "$(strip $(BENCH_PROGRAMS))" ]; then \
 	    echo "bench: no benchmark programs are registered yet (BENCH_PROGRAMS is empty)"; \
 	fi

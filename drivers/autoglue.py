@@ -73,14 +73,16 @@ def _owned(path):
     return any(path == p or path.startswith(p + os.sep) for p in list(_claimed) + inherited)
 
 
-def claim(path):
+def claim(path, keep=None):
     """Make the run directory `path` this process's own and return it.
 
     The first claim takes an exclusive lock (flock on .<dir>.lock beside it,
     released when the process ends) and empties the directory, so that every
-    file in it comes from this process.  If another live process holds the
-    lock, this waits until it ends, saying so on stderr.  Claims of the same
-    directory, or of one below an owned one, return at once."""
+    file in it comes from this process (unless keep(path), called under the
+    lock, says its contents are a valid cached result).  If another live
+    process holds the lock, this waits until it ends, saying so on stderr.
+    Claims of the same directory, or of one below an owned one, return at
+    once."""
     path = os.path.abspath(path)
     if _owned(path):
         os.makedirs(path, exist_ok=True)
@@ -104,8 +106,9 @@ def claim(path):
     lock.truncate()
     lock.write(f"process {os.getpid()} ({' '.join(sys.argv)[:200]})\n")
     lock.flush()
-    shutil.rmtree(path, ignore_errors=True)
-    os.makedirs(path)
+    if not (keep and os.path.isdir(path) and keep(path)):
+        shutil.rmtree(path, ignore_errors=True)
+    os.makedirs(path, exist_ok=True)
     _claimed[path] = lock
     os.environ[CLAIMED_ENV] = os.pathsep.join(
         [p for p in os.environ.get(CLAIMED_ENV, "").split(os.pathsep) if p] + [path])
@@ -121,15 +124,15 @@ def _label(rundir):
 
 class _Progress:
     """One console line per AUTO run: figure, run, done/total, elapsed.
-    The total is the number of runs the same figure made last time
-    (RUN_ROOT/.runs/<figure>.count), "?" the first time."""
+    The total is the number of runs the same figure made last time, under
+    any run root (build/.runs/<figure>.count), "?" the first time."""
 
     def __init__(self):
         self.started = time.monotonic()
         self.done = {}
 
     def count_file(self, figure):
-        return os.path.join(RUN_ROOT, ".runs", f"{figure}.count")
+        return os.path.join(BUILD, ".runs", f"{figure}.count")
 
     def previous(self, figure):
         try:
@@ -254,8 +257,9 @@ def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time
     name an executable prebuilt by the Makefile, see check_prebuilt).
     Raises RunError naming the run if any branch ends in MX or a special point
     type listed in expect (e.g. "HB", "LP", "BP") does not occur.  With
-    allow_mx, an MX is reported on stdout instead and the diagram returned
-    (for curves known to end at a hard spot; the caller marks the end).
+    allow_mx, an MX is no error: the diagram is returned
+    (for curves known to end at a hard spot; the caller marks the end);
+    its progress line says so.
     time_limit: seconds after which the AUTO executable is killed and
     RunError raised (for runs known to stall in AUTO's iterations).
     rundir is claimed (claim); AUTO's messages go to <rundir>/<name>.log.
@@ -295,14 +299,15 @@ def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time
         raise RunError(f"run {name} in {rundir}: AUTO wrote no {', '.join(missing)}", log)
     bd = read_diagram(outputs, f"run {name} in {rundir}", log)
 
+    status = "done"
     try:
         check_diagram(bd, f"run {name} in {rundir}", expect)
     except RunError as exc:
         if not (allow_mx and "(MX)" in str(exc)):
             PROGRESS.step(rundir, name, time.monotonic() - started, "FAILED")
             raise RunError(str(exc), log) from None
-        print(f"REPORTED: {exc}; the branch ends there")
-    PROGRESS.step(rundir, name, time.monotonic() - started)
+        status = "done, ends in MX (kept up to there, as allowed)"
+    PROGRESS.step(rundir, name, time.monotonic() - started, status)
     return bd
 
 

@@ -40,11 +40,13 @@ $(eval $(call cached_figure,fig09))
 
 .PHONY: calibrate
 
-# Side-stay geometry (angles in degrees): make sidestay RHO=10 MU=10
+# Side-stay geometry (angles in degrees): make sidestay RHO=10 MU=10 [EOM=0|1|2]
+# (EOM: the eom_terms level, default 2, the complete equations)
+EOM ?= 2
 .PHONY: sidestay
 sidestay: $(AUTO_DRIVER_DEPS)
 	$(if $(and $(RHO),$(MU)),,$(error make sidestay needs RHO=<deg> MU=<deg>))
-	$(PYTHON) drivers/sidestay.py --rho $(RHO) --mu $(MU)
+	$(PYTHON) drivers/sidestay.py --rho $(RHO) --mu $(MU) --eom-terms $(EOM)
 
 # The non-zero geometry with a regression reference (tests/reference/).
 .PHONY: sidestay_rho10_mu10
@@ -67,6 +69,7 @@ REGRESS_QUICK += fig07 fig09
 TEST_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
 TEST_PROGRAMS += tests/test_auto_plugin.py tests/test_sidestay_drivers.py tests/test_isolated_runs.py
 BENCH_PROGRAMS += tests/bench/bench_auto_jacobian.py
+BENCH_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
 
 # Freeplay figures (y_fp = 1 mm, epsilon = 0.1 y_fp); fig06 needs no AUTO.
 .PHONY: fig06 fig06-plot

@@ -21,8 +21,9 @@ fetch_debian_source() {
     local download=$build_dir/download
     mkdir -p "$download"
     if ! ls "$download"/auto-07p_*.orig.tar.* >/dev/null 2>&1 || ! ls "$download"/auto-07p_*.dsc >/dev/null 2>&1; then
+        # apt-get update and source need root (else apt's lock error hides this hint)
+        [ "$(id -u)" = 0 ] || die "downloading the AUTO-07p source with apt-get needs root; as another user pass AUTO_SRC=<auto-07p tarball> (built here) or AUTO_DIR=<an AUTO-07p tree already built>"
         if [ ! -f "$src_list" ]; then
-            [ "$(id -u)" = 0 ] || die "need root to add $src_list (or pass AUTO_SRC=<tarball> / AUTO_DIR=<built AUTO>)"
             echo "build-auto: adding deb-src entries in $src_list"
             sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources > "$src_list"
         fi

@@ -1,8 +1,9 @@
 """The diagram comparator (tests/regression/compare_diagrams.py) on copies of
 the stored fig07 reference, edited one field at a time: identical diagrams
 agree; a value moved beyond the tolerance, or a changed special-point type, is
-reported naming the run, label and column; missing and corrupt files give an
-error naming the file, and the command line exits 0, 1 or 2 accordingly."""
+reported naming the run, label and column; a run we no longer write is a
+difference naming it; missing and corrupt reference files give an error
+naming the file, and the command line exits 0, 1 or 2 accordingly."""
 import os
 import shutil
 import subprocess
@@ -105,22 +106,64 @@ def near_zero_column():
     label, _, values, _ = last_point()
     check("psi_mean of the symmetric orbit is rounding noise (|x| < 1e-14)",
           abs(values["psi_mean"]) < 1e-14, f"psi_mean = {values['psi_mean']}")
+    scale = max(abs(v) for v in cd.read_branches(os.path.join(REFERENCE, f"b.{RUN}"))[0]
+                ["psi_amp"])
     noise = copy_reference("noise")
     coordnames = cd.read_branches(os.path.join(REFERENCE, f"b.{RUN}"))[0].coordnames
-    edit_labelled_row(noise, label, 4 + coordnames.index("psi_mean"), "3e-13")
-    check("psi_mean moved by 3e-13: within the absolute floor 1e-10",
-          compare(REFERENCE, noise).ok())
-    edit_labelled_row(noise, label, 4 + coordnames.index("psi_mean"), "1e-9")
+    edit_labelled_row(noise, label, 4 + coordnames.index("psi_mean"), f"{0.3e-5 * scale:.6e}")
+    result = compare(REFERENCE, noise)
+    check("psi_mean moved by 0.3e-5 of the largest psi_amp: within rtol of that scale",
+          result.ok(), result.report())
+    edit_labelled_row(noise, label, 4 + coordnames.index("psi_mean"), f"{1e-3 * scale:.6e}")
     rows = compare(REFERENCE, noise).rows
-    check("psi_mean moved to 1e-9: beyond the floor, reported",
+    check("psi_mean moved by 1e-3 of the largest psi_amp: reported",
           [r[4] for r in rows] == ["psi_mean"], f"rows {rows}")
+
+
+def summary():
+    """The Hopf point of eq_F1 moved by 1 % in V."""
+    run = "eq_F1"
+    path = os.path.join(WORK, "summary")
+    shutil.rmtree(path, ignore_errors=True)
+    os.makedirs(path)
+    shutil.copy(os.path.join(REFERENCE, f"b.{run}"), path)
+    branch = cd.read_branches(os.path.join(REFERENCE, f"b.{run}"))[0]
+    index, label, ty = [p for p in cd.labelled_points(branch) if p[2] == "HB"][0]
+    V = branch.coordarray[branch.coordnames.index("V"), index]
+    lines = open(os.path.join(path, f"b.{run}")).readlines()
+    for n, line in enumerate(lines):
+        fields = line.split()
+        if fields[0] != "0" and int(fields[3]) == label:
+            fields[4] = f"{V * 1.01:.16e}"
+            lines[n] = " ".join(fields) + "\n"
+    with open(os.path.join(path, f"b.{run}"), "w") as f:
+        f.writelines(lines)
+    text = cd.compare_dirs(REFERENCE, path, runs=[run]).report()
+    first = text.splitlines()[0] if text else ""
+    check(f"the report opens with the special points; {ty}{label} of {run} moved 1 % in V is "
+          "shown reference -> ours with its relative change",
+          first.strip().startswith("special points") and f"{ty}{label}" in text
+          and f"{V:.6g}" in text and f"{V * 1.01:.6g}" in text and "+1.00e-02" in text, text)
+
+
+def ignored_labels():
+    label, ty, _, _ = last_point()
+    moved = copy_reference("ignored")
+    scaled(moved, label, "V", 1.05)
+    with open(os.path.join(moved, cd.LABEL_FILE), "w") as f:
+        f.write('{"ignore": [{"run": "po_*", "type": "%s", "reason": "test"}]}\n' % ty)
+    result = cd.compare_dirs(moved, REFERENCE, runs=[RUN])
+    check(f"labels.json leaves the {ty} points of po_* out: {ty}{label} moved 5 % unseen",
+          result.ok(), result.report())
+    result = cd.compare_dirs(moved, REFERENCE, runs=[RUN], raw=True)
+    check("... and raw=True compares it as stored", len(result.rows) == 1, result.report())
 
 
 def changed_sequence():
     label, ty, _, _ = last_point()
     changed = copy_reference("sequence")
     edit_labelled_row(changed, label, 2, "-4")  # TY -4: a UZ point
-    result = compare(REFERENCE, changed)
+    result = cd.compare_dirs(REFERENCE, changed, runs=[RUN], raw=True)  # every label
     problem = " ".join(result.problems)
     check(f"special point {ty}{label} turned into UZ{label}: sequence mismatch reported",
           len(result.problems) == 1 and f"UZ{label}]" in problem and f"{ty}{label}]" in problem,
@@ -145,8 +188,9 @@ def file_errors():
     empty = os.path.join(WORK, "empty")
     os.makedirs(empty, exist_ok=True)
     ours = os.path.join(empty, f"b.{RUN}")
-    check("missing b-file in the run directory: error names it",
-          ours in error_of(copy_reference("only"), empty), error_of(copy_reference("only"), empty))
+    result = compare(copy_reference("only"), empty)
+    check("missing b-file in the run directory: a difference naming it",
+          not result.ok() and ours in " ".join(result.problems), result.report())
     for name, damage in (("garbage", "this is not a b-file\n"),
                          ("truncated", None), ("blank", "")):
         bad = copy_reference(name)
@@ -184,6 +228,8 @@ def main():
     identical()
     perturbed_values()
     near_zero_column()
+    summary()
+    ignored_labels()
     changed_sequence()
     file_errors()
     command_line()

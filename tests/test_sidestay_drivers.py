@@ -2,12 +2,16 @@
 message naming the parameter; one sweep job gives the critical speed, and
 the mirror image (-rho, -mu) gives the same (docs/model.md 8.5, 8.7).  A
 sweep grid with a repeated point or a non-number is rejected naming
-SWEEP_RHO/SWEEP_MU, and `make clean` never reads the grid."""
+SWEEP_RHO/SWEEP_MU, and `make clean` never reads the grid.  Two side-stay
+runs started 1 s apart that both need the rho = mu = 0 runs: the second
+waits for the first and then reuses its cached runs, with the same numbers;
+the numbers are in a plain-text table and the eom_terms level is printed."""
 import json
 import os
 import subprocess
 import sys
 import tempfile
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -32,6 +36,7 @@ def main():
           proc.stderr.strip())
 
     sweep_grids()
+    shared_reference()
 
     speeds = {}
     for name in ("rho10_mu10", "rho-10_mu-10"):
@@ -47,6 +52,63 @@ def main():
               abs(a - 350.664) <= 0.05, f"{a:.4f} m/s")
         check("sweep: mirror geometry (-rho, -mu) has the same critical speed (1e-6)",
               abs(a - b) <= 1e-6 * a, f"{a:.6f} vs {b:.6f} m/s")
+
+
+# drivers/sidestay.py with equilibria only (no Hopf points, so no orbit or
+# curve runs: seconds, not minutes) and a pause after each geometry, in which
+# the process still owns that geometry's run directory.
+QUICK_SIDESTAY = """
+import os, sys, time
+sys.path.insert(0, os.path.join(sys.argv[1], "drivers"))
+import sidestay
+sidestay.hopf_points = lambda rundir, tag, values: []
+computed = sidestay.compute
+def paused(*args, **kw):
+    out = computed(*args, **kw)
+    time.sleep(2.0)
+    return out
+sidestay.compute = paused
+sys.argv = ["sidestay.py", "--rho", sys.argv[2], "--mu", sys.argv[2]]
+sidestay.main()
+"""
+
+
+def shared_reference():
+    root = os.path.join(ROOT, "build", "tests", "sidestay")
+    env = dict(os.environ, MLG_RUN_ROOT=root)
+    cache = os.path.join(root, "sidestay_rho0_mu0", "cache.json")
+    if os.path.exists(cache):
+        os.remove(cache)
+
+    def start(angle):
+        return subprocess.Popen([sys.executable, "-c", QUICK_SIDESTAY, ROOT, angle], cwd=ROOT,
+                                env=env, text=True, stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE)
+    first = start("5")
+    time.sleep(1.0)
+    second = start("10")
+    (out1, err1), (out2, err2) = first.communicate(timeout=300), second.communicate(timeout=300)
+    if not check("sidestay at 5 and 10 deg, started 1 s apart, both need rho = mu = 0: "
+                 "both succeed", first.returncode == 0 and second.returncode == 0,
+                 (err1 + err2)[-800:]):
+        return
+    check("... the second waits for the first, naming sidestay_rho0_mu0",
+          "sidestay_rho0_mu0 is in use by process" in err2 and "waiting" in err2, err2[-400:])
+    check("... then reuses its cached rho = mu = 0 runs instead of recomputing them",
+          "reusing the runs" in out2 and "reusing the runs" not in out1
+          and "sidestay_rho0_mu0: eq_fp0 done" not in out2, out2[-600:])
+
+    def reference(out):
+        return [line for line in out.splitlines() if "rho = mu = 0, " in line]
+    check("... with the same rho = mu = 0 numbers",
+          reference(out1) == reference(out2) and len(reference(out1)) == 2,
+          f"{reference(out1)} vs {reference(out2)}")
+    check("the eom_terms level is printed first", "eom_terms = 2" in out1.splitlines()[0],
+          out1[:200])
+    table = os.path.join(root, "tables", "sidestay_rho5_mu5.txt")
+    text = open(table).read() if os.path.exists(table) else ""
+    check("the numbers are in build/.../tables/sidestay_rho5_mu5.txt, without LaTeX",
+          "Hopf points at V" in text and "$" not in text and "\\" not in text, text[:300])
 
 
 def sweep_grids():

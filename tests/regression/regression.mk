@@ -1,24 +1,37 @@
-# Regression runs against the reviewed reference diagrams in
-# tests/reference/<fig>/ (AUTO b-files); included by ../../Makefile.
+# Regression runs against the reviewed reference sets in tests/reference/<fig>/
+# (AUTO b-files and a MANIFEST); included by ../../Makefile.
 #
-#   make regress         every figure of REGRESS_FIGURES: run it into
-#                        build/regress/<fig>/ and compare with its reference
-#   make regress-<fig>   one figure
-#   make refs            rerun every figure into build/refs/<fig>/ and replace
-#                        the b-files of tests/reference/<fig>/ (deliberately:
-#                        review `git diff --stat tests/reference` before committing)
-#   make refs-<fig>      one figure
+#   make regress         every figure of REGRESS_FIGURES: run it and compare
+#                        with its reference set
+#   make regress-<fig>   one figure: its runs go to a private directory
+#                        build/regress/.<fig>.XXXXXX/, are compared there and
+#                        then published as build/regress/<fig>/ in one rename,
+#                        so runs started side by side never share a directory
+#   make refs            rerun every figure and replace its reference set
+#                        (deliberately: review `git diff --stat tests/reference`)
+#   make refs-<fig>      one figure: the new set is written beside the old one,
+#                        verified, then swapped in atomically
+#                        (tests/regression/reference_set.py); a failed or
+#                        interrupted run leaves the old set as it was
 #
 # A figure <fig> of REGRESS_FIGURES is a make target whose driver writes its
 # runs to $MLG_RUN_ROOT/<fig>/ (drivers/paths.py: rundir; default build/).
 # REGRESS_QUICK lists the fast ones that `make test` also compares
-# (tests/test_regression_quick.py runs drivers/<fig>.py for each).
+# (tests/test_regression_quick.py). A failed figure run keeps its private
+# directory (named in the message) for its logs.
 # Only the refs recipes write into tests/reference/.
 REGRESS_ROOT := build/regress
 REFS_ROOT := build/refs
 REFERENCE_ROOT := tests/reference
 COMPARE := tests/regression/compare_diagrams.py
+REFERENCE_SET := tests/regression/reference_set.py
 export REGRESS_QUICK
+
+# $(call private_run,<root>,<fig>): shell code that runs figure <fig> with
+# MLG_RUN_ROOT a new directory under <root>, left in $scratch.
+private_run = mkdir -p $(1) && scratch=$$(mktemp -d $(abspath $(1))/.$(2).XXXXXX) && \
+    { MLG_RUN_ROOT=$$scratch $(MAKE) --no-print-directory $(2) || \
+      { echo "$(2): failed; its runs are kept in $$scratch" >&2; exit 1; }; }
 
 .PHONY: regress refs
 regress: setup
@@ -31,19 +44,22 @@ regress: setup
 	echo "regress: $(strip $(REGRESS_FIGURES)) agree with tests/reference/"
 
 regress-%: setup
-	rm -rf $(REGRESS_ROOT)/$*
-	MLG_RUN_ROOT=$(abspath $(REGRESS_ROOT)) $(MAKE) --no-print-directory $*
-	$(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $(REGRESS_ROOT)/$*
+	@$(call private_run,$(REGRESS_ROOT),$*); \
+	$(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$*; status=$$?; \
+	$(PYTHON) $(REFERENCE_SET) publish $$scratch/$* $(REGRESS_ROOT)/$* || exit 1; \
+	mkdir -p $(REGRESS_ROOT)/figures; \
+	for f in $$scratch/figures/*; do [ -e "$$f" ] && mv -f "$$f" $(REGRESS_ROOT)/figures/; done; \
+	rm -rf $$scratch; \
+	echo "regress-$*: runs in $(REGRESS_ROOT)/$*/"; exit $$status
 
 refs: setup
 	@set -e; for fig in $(REGRESS_FIGURES); do $(MAKE) --no-print-directory refs-$$fig; done
 
 refs-%: setup
-	rm -rf $(REFS_ROOT)/$*
-	MLG_RUN_ROOT=$(abspath $(REFS_ROOT)) $(MAKE) --no-print-directory $*
-	mkdir -p $(REFERENCE_ROOT)/$*
-	rm -f $(REFERENCE_ROOT)/$*/b.*
-	cp $(REFS_ROOT)/$*/b.* $(REFERENCE_ROOT)/$*/
-	@echo "refs: wrote $(REFERENCE_ROOT)/$*/ ($$(cd $(REFERENCE_ROOT)/$* && echo b.*))"
+	@$(call private_run,$(REFS_ROOT),$*); \
+	$(PYTHON) $(REFERENCE_SET) replace $* $$scratch/$* || \
+	    { echo "refs-$*: $(REFERENCE_ROOT)/$* left as it was; runs in $$scratch" >&2; exit 1; }; \
+	rm -rf $$scratch
 
-TEST_PROGRAMS += tests/test_compare_diagrams.py tests/test_regression_quick.py
+TEST_PROGRAMS += tests/test_compare_diagrams.py tests/test_regression_quick.py \
+                 tests/test_reference_sets.py
