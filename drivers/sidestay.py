@@ -211,7 +211,7 @@ def report(name, title, result, reference):
     with open(path, "w") as out:
         out.write("\n".join(lines) + "\n")
     print("\n".join(f"sidestay: {line}" for line in lines))
-    print(f"sidestay: wrote {os.path.relpath(path, autoglue.ROOT)}")
+    print(f"sidestay: wrote {os.path.relpath(path, paths.ROOT)}")
 
 
 def main():
