@@ -9,9 +9,9 @@
    0   NPAR=  30   THL = {11: 0}    THU = {}
    0   UZSTOP = {'V': 600}
    0   e = '/work/h3/build/models/mlg' s = '/' sv = 'eq'
-   0   parnames = {1: 'V', 2: 'Fstar', 3: 'yfp', 4: 'eps_abs', 5: 'eps_rel', 6: 'c_psi', 7: 'rho', 8: 'mu', 9: 'k_tlk', 10: 'strut_variant', 11: 'T', 13: 'eom_terms', 21: 'psi_amp', 22: 'delta_amp', 23: 'beta_mean', 24: 'beta_amp', 25: 'eta_mean', 26: 'eta_amp', 27: 'freq', 28: 'psi_mean'}
+   0   parnames = {1: 'V', 2: 'Fstar', 3: 'yfp', 4: 'eps_abs', 5: 'eps_rel', 6: 'c_psi', 7: 'rho', 8: 'mu', 9: 'k_tlk', 11: 'T', 13: 'eom_terms', 14: 'strut_variant', 15: 'constants', 21: 'psi_amp', 22: 'delta_amp', 23: 'beta_mean', 24: 'beta_amp', 25: 'eta_mean', 26: 'eta_amp', 27: 'freq', 28: 'psi_mean'}
    0   unames   = {1: 'psi', 2: 'delta', 3: 'beta', 4: 'eta', 5: 'psi_dot', 6: 'delta_dot', 7: 'beta_dot', 8: 'eta_dot', 9: 'lambda_L', 10: 'lambda_R'}
-   0   PAR     = {'V': 0, 'Fstar': 1, 'yfp': 1, 'eps_abs': 0, 'eps_rel': 1.0000000000E-001, 'c_psi': 410, 'rho': 0, 'mu': 0, 'k_tlk': 39000000, 'strut_variant': 0, 'eom_terms': 0}
+   0   PAR     = {'V': 0, 'Fstar': 1, 'yfp': 1, 'eps_abs': 0, 'eps_rel': 1.0000000000E-001, 'c_psi': 410, 'rho': 0, 'mu': 0, 'k_tlk': 39000000, 'eom_terms': 0, 'strut_variant': 0, 'constants': 0}
    0   U       = {'psi': 0, 'delta': 0, 'beta': -9.7415759611E-003, 'eta': 3.9818710056E-001, 'psi_dot': 0, 'delta_dot': 0, 'beta_dot': 0, 'eta_dot': 0, 'lambda_L': 0, 'lambda_R': 0}
    0   User-specified parameters:       'V' 'psi_amp' 'delta_amp' 'beta_mean' 'beta_amp' 'eta_mean' 'eta_amp' 'freq' 'psi_mean'
    0   Active continuation parameter:   'V'
