@@ -2,12 +2,13 @@
 of Fig. 11 (y_fp = 1 mm, epsilon = 0.1 mm absolute, `figures` set).
 
 Every grid cell is an independent job with its own directory
-$MLG_RUN_ROOT/atlas/V<v>_F<f>/ (default build/): build/bin/mlg_simulate is
-started from each of STARTS, each run classified by drivers/attractor.py,
-and the cell's result written to result.json there.  A run that is not
-settled after STAGES[0] seconds is run again for STAGES[1]; still unsettled,
-it is reported as such.  Subcommands (axes as in drivers/jobgrid.py: "a,b,c"
-or "start:stop:step"; the default is DEFAULT_V x DEFAULT_FSTAR):
+$MLG_RUN_ROOT/atlas/V<v>_F<f>/ (default build/) and result file
+result.json there, computed by drivers/atlas_cell.py (the starts, time
+limits and simulations; drivers/attractor.py classifies).  `check` runs the
+simulator for 1 ms per cell, so bad parameters stop the grid before any
+cell runs, with the simulator's message naming them.  Subcommands (axes
+as in drivers/jobgrid.py: "a,b,c" or "start:stop:step"; the default is
+DEFAULT_V x DEFAULT_FSTAR):
 
   atlas.py check   [--V L --Fstar L]   validate every cell (no simulation)
   atlas.py targets [--V L --Fstar L]   the result files, for make
