@@ -2,9 +2,12 @@
 # included by ../Makefile after figures.mk.  One job per group of
 # assumptions (drivers/criterion.py GROUPS), so `make -j2 criterion` runs
 # them side by side; `criterion` prints the table and draws the figure.
-CRITERION_DIR := $(or $(MLG_RUN_ROOT),build)/criterion
+# Results are recomputed when the driver, magnitude.py or an input of the
+# cached figures (COMPUTE_INPUTS of figures.mk: shared layer, constants,
+# model) is newer.
+CRITERION_DIR := $(RUN_ROOT)/criterion
 CRITERION_GROUPS := strut stage c_psi tyre
-CRITERION_DEPS := drivers/criterion.py drivers/magnitude.py $(AUTO_DRIVER_DEPS)
+CRITERION_DEPS := drivers/criterion.py drivers/magnitude.py $(COMPUTE_INPUTS) | auto
 
 $(CRITERION_DIR)/%.json: $(CRITERION_DEPS)
 	$(PYTHON) drivers/criterion.py scan $*
