@@ -158,7 +158,17 @@ def compute(case):
     base = None
     for mesh in MESHES:
         name = f"po_{mesh[0]}_{mesh[1]}"
-        bd = orbit_branch(rundir, name, values, mesh, DSMAX[case])
+        try:
+            bd = orbit_branch(rundir, name, values, mesh, DSMAX[case])
+        except autoglue.RunError as exc:
+            if base is None:            # the first mesh must succeed
+                raise
+            # a finer mesh that fails (Fig. 10's branch: MX at the fold S
+            # with NCOL = 7) is reported, not a reason to drop the others
+            entry["meshes"].append({"NTST": mesh[0], "NCOL": mesh[1], "error": exc.brief})
+            print(f"torus: {case}: NTST = {mesh[0]}, NCOL = {mesh[1]}: failed: {exc.brief}",
+                  flush=True)
+            continue
         found = crossings(rundir, name)
         entry["meshes"].append({"NTST": mesh[0], "NCOL": mesh[1], "crossings": found})
         print(f"torus: {case}: NTST = {mesh[0]}, NCOL = {mesh[1]}: " + (", ".join(
