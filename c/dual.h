@@ -8,7 +8,7 @@
  *
  * The directions are held in blocks of DUAL_LANES doubles, each a GCC vector
  * that the compiler maps to SIMD instructions whatever the target's width.
- * Every operation is one call of the chain rule d_lin1 / d_lin2.
+ * Every operation is one call of the chain rule d_lin1, d_lin2 or d_lin2_over.
  * vector_field_value.c and the vector_field_jacobian*.c files compile the
  * same model with the two settings. */
 #ifndef MLG_DUAL_H
@@ -32,7 +32,7 @@ typedef struct {
 
 DUAL_INLINE dual d_const(double c) { dual r = {c}; return r; }
 DUAL_INLINE dual d_var(double x, int dir) { (void)dir; return d_const(x); }
-/* r.v = value; dr = sa da + sb db (derivatives only when DUAL_N > 0) */
+/* r.v = value; dr = sa da + sb db, or that over den (derivatives only when DUAL_N > 0) */
 DUAL_INLINE dual d_lin2(double value, dual a, double sa, dual b, double sb)
 {
     (void)a, (void)sa, (void)b, (void)sb;
@@ -41,6 +41,11 @@ DUAL_INLINE dual d_lin2(double value, dual a, double sa, dual b, double sb)
 DUAL_INLINE dual d_lin1(double value, dual a, double sa)
 {
     (void)a, (void)sa;
+    return d_const(value);
+}
+DUAL_INLINE dual d_lin2_over(double value, dual a, double sa, dual b, double sb, double den)
+{
+    (void)a, (void)sa, (void)b, (void)sb, (void)den;
     return d_const(value);
 }
 
@@ -86,6 +91,15 @@ DUAL_INLINE dual d_lin1(double value, dual a, double sa)
     return r;
 }
 
+/* dr = (sa da + sb db) / den: a quotient's rule, rounded as it is written */
+DUAL_INLINE dual d_lin2_over(double value, dual a, double sa, dual b, double sb, double den)
+{
+    dual r;
+    r.v = value;
+    for (int k = 0; k < DUAL_BLOCKS; k++) r.d[k] = (sa * a.d[k] + sb * b.d[k]) / den;
+    return r;
+}
+
 #endif
 
 DUAL_INLINE dual d_add(dual a, dual b) { return d_lin2(a.v + b.v, a, 1.0, b, 1.0); }
@@ -96,7 +110,7 @@ DUAL_INLINE dual d_neg(dual a) { return d_lin1(-a.v, a, -1.0); }
 DUAL_INLINE dual d_div(dual a, dual b)
 {
     double q = a.v / b.v;
-    return d_lin2(q, a, 1.0 / b.v, b, -q / b.v);
+    return d_lin2_over(q, a, 1.0, b, -q, b.v);
 }
 
 /* a + c and a * c for a plain constant c */
@@ -132,7 +146,7 @@ DUAL_INLINE dual d_acos(dual a)
 DUAL_INLINE dual d_atan2(dual y, dual x)
 {
     double den = x.v * x.v + y.v * y.v;
-    return d_lin2(atan2(y.v, x.v), y, x.v / den, x, -y.v / den);
+    return d_lin2_over(atan2(y.v, x.v), y, x.v, x, -y.v, den);
 }
 
 #endif
