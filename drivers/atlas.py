@@ -23,12 +23,12 @@ DEFAULT_V x DEFAULT_FSTAR):
 import argparse
 import json
 import os
-import shlex
 import sys
 import tempfile
 
 import atlas_cell
 import paths
+import jobgrid
 from jobgrid import GridError, axis
 
 ATLAS_DIR = os.path.join(paths.RUN_ROOT, "atlas")
@@ -148,20 +148,8 @@ def main():
         points = grid(args)
     except GridError as exc:
         sys.exit(f"atlas: grid rejected: {exc}")
-    if args.command == "targets":
-        print(" ".join(result_path(*p) for p in points))
-    elif args.command == "jobs":
-        for v, fstar in points:
-            print(f"cd {shlex.quote(paths.ROOT)} && {shlex.quote(sys.executable)} "
-                  f"drivers/atlas.py cell {cell_name(v, fstar)}")
-    elif args.command == "check":
-        check(points)
-    elif args.command == "cell":
-        if args.name is None:
-            parser.error("cell needs V<v>_F<f>")
-        run_cell(args.name)
-    else:
-        summary(points)
+    jobgrid.dispatch("atlas", "cell", args, points, targets=result_path, job_name=cell_name,
+                     run_job=run_cell, check=check, summary=summary)
 
 
 if __name__ == "__main__":

@@ -7,6 +7,10 @@ must be a finite number, and no two may share a job (job names use 6
 significant digits, f"{value:g}").
 """
 import math
+import shlex
+import sys
+
+import paths
 
 
 class GridError(ValueError):
@@ -52,3 +56,28 @@ def axis(text, variable, unit="numbers"):
             names[name] = typed
             values.append(value)
     return values
+
+
+
+def dispatch(tool, job_command, args, points, *, targets, job_name, run_job, check, summary):
+    """The commands every job-grid driver drivers/<tool>.py has: check,
+    targets, jobs (one shell line per job, for make, GNU parallel or Slurm),
+    summary, and job_command NAME (one job).  A missing or rejected job name
+    (ValueError from run_job) ends the process with a message naming it."""
+    if args.command == "targets":
+        print(" ".join(targets(*p) for p in points))
+    elif args.command == "jobs":
+        for point in points:
+            print(f"cd {shlex.quote(paths.ROOT)} && {shlex.quote(sys.executable)} "
+                  f"drivers/{tool}.py {job_command} {job_name(*point)}")
+    elif args.command == "check":
+        check(points)
+    elif args.command == "summary":
+        summary(points)
+    elif args.name is None:
+        sys.exit(f"{tool}: {job_command} needs a job name, e.g. {job_name(*points[0])}")
+    else:
+        try:
+            run_job(args.name)
+        except ValueError as exc:
+            sys.exit(f"{tool}: {args.name} rejected: {exc}")

@@ -19,14 +19,13 @@ import argparse
 import json
 import math
 import os
-import shlex
 import sys
 import time
 
 import paths
+import jobgrid
 from jobgrid import GridError, axis
 
-ROOT = paths.ROOT
 SWEEP_DIR = os.path.join(paths.RUN_ROOT, "sweep")
 DEFAULT_GRID = "-10,0,10"
 V_START, V_STOP = 0.5, 600.0
@@ -128,23 +127,8 @@ def main():
         points = grid(args)
     except GridError as exc:
         sys.exit(f"sweep: grid rejected: {exc}")
-    if args.command == "targets":
-        print(" ".join(result_path(*p) for p in points))
-    elif args.command == "jobs":
-        for rho, mu in points:
-            print(f"cd {shlex.quote(ROOT)} && {shlex.quote(sys.executable)} drivers/sweep.py "
-                  f"point {point_name(rho, mu)}")
-    elif args.command == "check":
-        check(points)
-    elif args.command == "point":
-        if args.name is None:
-            parser.error("point needs rho<deg>_mu<deg>")
-        try:
-            run_point(args.name)
-        except ValueError as exc:
-            sys.exit(f"sweep: {args.name} rejected: {exc}")
-    else:
-        summary(points)
+    jobgrid.dispatch("sweep", "point", args, points, targets=result_path, job_name=point_name,
+                     run_job=run_point, check=check, summary=summary)
 
 
 if __name__ == "__main__":
