@@ -8,7 +8,8 @@ inside R1.  Fig. 19 reads kappa* from its cached result.
 a, b, c and the region map come from the eigenvalues of straight rolling
 (magnitude.window_points, magnitude.growth) on an F* grid; a and b are also
 continued by AUTO as curves of Hopf points at V = 120 m/s in (y_fp, F*) as a
-check."""
+check.  The regions drawn are bounded by the curves a, b, c and the
+pitchfork; the cells of the eigenvalue grid only label them (regionmap)."""
 import matplotlib.pyplot as plt
 import numpy
 from matplotlib.colors import ListedColormap
@@ -19,6 +20,7 @@ import magnitude as mg
 import paper_table
 import paths
 import plotting
+import regionmap
 import results
 
 FSTARS = mg.ENVELOPE_LOADS
@@ -115,16 +117,43 @@ def compute(name="fig18", variant=0):
                      for name_runs in auto.values() for run in name_runs]}
 
 
+RASTER_KAPPA = numpy.geomspace(MAP_KAPPA[0], MAP_KAPPA[-1], 600)
+EDGES = ("a", "b", "c", "p")   # the curves bounding the regions
+BEYOND = 10.0                  # a point at infinity is drawn this far beyond the plot
+
+
+def edge_curves(points):
+    """The curves a, b, c, p as (y_fp/eps, F*) polylines; a point that does
+    not exist (None: no crossing for y_fp up to YFP_MAX, beyond the plot) is
+    placed beyond the plot's right edge, so the curve leaves through it."""
+    Fs = [p["Fstar"] for p in points]
+    return {name: ([BEYOND * MAP_KAPPA[-1] if p[name] is None or not numpy.isfinite(p[name])
+                    else p[name] / mg.EPSILON for p in points], Fs) for name in EDGES}
+
+
+def painted_regions(points, grid, raster_F):
+    """[F*, y_fp/eps] on raster_F x RASTER_KAPPA: the region index of each
+    piece between the curves a, b, c, p, labelled by the eigenvalue grid's
+    cells inside it (regionmap.paint); and the check of the labels."""
+    samples = numpy.full((len(raster_F), len(RASTER_KAPPA)), -1, dtype=int)
+    rows = numpy.rint(regionmap.index_of(raster_F, FSTARS)).astype(int)
+    cols = numpy.rint(regionmap.index_of(RASTER_KAPPA, MAP_KAPPA)).astype(int)
+    samples[numpy.ix_(rows, cols)] = grid
+    edges = regionmap.curve_pixels(RASTER_KAPPA, raster_F, edge_curves(points).values())
+    return regionmap.paint(edges, samples)
+
+
 def plot(result):
     paper_table.report(result["name"], result["numbers"])
     points, auto, kappa = result["points"], result["auto"], result["kappa_star"]
-    grid = numpy.asarray(result["grid"])
+    raster_F = numpy.linspace(FSTARS[0], FSTARS[-1], 400)   # where the curves are known
+    painted, check = painted_regions(points, numpy.asarray(result["grid"]), raster_F)
+    print(f"{result['name']}: {check['disagree']} of {check['samples']} grid cells disagree "
+          "with the region between the curves that holds them")
     fig, ax = plt.subplots(figsize=(7.5, 5.5))
-    edges_k = numpy.sqrt(MAP_KAPPA[1:] * MAP_KAPPA[:-1])
-    edges_k = numpy.r_[MAP_KAPPA[0] ** 2 / edges_k[0], edges_k, MAP_KAPPA[-1] ** 2 / edges_k[-1]]
-    edges_F = numpy.r_[FSTARS - 0.025, FSTARS[-1] + 0.025]
-    ax.pcolormesh(edges_k, edges_F, grid, cmap=ListedColormap(COLOURS), vmin=-0.5,
-                  vmax=len(REGIONS) - 0.5, alpha=0.8)
+    ax.grid(False)
+    ax.pcolormesh(RASTER_KAPPA, raster_F, painted, cmap=ListedColormap(COLOURS), vmin=-0.5,
+                  vmax=len(REGIONS) - 0.5, alpha=0.8, shading="nearest", rasterized=True)
     Fs = [p["Fstar"] for p in points]
     for name, style in (("a", "b-"), ("b", "b--"), ("c", "g-"), ("p", "k:")):
         ys = [numpy.nan if p[name] is None else p[name] / mg.EPSILON for p in points]
@@ -136,7 +165,7 @@ def plot(result):
     handles = ax.get_legend_handles_labels()[0] + [
         Patch(facecolor=colour, edgecolor="0.4", alpha=0.8, label=name)
         for colour, name in zip(COLOURS, REGIONS)]   # edged: R1 is white
-    ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0] - 0.025, 2.025),
+    ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0], FSTARS[-1]),
            xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$",
            title=rf"Fig. 18, strut variant {result['variant']}: straight rolling for "
                  rf"V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm (hatched: $y_{{fp}}/\epsilon < "

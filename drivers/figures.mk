@@ -77,14 +77,14 @@ fig06 fig06-plot: $(MLG_SHARED) | packages
 	$(PYTHON) drivers/fig06.py
 
 $(eval $(call cached_figure,fig10))
-$(eval $(call cached_figure,fig11))
+$(eval $(call cached_figure,fig11,drivers/regionmap.py))
 $(eval $(call cached_figure,fig12))
 # Fig. 12 with the printed strut spring (strut variant 1).
 $(eval $(call cached_figure,fig12_v1,,fig12,--strut-variant 1))
 
 FIGURES += fig06 fig10 fig11 fig12 fig12_v1
 REGRESS_FIGURES += fig10 fig12
-TEST_PROGRAMS += tests/test_freeplay_diagrams.py
+TEST_PROGRAMS += tests/test_freeplay_diagrams.py tests/test_regionmap.py
 
 # Sweep over side-stay angles (drivers/sweep.py; degrees, comma-separated):
 #   make -j2 sweep SWEEP_RHO=-10,0,10 SWEEP_MU=-10,0,10
