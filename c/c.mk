@@ -10,10 +10,6 @@ $(MLG_OBJECTS): build/obj/%.o: c/%.c $(MLG_HEADERS)
 	@mkdir -p $(@D)
 	$(CC) $(MLG_CFLAGS) -fPIC -c $< -o $@
 
-# Dual numbers (dual.h) hold their derivatives in SIMD blocks, passed between
-# internal functions of one file: GCC's note on the vector-passing ABI does not apply.
-build/obj/vector_field_jacobian.o build/obj/vector_field_jacobian_states.o: MLG_CFLAGS += -Wno-psabi
-
 $(MLG_LIB): $(MLG_OBJECTS)
 	@mkdir -p $(@D)
 	rm -f $@

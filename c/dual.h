@@ -7,10 +7,12 @@
  *   DUAL_N == n  : value plus n directional derivatives, exact to rounding.
  *
  * The directions are held in blocks of DUAL_LANES doubles, each a GCC vector
- * that the compiler maps to SIMD instructions whatever the target's width.
+ * that the compiler maps to SIMD instructions.  Two lanes are the SSE2 width
+ * of every x86-64: a vector wider than the target's registers is split
+ * through memory and cost the Jacobian twice as much.
  * Every operation is one call of the chain rule d_lin1, d_lin2 or d_lin2_over.
- * vector_field_value.c and the vector_field_jacobian*.c files compile the
- * same model with the two settings. */
+ * vector_field_value.c and vector_field_jacobian.c compile the same model
+ * with the two settings. */
 #ifndef MLG_DUAL_H
 #define MLG_DUAL_H
 
@@ -20,7 +22,7 @@
 
 #include <math.h>
 
-#define DUAL_LANES 4
+#define DUAL_LANES 2
 #define DUAL_BLOCKS ((DUAL_N + DUAL_LANES - 1) / DUAL_LANES)
 #define DUAL_INLINE static inline __attribute__((always_inline))
 
@@ -62,7 +64,7 @@ DUAL_INLINE dual d_const(double c)
 {
     dual r;
     r.v = c;
-    for (int k = 0; k < DUAL_BLOCKS; k++) r.d[k] = (dual_block){0.0, 0.0, 0.0, 0.0};
+    for (int k = 0; k < DUAL_BLOCKS; k++) r.d[k] = (dual_block){0.0};
     return r;
 }
 

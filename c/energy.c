@@ -34,7 +34,7 @@ int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
     const double beta_dot = u[MLG_BETA_DOT], eta_dot = u[MLG_ETA_DOT];
     if (!(eta > 0.0 && eta < p->z_tlk0) || !(eta_ref > 0.0 && eta_ref < p->z_tlk0))
         return MLG_ETA_OUT_OF_STROKE;
-    model_parameters mp = model_parameters_seed(p);
+    model_parameters mp = model_parameters_seed(p, MLG_PARS_PLAIN);
     sidestay g = sidestay_geometry(&mp);
     double sin_p = g.sin_p.v, cos_p = g.cos_p.v;
     double psi_s = psi + beta * sin_p, theta_a = psi_s + g.m.v;       /* after eq. (6) */

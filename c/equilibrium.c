@@ -54,7 +54,7 @@ int mlg_equilibrium(const mlg_params *p_in, double eta_guess, double u[MLG_NX])
     if (p.V < 1.0) p.V = 1.0;
     memset(u, 0, sizeof(double) * MLG_NX);
     if (eta_guess <= 0.0) {
-        model_parameters mp = model_parameters_seed(&p);
+        model_parameters mp = model_parameters_seed(&p, MLG_PARS_PLAIN);
         sidestay g = sidestay_geometry(&mp);
         eta_guess = smallest_axial_root(&p, g.H1.v + g.H3.v);
         if (eta_guess <= 0.0) return -1;

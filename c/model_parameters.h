@@ -1,15 +1,16 @@
 /* The continuation parameters as dual numbers, seeded for df/dp, beside the
- * plain constants.  Derivative direction MLG_DIR_PAR0 + k is PAR(k+1), in
- * PAR units.  The model reads parameters only through this struct: a
- * continuation parameter is a dual, everything else is in mlg_constants. */
+ * plain constants.  Derivative direction dir_par1 + k is PAR(k+1), in PAR
+ * units; directions outside 0..DUAL_N-1 are not seeded.  The model reads
+ * parameters only through this struct: a continuation parameter is a dual,
+ * everything else is in mlg_constants. */
 #ifndef MLG_MODEL_PARAMETERS_H
 #define MLG_MODEL_PARAMETERS_H
 
 #include "dual.h"
 #include "mlg_model.h"
 
-/* Derivative direction of PAR(1): right after the states. */
-#define MLG_DIR_PAR0 MLG_NX
+/* dir_par1 that seeds no parameter (df/du alone, or plain doubles) */
+#define MLG_PARS_PLAIN (-(1 << 20))
 
 typedef struct {
     const mlg_constants *c;  /* every constant and switch, plain */
@@ -17,9 +18,9 @@ typedef struct {
 } model_parameters;
 
 /* PAR(k+1) as an independent variable, in PAR units */
-#define PAR_VAR(p, name) d_var((p)->name, MLG_DIR_PAR0 + MLG_PAR_##name)
+#define PAR_VAR(p, name) d_var((p)->name, dir_par1 + MLG_PAR_##name)
 
-static inline model_parameters model_parameters_seed(const mlg_params *p)
+static inline model_parameters model_parameters_seed(const mlg_params *p, int dir_par1)
 {
     model_parameters mp;
     mp.c = &p->constants;

@@ -1,8 +1,8 @@
 /* Assembly of the vector field u' = f(u; p), in the order of sections II-III:
  * geometry, structure, torque links, eq. (4)'s dynamic load, the tyres
  * (eqs. 5-9), the generalised moments (eqs. 10-12) and eqs. (1)-(4).
- * Included by vector_field_value.c (DUAL_N = 0) and the
- * vector_field_jacobian*.c files (DUAL_N > 0); see dual.h. */
+ * Included by vector_field_value.c (DUAL_N = 0) and vector_field_jacobian.c
+ * (DUAL_N = 10); see dual.h. */
 #ifndef MLG_VECTOR_FIELD_H
 #define MLG_VECTOR_FIELD_H
 
@@ -21,14 +21,16 @@ static inline void describe(const gear_state *x, dual F_dyn, dual F_keta, dual F
                             const dual M[3], mlg_diagnostics *d);
 static inline void describe_tyre(const tyre_contact *t, int i, dual F, mlg_diagnostics *d);
 
-static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], dual f[MLG_NX],
-                               mlg_diagnostics *diag)
+/* u: the states, seeded by the caller; PAR(1) is derivative direction dir_par1
+ * (model_parameters_seed) */
+static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], int dir_par1,
+                               dual f[MLG_NX], mlg_diagnostics *diag)
 {
     for (int i = 0; i < MLG_NX; i++) f[i] = d_const(0.0);
     int status = domain_status(p, u);
     if (status != MLG_OK) return status;
     const dual psi = u[MLG_PSI], delta = u[MLG_DELTA], beta = u[MLG_BETA], eta = u[MLG_ETA];
-    model_parameters mp = model_parameters_seed(p);
+    model_parameters mp = model_parameters_seed(p, dir_par1);
     gear_rates w = {.psi_dot = u[MLG_PSI_DOT], .delta_dot = u[MLG_DELTA_DOT],
                     .beta_dot = u[MLG_BETA_DOT], .eta_dot = u[MLG_ETA_DOT]};
     gear_state x = {.mp = &mp, .eom = (int)p->eom_terms, .delta = delta, .beta = beta, .eta = eta};

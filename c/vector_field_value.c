@@ -11,7 +11,7 @@ int mlg_rhs(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX])
 {
     dual x[MLG_NX], fx[MLG_NX];
     load_state(u, x);
-    int status = vector_field(p, x, fx, NULL);
+    int status = vector_field(p, x, MLG_PARS_PLAIN, fx, NULL);
     for (int i = 0; i < MLG_NX; i++) f[i] = fx[i].v;
     return status;
 }
@@ -20,7 +20,7 @@ int mlg_diagnose(const mlg_params *p, const double u[MLG_NX], mlg_diagnostics *o
 {
     dual x[MLG_NX], fx[MLG_NX];
     load_state(u, x);
-    return vector_field(p, x, fx, out);
+    return vector_field(p, x, MLG_PARS_PLAIN, fx, out);
 }
 
 double mlg_r_tlk(const mlg_params *p, double eta)
