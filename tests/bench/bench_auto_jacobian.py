@@ -2,7 +2,9 @@
 Jacobian (JAC=1) and with AUTO's finite differences (JAC=0), the same run,
 one after the other.  Printed: wall time, and the CPU time of AUTO's process
 alone (children's user + system time), which load from other processes and
-Python's reading of the output do not enter; the ratio of each."""
+Python's reading of the output do not enter; the ratio of each.  Where perf
+works, the run is recorded with it and the profile split follows
+(perf_split.py: model library, libm, AUTO, OpenMP runtime, Python)."""
 import os
 import resource
 import sys
@@ -12,8 +14,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "drivers"))
 import autoglue  # noqa: E402
 import continuation as ct  # noqa: E402
+import perf_split  # noqa: E402
 
 RUNDIR = os.path.join(autoglue.BUILD, "bench", "auto-jacobian")
+UNDER_PERF = "MLG_BENCH_UNDER_PERF"    # set in the recorded child
 
 
 def children_cpu():
@@ -41,5 +45,23 @@ def main():
           f"{cpu[0] / cpu[1]:.2f} CPU in AUTO")
 
 
+def profiled():
+    """main() under perf record, then the split; main() alone where perf does not work."""
+    why_not = perf_split.available()
+    if why_not is not None:
+        print(f"bench_auto_jacobian: no profile ({why_not})")
+        main()
+        return
+    data = RUNDIR + ".perf.data"       # beside the run directory, which each run replaces
+    os.makedirs(os.path.dirname(data), exist_ok=True)
+    status = perf_split.record([sys.executable, os.path.abspath(__file__)], data,
+                               env=dict(os.environ, **{UNDER_PERF: "1"}))
+    if status != 0:
+        sys.exit(f"bench_auto_jacobian: the recorded run failed (exit {status})")
+    objects = [os.path.join(autoglue.BUILD, "lib", "libmlg.a"),
+               os.path.join(autoglue.BUILD, "models", "mlg.o")]
+    perf_split.print_split(perf_split.split(data, objects), ["eq", "JAC=1", "JAC=0"])
+
+
 if __name__ == "__main__":
-    main()
+    main() if os.environ.get(UNDER_PERF) else profiled()
