@@ -49,6 +49,30 @@ def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None):
                         fontsize=8)
 
 
+def surface(ax, quads, stable, alpha=(0.45, 0.85), light=(-0.4, -1.0, 1.2)):
+    """Quadrilaterals (n, 4, 3) in the data coordinates of a 3-D axes (its
+    limits set) as one polygon collection, so that mplot3d sorts them by
+    depth together: green where `stable`, red where not (alpha: their
+    opacities, the stable one lower so that unstable sheets under stable
+    ones show), each darkened by the angle between its normal (in the axes'
+    box units) and the light."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    box = numpy.array([numpy.ptp(lim) or 1.0 for lim in
+                       (ax.get_xlim3d(), ax.get_ylim3d(), ax.get_zlim3d())])
+    q = quads / box
+    normal = numpy.cross(q[:, 2] - q[:, 0], q[:, 3] - q[:, 1])
+    length = numpy.linalg.norm(normal, axis=1)
+    light = numpy.asarray(light) / numpy.linalg.norm(light)
+    facing = numpy.where(length > 0, numpy.abs(normal @ light) / numpy.maximum(length, 1e-300),
+                         1.0)
+    base = numpy.where(numpy.asarray(stable)[:, None], matplotlib.colors.to_rgb(STABLE),
+                       matplotlib.colors.to_rgb(UNSTABLE))
+    opacity = numpy.where(stable, alpha[0], alpha[1])
+    colours = numpy.c_[base * (0.55 + 0.45 * facing[:, None]), opacity]
+    ax.add_collection3d(Poly3DCollection(quads, facecolors=colours, edgecolors=colours,
+                                         linewidths=0.2, zorder=1))
+
+
 def save(fig, name):
     """Write $MLG_RUN_ROOT/figures/<name>.png and .pdf (each written beside
     and renamed, so a reader never sees half a file) and close fig."""
