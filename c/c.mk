@@ -10,6 +10,21 @@ $(MLG_OBJECTS): build/obj/%.o: c/%.c $(MLG_HEADERS)
 	@mkdir -p $(@D)
 	$(CC) $(MLG_CFLAGS) -fPIC -c $< -o $@
 
+# On x86-64 the Jacobian is built a second time for AVX2 (4-wide blocks, about
+# 1.5 times faster), chosen at run time on CPUs that have it (jacobian_dispatch.c);
+# -ffp-contract=off (as -std=c11 implies): no fused multiply-add, so that both
+# builds round alike.  MLG_AVX2=no builds the generic one only.
+MLG_AVX2 ?= $(if $(filter x86_64-%,$(shell $(CC) -dumpmachine)),yes,no)
+ifeq ($(MLG_AVX2),yes)
+MLG_JACOBIAN_AVX2 := build/obj/vector_field_jacobian_avx2.o
+$(MLG_JACOBIAN_AVX2): c/vector_field_jacobian.c $(MLG_HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(MLG_CFLAGS) -mavx2 -ffp-contract=off \
+	    -DMLG_JACOBIAN_VARIANT=mlg_rhs_jacobian_avx2 -fPIC -c $< -o $@
+MLG_OBJECTS += $(MLG_JACOBIAN_AVX2)
+MLG_CFLAGS += -DMLG_HAVE_AVX2_VARIANT
+endif
+
 $(MLG_LIB): $(MLG_OBJECTS)
 	@mkdir -p $(@D)
 	rm -f $@

@@ -7,9 +7,8 @@
  *   DUAL_N == n  : value plus n directional derivatives, exact to rounding.
  *
  * The directions are held in blocks of DUAL_LANES doubles, each a GCC vector
- * that the compiler maps to SIMD instructions.  Two lanes are the SSE2 width
- * of every x86-64: a vector wider than the target's registers is split
- * through memory and cost the Jacobian twice as much.
+ * that the compiler maps to SIMD instructions, as wide as the target's
+ * registers: a wider vector is split through memory (twice the cost).
  * Every operation is one call of the chain rule d_lin1, d_lin2 or d_lin2_over.
  * vector_field_value.c and vector_field_jacobian.c compile the same model
  * with the two settings. */
@@ -22,7 +21,13 @@
 
 #include <math.h>
 
+/* Two lanes, the SSE2 width of every x86-64; four in a unit built for AVX
+ * (the AVX2 variant of the Jacobian, c/c.mk) */
+#ifdef __AVX__
+#define DUAL_LANES 4
+#else
 #define DUAL_LANES 2
+#endif
 #define DUAL_BLOCKS ((DUAL_N + DUAL_LANES - 1) / DUAL_LANES)
 #define DUAL_INLINE static inline __attribute__((always_inline))
 

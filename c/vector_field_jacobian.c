@@ -4,15 +4,20 @@
  * one of twenty: each pass's duals stay small enough to live in registers,
  * and each direction's derivative is computed by the same operations, so the
  * columns are those of a single wide pass to the bit. */
-#include "mlg_model.h"
+#include "jacobian_variants.h"
 #define DUAL_N 10    /* a literal for #if: MLG_NX */
 #include "vector_field.h"
+
+/* c/c.mk builds this file once per variant under the variant's name */
+#ifndef MLG_JACOBIAN_VARIANT
+#define MLG_JACOBIAN_VARIANT mlg_rhs_jacobian_generic
+#endif
 
 _Static_assert(DUAL_N == MLG_NX, "one derivative direction per state");
 _Static_assert(MLG_NPAR <= DUAL_N, "a derivative direction for every PAR in the second pass");
 
-int mlg_rhs_jacobian(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX],
-                     double dfdu[MLG_NX * MLG_NX], double dfdp[MLG_NX * MLG_NPAR])
+int MLG_JACOBIAN_VARIANT(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX],
+                         double dfdu[MLG_NX * MLG_NX], double dfdp[MLG_NX * MLG_NPAR])
 {
     dual x[MLG_NX], fx[MLG_NX];
     for (int i = 0; i < MLG_NX; i++) x[i] = d_var(u[i], i);
