@@ -23,6 +23,6 @@ fig19 fig19-plot: $(call result,fig18) $(call result,fig18_v1) $(MLG_SHARED)
 
 FIGURES += $(MAGNITUDE_FIGURES) fig18_v1
 TEST_PROGRAMS += tests/test_magnitude.py tests/test_driver_layer.py tests/test_surfaces.py
-# Reference diagrams: fig13 (about 2 min) and fig18 (its AUTO check of a and
-# b in F*; about 13 min, mostly the eigenvalue scans).
-REGRESS_FIGURES += fig13 fig18
+# Reference diagrams: fig13 (about 2 min), fig14 (about 5 min) and fig18 (its
+# AUTO check of a and b in F*; about 13 min, mostly the eigenvalue scans).
+REGRESS_FIGURES += fig13 fig14 fig18

@@ -1,8 +1,10 @@
 """Reference sets (tests/regression/reference_set.py) on copies of the fig07
 set in a scratch root: every stored set matches its MANIFEST; a deleted,
 extra or edited file is an error naming it; a run writing a b-file the set
-lacks is reported, unless the set's runs.json leaves it out; and `replace` killed at each of its steps, or after a
-few delays, leaves either the complete old set or the complete new one."""
+lacks is reported, unless the set's runs.json leaves it out; `replace`
+killed at each of its steps, or after a few delays, leaves either the
+complete old set or the complete new one; and the figures `make regress`
+runs ($REGRESS_FIGURES) are exactly those with a set."""
 import glob
 import os
 import shutil
@@ -29,6 +31,21 @@ def stored_sets():
             check(f"{os.path.basename(directory)}: {len(runs)} runs match its MANIFEST", runs)
         except rs.SetError as exc:
             check(f"{os.path.basename(directory)}: matches its MANIFEST", False, str(exc))
+
+
+def coverage():
+    """REGRESS_FIGURES (exported by tests/regression/regression.mk) and the
+    sets in tests/reference/ name the same figures: a set nobody runs, or a
+    registered figure without one, is named."""
+    registered = set(os.environ.get("REGRESS_FIGURES", "").split())
+    if not check("REGRESS_FIGURES names the figures `make regress` runs (set by the Makefile)",
+                 registered, "REGRESS_FIGURES is empty or unset: run through `make test`"):
+        return
+    stored = {os.path.basename(d) for d in glob.glob(os.path.join(cd.REFERENCE_ROOT, "*"))}
+    check(f"make regress runs every figure with a reference set ({len(stored)})",
+          not stored - registered, f"sets not in REGRESS_FIGURES: {sorted(stored - registered)}")
+    check("every figure of REGRESS_FIGURES has a reference set",
+          not registered - stored, f"no tests/reference/<fig>/ for {sorted(registered - stored)}")
 
 
 def copy_set(name):
@@ -163,6 +180,7 @@ def main():
     global OLD_RUNS
     os.makedirs(WORK, exist_ok=True)
     stored_sets()
+    coverage()
     OLD_RUNS = rs.verify(os.path.join(cd.REFERENCE_ROOT, FIGURE))
     manifest_errors()
     interrupts()

@@ -17,7 +17,12 @@
 # A figure <fig> of REGRESS_FIGURES is a make target whose driver writes its
 # runs to $MLG_RUN_ROOT/<fig>/ (drivers/paths.py: rundir; default build/).
 # REGRESS_QUICK lists the fast ones that `make test` also compares
-# (tests/test_regression_quick.py). A failed figure run keeps its private
+# (tests/test_regression_quick.py). REGRESS_WITH_<fig> names figures drawn
+# from <fig>'s cached result that run no AUTO of their own:
+# regress-<fig> and refs-<fig> make them too, from the same private runs, so
+# a change that breaks them fails there; <fig>'s set holds their curves.
+# tests/test_reference_sets.py checks that REGRESS_FIGURES and the sets in
+# tests/reference/ name the same figures. A failed figure run keeps its private
 # directory (named in the message) for its logs.
 # Only the refs recipes write into tests/reference/.
 REGRESS_ROOT := build/regress
@@ -25,12 +30,13 @@ REFS_ROOT := build/refs
 REFERENCE_ROOT := tests/reference
 COMPARE := tests/regression/compare_diagrams.py
 REFERENCE_SET := tests/regression/reference_set.py
-export REGRESS_QUICK
+export REGRESS_QUICK REGRESS_FIGURES
 
 # $(call private_run,<root>,<fig>): shell code that runs figure <fig> with
-# MLG_RUN_ROOT a new directory under <root>, left in $scratch.
+# MLG_RUN_ROOT a new directory under <root>, left in $scratch (with the
+# figures of REGRESS_WITH_<fig>).
 private_run = mkdir -p $(1) && scratch=$$(mktemp -d $(abspath $(1))/.$(2).XXXXXX) && \
-    { MLG_RUN_ROOT=$$scratch $(MAKE) --no-print-directory $(2) || \
+    { MLG_RUN_ROOT=$$scratch $(MAKE) --no-print-directory $(2) $(REGRESS_WITH_$(2)) || \
       { echo "$(2): failed; its runs are kept in $$scratch" >&2; exit 1; }; }
 
 .PHONY: regress refs
