@@ -213,6 +213,9 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
         return reject(msg, n, "parameter tyre_forces = %g must be 0 or 1", p->tyre_forces);
     if (p->F_tyre_min < 0.0)
         return reject(msg, n, "parameter F_tyre_min = %g N must be >= 0", p->F_tyre_min);
+    if (!(p->eta_stage >= 0.0 && p->eta_stage < p->z_tlk0))   /* a position in the stroke */
+        return reject(msg, n, "parameter eta_stage = %g m: the strut's stage switch must lie "
+                      "in the stroke [0, z_tlk0 = %g m)", p->eta_stage, p->z_tlk0);
     if (p->strut_variant != 0.0 && p->strut_variant != 1.0)
         return reject(msg, n, "parameter strut_variant = %g must be 0 (monotone) or 1 "
                       "(as printed)", p->strut_variant);

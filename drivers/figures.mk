@@ -46,6 +46,8 @@ EOM ?= 2
 .PHONY: sidestay
 sidestay: $(AUTO_DRIVER_DEPS)
 	$(if $(and $(RHO),$(MU)),,$(error make sidestay needs RHO=<deg> MU=<deg>))
+	$(if $(filter-out 0 1 2,$(EOM))$(filter-out 1,$(words $(EOM))),$(error make sidestay: \
+	    EOM=$(EOM) must be 0 (as printed), 1 (side-stay corrections) or 2 (complete equations)))
 	$(PYTHON) drivers/sidestay.py --rho $(RHO) --mu $(MU) --eom-terms $(EOM)
 
 # The non-zero geometry with a regression reference (tests/reference/).

@@ -218,7 +218,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rho", type=float, required=True, help="rho [deg]")
     parser.add_argument("--mu", type=float, required=True, help="mu [deg]")
-    parser.add_argument("--eom-terms", type=int, default=2,
+    parser.add_argument("--eom-terms", type=int, default=2, choices=(0, 1, 2),
                         help="0, 1 or 2 (default 2; make variable EOM)")
     args = parser.parse_args()
     name = name_of(args.rho, args.mu)

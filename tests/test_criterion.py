@@ -80,11 +80,15 @@ def stage_family():
 
 
 def parameter_errors():
-    try:
-        mlgmodel.Model(F_tyre_min=-1.0).check()
-        check("criterion: negative F_tyre_min rejected", False, "no error")
-    except ValueError as exc:
-        check("criterion: negative F_tyre_min rejected", "F_tyre_min" in str(exc), str(exc))
+    for name, value, what in (("F_tyre_min", -1.0, "negative F_tyre_min"),
+                              ("eta_stage", -0.05, "stage switch eta_stage below the stroke"),
+                              ("eta_stage", 0.7, "stage switch eta_stage beyond z_tlk0")):
+        try:
+            mlgmodel.Model(**{name: value}).check()
+            check(f"criterion: {what} rejected", False, "no error")
+        except ValueError as exc:
+            check(f"criterion: {what} rejected, naming {name}",
+                  f"parameter {name} = {value:g}" in str(exc), str(exc))
 
 
 if __name__ == "__main__":

@@ -2,7 +2,8 @@
 message naming the parameter; one sweep job gives the critical speed, and
 the mirror image (-rho, -mu) gives the same (docs/model.md 8.5, 8.7).  A
 sweep grid with a repeated point or a non-number is rejected naming
-SWEEP_RHO/SWEEP_MU, and `make clean` never reads the grid.  Two side-stay
+SWEEP_RHO/SWEEP_MU, and `make clean` never reads the grid; a bad EOM stops
+`make sidestay` naming it.  Two side-stay
 runs started 1 s apart that both need the rho = mu = 0 runs: the second
 waits for the first and then reuses its cached runs, with the same numbers;
 the numbers are in a plain-text table and the eom_terms level is printed."""
@@ -34,6 +35,13 @@ def main():
     check("sweep: grid with rho = 95 deg rejected, naming rho",
           proc.returncode != 0 and "parameter rho = 1.65806 rad" in proc.stderr,
           proc.stderr.strip())
+
+    for eom in ("7", "x"):
+        proc = subprocess.run(["make", "-n", "sidestay", "RHO=10", "MU=10", f"EOM={eom}"],
+                              cwd=ROOT, capture_output=True, text=True)
+        check(f"make sidestay EOM={eom}: stops before any run, naming EOM",
+              proc.returncode != 0 and f"EOM={eom} must be 0" in proc.stderr
+              and "sidestay.py" not in proc.stdout, (proc.stdout + proc.stderr).strip()[-300:])
 
     sweep_grids()
     shared_reference()

@@ -53,6 +53,12 @@ int main(void)
     p.strut_variant = 0.5;
     expect_rejected("strut_variant_not_a_switch", p, "parameter strut_variant = 0.5");
     p = table;
+    p.eta_stage = -0.1;
+    expect_rejected("eta_stage_outside_stroke", p, "parameter eta_stage = -0.1 m");
+    p = table;
+    p.eta_stage = 0.7;
+    expect_rejected("eta_stage_beyond_stroke", p, "parameter eta_stage = 0.7 m");
+    p = table;
     p.eom_terms = 3.0;
     expect_rejected("eom_terms_out_of_range", p, "parameter eom_terms = 3");
     p = table;
