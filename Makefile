@@ -57,6 +57,7 @@ include mk/auto.mk
 -include c/c.mk
 -include c/simulate/simulate.mk
 -include models/models.mk
+-include drivers/jobs.mk
 -include drivers/figures.mk
 -include drivers/magnitude.mk
 -include drivers/criterion.mk

@@ -11,28 +11,7 @@ else ifneq ($(ATLAS_GRID),)
 $(error ATLAS_GRID=$(ATLAS_GRID): the only named grid is coarse)
 endif
 ATLAS_ARGS := $(if $(ATLAS_V),--V=$(ATLAS_V)) $(if $(ATLAS_FSTAR),--Fstar=$(ATLAS_FSTAR))
-# The grid is read only when `atlas` is a goal; a rejected grid stops make
-# with atlas.py's message, which names ATLAS_V or ATLAS_FSTAR.
-ifneq ($(filter atlas,$(MAKECMDGOALS)),)
-ATLAS_RESULTS := $(shell $(PYTHON) drivers/atlas.py targets $(ATLAS_ARGS) || echo ATLAS_GRID_REJECTED)
-ifneq ($(filter ATLAS_GRID_REJECTED,$(ATLAS_RESULTS)),)
-$(error atlas: ATLAS_V=$(ATLAS_V) ATLAS_FSTAR=$(ATLAS_FSTAR) rejected (reason above))
-endif
-endif
-ATLAS_ROOT := $(abspath $(or $(MLG_RUN_ROOT),build))/atlas
-ATLAS_CHECKED := $(ATLAS_ROOT)/grid-$(shell printf '%s' '$(ATLAS_ARGS)' | md5sum | cut -c1-12).ok
-ATLAS_DEPS := $(MLG_SIMULATE) drivers/atlas_cell.py drivers/attractor.py drivers/simulator.py
-
-.PHONY: atlas
-atlas: $(ATLAS_RESULTS)
-	$(PYTHON) drivers/atlas.py summary $(ATLAS_ARGS)
-
-$(ATLAS_CHECKED): $(ATLAS_DEPS)
-	@mkdir -p $(@D)
-	$(PYTHON) drivers/atlas.py check $(ATLAS_ARGS)
-	touch $@
-
-$(ATLAS_ROOT)/%/result.json: $(ATLAS_CHECKED) $(ATLAS_DEPS)
-	$(PYTHON) drivers/atlas.py cell $*
+$(eval $(call job_grid,atlas,$(ATLAS_ARGS),$(MLG_SIMULATE) drivers/atlas_cell.py \
+    drivers/attractor.py drivers/simulator.py,cell))
 
 TEST_PROGRAMS += tests/test_atlas.py

@@ -88,31 +88,9 @@ FIGURES += fig06 fig10 fig11 fig12 fig12_v1
 REGRESS_FIGURES += fig10 fig12
 TEST_PROGRAMS += tests/test_freeplay_diagrams.py tests/test_regionmap.py
 
-# Sweep over side-stay angles (drivers/sweep.py; degrees, comma-separated):
+# Sweep over side-stay angles (drivers/sweep.py; degrees, comma-separated),
+# one job per grid point (drivers/jobs.mk):
 #   make -j2 sweep SWEEP_RHO=-10,0,10 SWEEP_MU=-10,0,10
 SWEEP_RHO ?= -10,0,10
 SWEEP_MU ?= -10,0,10
-SWEEP_GRID := --rho=$(SWEEP_RHO) --mu=$(SWEEP_MU)
-# The grid is read only when `sweep` is a goal (never for `make clean`); a
-# rejected grid stops make with sweep.py's message, which names the variable.
-ifneq ($(filter sweep,$(MAKECMDGOALS)),)
-SWEEP_RESULTS := $(shell $(PYTHON) drivers/sweep.py targets $(SWEEP_GRID) || echo SWEEP_GRID_REJECTED)
-ifneq ($(filter SWEEP_GRID_REJECTED,$(SWEEP_RESULTS)),)
-$(error sweep: SWEEP_RHO=$(SWEEP_RHO) SWEEP_MU=$(SWEEP_MU) rejected (reason above))
-endif
-endif
-SWEEP_ROOT := $(abspath $(or $(MLG_RUN_ROOT),build))/sweep
-comma := ,
-SWEEP_CHECKED := $(SWEEP_ROOT)/grid$(subst $(comma),_,$(SWEEP_RHO))x$(subst $(comma),_,$(SWEEP_MU)).ok
-
-.PHONY: sweep
-sweep: $(SWEEP_RESULTS)
-	$(PYTHON) drivers/sweep.py summary $(SWEEP_GRID)
-
-$(SWEEP_CHECKED): $(AUTO_DRIVER_DEPS)
-	@mkdir -p $(@D)
-	$(PYTHON) drivers/sweep.py check $(SWEEP_GRID)
-	touch $@
-
-$(SWEEP_ROOT)/%/result.json: $(SWEEP_CHECKED) $(AUTO_DRIVER_DEPS)
-	$(PYTHON) drivers/sweep.py point $*
+$(eval $(call job_grid,sweep,--rho=$(SWEEP_RHO) --mu=$(SWEEP_MU),$(AUTO_DRIVER_DEPS),point))
