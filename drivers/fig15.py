@@ -1,11 +1,11 @@
 """Fig. 15: the stiffness profiles of Figs. 13 and 14 rescaled,
 x* = y_tlk / y_fp and y* = M_kpsi / (r_tlk k_tlk y_fp): (a) eps = 0.1 y_fp,
-where all coincide, (b) eps = 0.1 mm, where they do not.  Eq. (15) only,
-no continuation."""
+where all coincide, (b) eps = 0.1 mm, where they do not.  Eq. (15) only:
+no continuation, no AUTO import and nothing to cache (it draws in seconds)."""
 import matplotlib.pyplot as plt
 import numpy
 
-import magnitude as mg
+import freeplay_profile as fp
 import plotting
 import mlgmodel
 import paper_table
@@ -14,7 +14,7 @@ SPAN = 3.0   # x* range: |x*| <= SPAN
 
 
 def rescaled(yfp, scaling, k_tlk):
-    y, force = mg.profile(yfp, scaling, k_tlk, span=SPAN)
+    y, force = fp.profile(yfp, scaling, k_tlk, span=SPAN)
     return y / yfp, force / (k_tlk * 1e-3 * yfp)
 
 
@@ -29,8 +29,8 @@ def main():
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
     ours = {}
     for ax, scaling, freeplays, title in (
-            (axes[0], "ratio", mg.FIG13_FREEPLAYS, r"(a) $\epsilon$ = 0.1 $y_{fp}$ (Fig. 13)"),
-            (axes[1], "fixed", mg.FIG14_FREEPLAYS, r"(b) $\epsilon$ = 0.1 mm (Fig. 14)")):
+            (axes[0], "ratio", fp.FIG13_FREEPLAYS, r"(a) $\epsilon$ = 0.1 $y_{fp}$ (Fig. 13)"),
+            (axes[1], "fixed", fp.FIG14_FREEPLAYS, r"(b) $\epsilon$ = 0.1 mm (Fig. 14)")):
         for y in freeplays:
             ax.plot(*rescaled(y, scaling, k_tlk), lw=1.2, label=f"$y_{{fp}}$ = {y:g} mm")
         ax.plot([-SPAN, -1, 1, SPAN], [1 - SPAN, 0, 0, SPAN - 1], "k--", lw=0.8,

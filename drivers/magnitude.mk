@@ -13,10 +13,10 @@ $(eval $(call cached_figure,fig18,drivers/magnitude.py))
 # Fig. 18 with the printed strut spring (strut variant 1).
 $(eval $(call cached_figure,fig18_v1,drivers/magnitude.py,fig18,--strut-variant 1))
 
-# Eq. (15) only (fig15), and the profiles of both Fig. 18 readings' kappa*
-# (fig19): no cache.
+# Eq. (15) only (fig15: no AUTO), and the profiles of both Fig. 18 readings'
+# kappa* (fig19, from their cached results): nothing to cache.
 .PHONY: fig15 fig15-plot fig19 fig19-plot
-fig15 fig15-plot: $(AUTO_DRIVER_DEPS)
+fig15 fig15-plot: $(MLG_SHARED) | packages
 	$(PYTHON) drivers/fig15.py
 fig19 fig19-plot: $(call result,fig18) $(call result,fig18_v1) $(MLG_SHARED)
 	$(PYTHON) drivers/fig19.py

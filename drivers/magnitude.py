@@ -7,9 +7,8 @@ the curves of Hopf points and folds of cycles in (y_fp, V).
     for point in stable_orbits(d, 50.0): ...         # UZ labels at V = 50
     curves = hopf_curves(rundir, "fixed")            # in (y_fp, V)
 
-Scalings (section III): "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1,
-eps_abs = 0), "fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).
-Everything is at F* = 1 unless Fstar is passed.
+Scalings (section III): drivers/freeplay_profile.py.  Everything is at
+F* = 1 unless Fstar is passed.
 """
 import functools
 import os
@@ -19,18 +18,15 @@ import numpy
 import autoglue
 import branches
 import continuation as ct
+from freeplay_profile import (EPSILON, FIG13_FREEPLAYS, FIG14_FREEPLAYS,  # noqa: F401
+                              SCALINGS, profile)
 import mlgmodel
 import paths
 import plotting
 import results
 import spectrum
 
-SCALINGS = {"ratio": {"eps_abs": 0.0, "eps_rel": 0.1},
-            "fixed": {"eps_abs": 0.1, "eps_rel": 0.0}}
-EPSILON = 0.1        # eps/y_fp ("ratio") or eps in mm ("fixed")
 FSTAR = 1.0
-FIG13_FREEPLAYS = (0.2, 0.5, 1.0, 2.0)                 # y_fp [mm], "ratio"
-FIG14_FREEPLAYS = (0.05, 0.098, 0.11, 0.15, 0.35, 1.0)  # y_fp [mm], "fixed"
 V_MIN, V_MAX = 0.5, 200.0    # V = 0 is degenerate (tyre states undetermined)
 V_LIMIT = 120.0              # the speed limit of section IV.E
 V_ORBITS = (15.0, 50.0, 80.0, 110.0)
@@ -160,14 +156,6 @@ def fold_curve(rundir, tag, run, label, figure="magnitude"):
                          DS=0.01, DSMAX=0.5, NMX=1000, THU=THU)
     progress(figure, f"{tag}: fold-of-cycles curve, {sum(len(r[0]) for r in pair)} points")
     return pair
-
-
-def profile(yfp, scaling, k_tlk, span=3.0, n=801):
-    """Eq. (15): (y_tlk [mm], M_kpsi/r_tlk [N]) over |y_tlk| <= span*y_fp."""
-    eps = SCALINGS[scaling]["eps_abs"] + SCALINGS[scaling]["eps_rel"] * yfp
-    y = numpy.linspace(-span * yfp, span * yfp, n)
-    force = [mlgmodel.torque_link_force(k_tlk, 1e-3 * v, 1e-3 * yfp, 1e-3 * eps) for v in y]
-    return y, numpy.array(force)
 
 
 def linear_fit(x, y):
