@@ -4,8 +4,8 @@
 # them side by side; `criterion` prints the table and draws the figure.
 # Results are recomputed when the driver, magnitude.py or an input of the
 # cached figures (COMPUTE_INPUTS of figures.mk: shared layer, constants,
-# model) is newer.
-CRITERION_DIR := $(RUN_ROOT)/criterion
+# model) is newer.  They are parts of the result cache (drivers/results.py).
+CRITERION_DIR := $(RUN_ROOT)/criterion/parts
 CRITERION_GROUPS := strut stage c_psi tyre
 CRITERION_DEPS := drivers/criterion.py drivers/magnitude.py $(COMPUTE_INPUTS) | auto
 

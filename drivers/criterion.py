@@ -11,9 +11,10 @@ which straight rolling is unstable for some V <= 120 m/s (eps = 0.1 mm).
 
 Straight rolling depends on the freeplay only through r = y_fp/eps (the
 torque-link stiffness at y = 0 is k_tlk s(r), eq. 15), so kappa* is exact
-in r.  Results go to build/criterion/<GROUP>.json and auto.json.
+in r.  Results are cached as parts of the result cache (drivers/results.py,
+with their provenance): $MLG_RUN_ROOT/criterion/parts/<GROUP>.json and
+auto.json (default build/).
 """
-import json
 import os
 import sys
 
@@ -25,8 +26,8 @@ import magnitude as mg
 import mlgmodel
 import paths
 import plotting
+import results
 
-OUT = os.path.join(paths.RUN_ROOT, "criterion")
 VARIANTS = (0, 1)
 # The one-parameter family joining the strut variants: the stage-switch
 # position eta_s of the monotone spring (docs/model.md 4.15).  0.34 m is the
@@ -77,20 +78,12 @@ def kappa_star(overrides):
 
 
 def write(name, data):
-    """build/criterion/<name>.json, replaced atomically."""
-    os.makedirs(OUT, exist_ok=True)
-    path = os.path.join(OUT, f"{name}.json")
-    with open(path + ".tmp", "w") as out:
-        json.dump(data, out, indent=1)
-    os.replace(path + ".tmp", path)
+    """The cached part <name> (a group, or "auto") of the criterion."""
+    results.write("criterion", data, "figures", part=name)
 
 
 def read(name):
-    path = os.path.join(OUT, f"{name}.json")
-    if not os.path.exists(path):
-        raise FileNotFoundError(f"criterion: {path} is missing (make criterion)")
-    with open(path) as source:
-        return json.load(source)
+    return results.read("criterion", name)
 
 
 def scan(group):
@@ -265,7 +258,7 @@ def main(argv):
         else:
             sys.exit(f"usage: criterion.py scan {{{','.join(GROUPS)}}} | auto | report | "
                      "custom NAME=VALUE ...")
-    except (autoglue.RunError, ValueError, RuntimeError, FileNotFoundError) as exc:
+    except (autoglue.RunError, ValueError, RuntimeError) as exc:
         sys.exit(f"criterion: {exc}")
 
 
