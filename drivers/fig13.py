@@ -17,11 +17,14 @@ COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red")
 FIT_RANGE = (0.05, 2.0)   # y_fp range of the linear fits [mm]
 
 
-def compute():
-    """One diagram in V per y_fp; the orbits in y_fp with the y_fp = 1 one
-    (in one process: its runs share build/fig13/, as its reference)."""
-    jobs = mg.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=1.0, separate=False)
-    diagrams, orbits = mg.diagrams_of({name: job() for name, job in jobs.items()})
+def parts():
+    """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one),
+    each in its own run directory build/fig13/<part>/."""
+    return mg.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=1.0)
+
+
+def compute(parts):
+    diagrams, orbits = mg.diagrams_of(parts.all())
     return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits}
 
 
@@ -72,4 +75,4 @@ def plot(result):
 
 
 if __name__ == "__main__":
-    results.run_figure("fig13", compute, plot)
+    results.run_figure("fig13", compute, plot, parts)

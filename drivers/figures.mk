@@ -34,7 +34,7 @@ $(1)-plot:
 	$$(PYTHON) drivers/$(or $(3),$(1)).py $(4) --plot
 endef
 
-FIGURES_WITH_PARTS := fig11 fig14 fig16
+FIGURES_WITH_PARTS := fig11 fig13 fig14 fig16
 $(eval $(call cached_figure,fig07))
 $(eval $(call cached_figure,fig09))
 

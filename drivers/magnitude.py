@@ -241,17 +241,15 @@ def stored_diagram(diagram):
             "turns": [(run[0]["V"][0], min(run[0]["V"])) for run in diagram.branches]}
 
 
-def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_ORBITS,
-                 separate=True):
+def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_ORBITS):
     """The parts of a figure made of diagrams in V (results.Parts): one per
     y_fp, named <prefix>y<y_fp>, computing the stored diagram (runs
     <prefix>y<y_fp>_hb<i>, _po<i>, in the part's own run directory
-    $MLG_RUN_ROOT/<figure>/<part>/, or with separate=False all in
-    $MLG_RUN_ROOT/<figure>/); the one at y_fp = orbits_at (named ..._orbits)
-    also continues its stable orbits at V_ORBITS in y_fp."""
+    $MLG_RUN_ROOT/<figure>/<part>/); the one at y_fp = orbits_at (named
+    ..._orbits) also continues its stable orbits at V_ORBITS in y_fp."""
     def job(y, name):
         def run():
-            rundir = paths.rundir(os.path.join(figure, name) if separate else figure)
+            rundir = paths.rundir(os.path.join(figure, name))
             d = diagram_in_V(rundir, f"{prefix}y{y:g}", scaling, y, uzr=uzr, figure=figure)
             out = {"diagram": stored_diagram(d)}
             if y == orbits_at:

@@ -66,7 +66,8 @@ def cache_round_trip():
         import branches
         import numpy
         import results
-        reference = os.path.join(os.path.dirname(HERE), "tests", "reference", "fig13", "b.y1_po0")
+        reference = os.path.join(os.path.dirname(HERE), "tests", "reference", "fig13", "y1_orbits",
+                                 "b.y1_po0")
         bd = autoglue.auto.parseB.parseBR(reference)
         path = results.write("test", {"orbits": results.stored(bd, ("V", "psi_amp", "T")),
                                       "inf": numpy.inf})
