@@ -61,24 +61,35 @@ def plot(data, path_stem):
     plt.close(fig)
 
 
-def main():
+def main(redraw):
+    """Simulate, then plot; with redraw (--plot, `make fig08-plot`) only plot
+    the simulation already in OUT_DIR."""
     os.makedirs(OUT_DIR, exist_ok=True)
     os.makedirs(FIG_DIR, exist_ok=True)
     csv_path = os.path.join(OUT_DIR, "fig08.csv")
-    summary = simulate(csv_path)
+    summary_path = os.path.join(OUT_DIR, "summary.txt")
+    if redraw:
+        if not (os.path.exists(csv_path) and os.path.exists(summary_path)):
+            sys.exit(f"fig08: no simulation in {OUT_DIR} to redraw (run `make fig08`)")
+        with open(summary_path) as f:
+            lines = [line.strip() for line in f if line.strip()]
+    else:
+        summary = simulate(csv_path)
+        lines = [f"{key} {value:.10g}" for key, value in summary.items()]
     data = np.genfromtxt(csv_path, delimiter=",", names=True)
     if data["t"][-1] < T_END - 1e-9:
         sys.exit(f"fig08: simulation stopped at t = {data['t'][-1]} s")
     plot(data, os.path.join(FIG_DIR, "fig08"))
 
-    lines = [f"{key} {value:.10g}" for key, value in summary.items()]
-    with open(os.path.join(OUT_DIR, "summary.txt"), "w") as out:
-        out.write("\n".join(lines) + "\n")
+    if not redraw:
+        with open(summary_path, "w") as out:
+            out.write("\n".join(lines) + "\n")
     print("fig08: settled oscillation over the last second "
           "(amplitude = half peak-to-peak):")
     print("\n".join("  " + line for line in lines))
-    print(f"fig08: wrote {FIG_DIR}/fig08.png, fig08.pdf and {OUT_DIR}/summary.txt")
+    print(f"fig08: wrote {FIG_DIR}/fig08.png, fig08.pdf"
+          + ("" if redraw else f" and {OUT_DIR}/summary.txt"))
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:] == ["--plot"])

@@ -8,10 +8,13 @@ $(MLG_SIMULATE): c/simulate/mlg_simulate.c $(MLG_HEADERS) $(MLG_LIB) | $(PACKAGE
 	@mkdir -p $(@D)
 	$(CC) $(SIM_CFLAGS) $< $(MLG_LIB) $(SIM_LIBS) -o $@
 
-# Fig. 8: 15 s at V = 300 m/s, F* = 0.2, zero freeplay (section IV.A).
-.PHONY: fig08
+# Fig. 8: 15 s at V = 300 m/s, F* = 0.2, zero freeplay (section IV.A);
+# fig08-plot redraws the last simulation (build/fig08/).
+.PHONY: fig08 fig08-plot
 fig08: $(MLG_SIMULATE)
 	$(PYTHON) drivers/fig08.py
+fig08-plot:
+	$(PYTHON) drivers/fig08.py --plot
 
 FIGURES += fig08
 TEST_PROGRAMS += tests/test_simulate.py tests/test_energy.py
