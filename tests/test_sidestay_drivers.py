@@ -4,8 +4,8 @@ the mirror image (-rho, -mu) gives the same (docs/model.md 8.5, 8.7).  A
 sweep grid with a repeated point or a non-number is rejected naming
 SWEEP_RHO/SWEEP_MU, and `make clean` never reads the grid; a bad EOM stops
 `make sidestay` naming it.  Two side-stay
-runs started 1 s apart that both need the rho = mu = 0 runs: the second
-waits for the first and then reuses its cached runs, with the same numbers;
+runs that both need the rho = mu = 0 runs, the second started while the
+first holds them: the second waits for the first and then reuses its cached runs, with the same numbers;
 the numbers are in a plain-text table and the eom_terms level is printed."""
 import json
 import os
@@ -93,10 +93,17 @@ def shared_reference():
                                 env=env, text=True, stdout=subprocess.PIPE,
                                 stderr=subprocess.PIPE)
     first = start("5")
-    time.sleep(1.0)
+    # The second starts once the first holds the rho = mu = 0 directory (its
+    # pid in the lock file), not after a fixed pause a loaded machine outlasts.
+    lock = os.path.join(root, ".sidestay_rho0_mu0.lock")
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and first.poll() is None:
+        if os.path.exists(lock) and f"process {first.pid} " in open(lock).read():
+            break
+        time.sleep(0.05)
     second = start("10")
     (out1, err1), (out2, err2) = first.communicate(timeout=300), second.communicate(timeout=300)
-    if not check("sidestay at 5 and 10 deg, started 1 s apart, both need rho = mu = 0: "
+    if not check("sidestay at 5 and 10 deg, the second started while the first holds rho = mu = 0: "
                  "both succeed", first.returncode == 0 and second.returncode == 0,
                  (err1 + err2)[-800:]):
         return
