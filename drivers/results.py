@@ -240,4 +240,5 @@ def run_figure(figure, compute, plot, parts=None, parameter_set="figures", argv=
         if args.plot or both:
             plot(read(figure))
     except (RuntimeError, ValueError) as exc:
-        sys.exit(f"{figure}: {exc}")
+        message = str(exc)   # a MissingResult already names its figure
+        sys.exit(message if message.startswith(f"{figure}:") else f"{figure}: {message}")
