@@ -32,11 +32,13 @@ COMPARE := tests/regression/compare_diagrams.py
 REFERENCE_SET := tests/regression/reference_set.py
 export REGRESS_QUICK REGRESS_FIGURES
 
-# $(call private_run,<root>,<fig>): shell code that runs figure <fig> with
-# MLG_RUN_ROOT a new directory under <root>, left in $scratch (with the
-# figures of REGRESS_WITH_<fig>).
+# $(call private_run,<root>,<fig>,$(MAKE)): shell code that runs figure <fig>
+# with MLG_RUN_ROOT a new directory under <root>, left in $scratch (with the
+# figures of REGRESS_WITH_<fig>).  The caller writes $(MAKE) in its recipe
+# line so that make sees a recursive call and passes its jobserver on (a
+# $(MAKE) only inside this variable runs the figure's parts at -j1).
 private_run = mkdir -p $(1) && scratch=$$(mktemp -d $(abspath $(1))/.$(2).XXXXXX) && \
-    { MLG_RUN_ROOT=$$scratch $(MAKE) --no-print-directory $(2) $(REGRESS_WITH_$(2)) || \
+    { MLG_RUN_ROOT=$$scratch $(3) --no-print-directory $(2) $(REGRESS_WITH_$(2)) || \
       { echo "$(2): failed; its runs are kept in $$scratch" >&2; exit 1; }; }
 
 .PHONY: regress refs
@@ -50,7 +52,7 @@ regress: setup
 	echo "regress: $(strip $(REGRESS_FIGURES)) agree with tests/reference/"
 
 regress-%: setup
-	@$(call private_run,$(REGRESS_ROOT),$*); \
+	@$(call private_run,$(REGRESS_ROOT),$*,$(MAKE)); \
 	$(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$*; status=$$?; \
 	$(PYTHON) $(REFERENCE_SET) publish $$scratch/$* $(REGRESS_ROOT)/$* || exit 1; \
 	mkdir -p $(REGRESS_ROOT)/figures; \
@@ -62,7 +64,7 @@ refs: setup
 	@set -e; for fig in $(REGRESS_FIGURES); do $(MAKE) --no-print-directory refs-$$fig; done
 
 refs-%: setup
-	@$(call private_run,$(REFS_ROOT),$*); \
+	@$(call private_run,$(REFS_ROOT),$*,$(MAKE)); \
 	$(PYTHON) $(REFERENCE_SET) replace $* $$scratch/$* || \
 	    { echo "refs-$*: $(REFERENCE_ROOT)/$* left as it was; runs in $$scratch" >&2; exit 1; }; \
 	rm -rf $$scratch
