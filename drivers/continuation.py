@@ -38,10 +38,11 @@ class Start:
         self.PAR = self.model.par()
 
 
-def run(rundir, name, kind=None, **kw):
+def run(rundir, name, kind=None, overlay=None, **kw):
     """autoglue.run on the MLG model: the base constants, then the run-type
-    file constants/runs/c.<kind> if given, then the keyword overrides."""
-    files = [CONSTANTS] + ([os.path.join(RUN_CONSTANTS, f"c.{kind}")] if kind else [])
+    file constants/runs/c.<kind> if given, then the overlay file
+    constants/runs/c.<overlay> if given, then the keyword overrides."""
+    files = [CONSTANTS] + [os.path.join(RUN_CONSTANTS, f"c.{k}") for k in (kind, overlay) if k]
     rundir = autoglue.claim(rundir)           # emptied on first use: claim, then write
     mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
     return autoglue.run(rundir, name, constants=files, e=MODEL, **kw)
@@ -226,11 +227,13 @@ def speed_diagram(rundir, parameter_set, values, grid=numpy.linspace(0.5, 600.0,
 
 
 def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, with_period=False,
-               **kw):
+               overlay=None, **kw):
     """Continue the Hopf point `point` in two parameters (with_period: the
-    period PAR(11) printed too)."""
+    period PAR(11) printed too; overlay: constants/runs/c.<overlay> on top
+    of c.hopf_curve)."""
     icp = list(parameters) + MEASURES + ([11] if with_period else [])
-    return run(rundir, name, "hopf_curve", data=point, ICP=icp, UZSTOP=stop or {}, **kw)
+    return run(rundir, name, "hopf_curve", overlay, data=point, ICP=icp, UZSTOP=stop or {},
+               **kw)
 
 
 def fold_icp(parameters):

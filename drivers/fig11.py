@@ -4,13 +4,16 @@ the pitchfork lines, and the zero-freeplay Hopf curve; regions shaded by the
 attractors that coexist there.
 
 The curves are AUTO continuations started from the Fig. 10 special points
-(F* = 1).  The shading is computed, not drawn: the stability of straight
-rolling from the eigenvalues of the exact Jacobian on a fine (V, F*) grid,
-and the stable low-frequency (< 8 Hz) and high-frequency orbits from the
-one-parameter diagrams in V (continuation.speed_diagram and the
-large-amplitude family) on a set of loads, each holding over its band of F*; the
-off-centre-yaw band lies between the pitchforks."""
+(F* = 1).  The regions are bounded by those curves, by the torus points of
+the diagrams in V joined from load to load, and by the edges of the
+straight-rolling stability grid (exact Jacobian eigenvalues); they are
+labelled, not bounded, by the stable low- (< 8 Hz) and high-frequency orbits
+of one-parameter diagrams in V (continuation.speed_diagram and the
+large-amplitude family) on a set of loads (regionmap).  result.json holds
+the map ("region_map": V, Fstar, code per F* row, names) and the curves
+bounding it ("edge_curves") for the attractor atlas."""
 import matplotlib.pyplot as plt
+from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch
 import numpy
 
@@ -19,6 +22,7 @@ import branches
 import continuation as ct
 import paths
 import plotting
+import regionmap
 import results
 import spectrum
 
@@ -45,7 +49,7 @@ def curves(rundir, parameter_set="figures"):
         for sign in (1, -1):
             out["hopf"].append(ct.hopf_curve(
                 rundir, f"hopf{k + 1}{'+-'[sign < 0]}", point, ("Fstar", "V"), stop=STOP,
-                DS=0.002 * sign, DSMAX=0.02, NMX=5000, allow_mx=True))
+                overlay="stage_switch", DS=0.002 * sign, DSMAX=0.02, NMX=5000, allow_mx=True))
     # the fold S, located on an orbit run with the base step sizes (the fold
     # located on Fig. 10's finer-stepped run does not start the fold curve)
     high = ct.periodic_from(rundir, "po_fold", points[-1], stop={"V": [30.0, 200.0]},
@@ -176,7 +180,11 @@ def upper_folds(rundir, first, folds):
     return out
 
 
-ATTRACTORS = {"straight": 1, "low": 2, "high": 4}   # bits of an attractor map code
+ATTRACTORS = {"straight": 1, "low": 2, "high": 4, "yaw": 8, "quasi": 16}  # bits of a code
+NAMES = {1: "straight rolling", 2: "low-frequency shimmy", 4: "high-frequency shimmy",
+         8: "off-centre yaw equilibria", 16: "quasi-periodic shimmy"}
+BAND = "; between the pitchforks: off-centre yaw equilibria (their stability not computed)"
+PIECE_DISAGREEMENT = 0.05   # a piece whose samples disagree more than this is reported
 
 
 def code(kinds):
@@ -184,51 +192,119 @@ def code(kinds):
     return sum(ATTRACTORS[kind] for kind in kinds)
 
 
-def attractor_map(sr_stable, orbits):
-    """[F*, V] on the grid: the code of the set of stable attractors other
-    than the off-centre yaw ("straight", "low", "high") at each point.
-    Straight rolling comes from the eigenvalue grid; the orbits of a slice
-    hold over its band of loads (half way to the neighbouring slices)."""
-    edges = numpy.concatenate(([-numpy.inf], 0.5 * (SLICES[1:] + SLICES[:-1]), [numpy.inf]))
-    band = numpy.searchsorted(edges, F_GRID) - 1
-    found = numpy.zeros(sr_stable.shape, dtype=int)
-    for i, k in enumerate(band):
-        present = {kind: numpy.zeros(len(V_GRID), dtype=bool) for kind in orbits[k]}
-        for kind, intervals in orbits[k].items():
-            for lo, hi in intervals:
-                present[kind] |= (V_GRID >= lo) & (V_GRID <= hi)
-        for j in range(len(V_GRID)):
-            found[i, j] = code([kind for kind in present if present[kind][j]]
-                               + (["straight"] if sr_stable[i, j] else []))
-    return found
+def slice_codes(orbits):
+    """The orbit bits ("low", "high") along V_GRID on one slice, from its
+    stable V-intervals (stable_orbits)."""
+    out = numpy.zeros(len(V_GRID), dtype=int)
+    for kind, intervals in orbits.items():
+        for lo, hi in intervals:
+            out[(V_GRID >= lo) & (V_GRID <= hi)] |= ATTRACTORS[kind]
+    return out
 
 
-REGIONS = [  # (attractors present, colour, key); white: straight rolling only
-    ({"straight", "high"}, "tab:orange", "bistable: straight rolling / high-frequency shimmy"),
-    ({"straight", "low"}, "tab:olive", "bistable: straight rolling / low-frequency shimmy"),
-    ({"low", "high"}, "tab:purple", "bistable: low- / high-frequency shimmy"),
-    ({"straight", "low", "high"}, "tab:brown", "straight rolling, low- and high-frequency"),
-    ({"low"}, "tab:cyan", "low-frequency shimmy"),
-    ({"high"}, "tab:red", "high-frequency shimmy"),
-    (set(), "tab:gray", "no stable equilibrium or orbit found (beyond torus points)"),
-]
+def slice_row(Fstar):
+    return int(numpy.argmin(numpy.abs(F_GRID - Fstar)))
 
 
-def shade(ax, found, pitchforks):
-    """Fill each region of the attractor map; returns the legend patches of
-    the regions present."""
-    handles = []
-    for kinds, colour, key in REGIONS:
-        mask = found == code(kinds)
-        if not mask.any():
-            continue
-        alpha = 0.3 if kinds else 0.15
-        ax.contourf(V_GRID, F_GRID, mask.astype(float), levels=[0.5, 1.5], colors=[colour],
-                    alpha=alpha)
-        handles.append(Patch(color=colour, alpha=alpha, label=key))
+BEYOND = 1.1 * V_MAX   # where the torus locus runs on a slice without a torus point
+
+
+def torus_locus(orbit_rows):
+    """The torus points on the slices: on each slice, the lowest speed from
+    which no stable orbit is found up to V_MAX (the last stable orbit loses
+    stability there), [(V, F*)] per slice, joined from slice to slice.  A
+    slice without one puts the locus at BEYOND (right of the plot: the curve
+    leaves through the right edge between the two slices); the lowest and
+    highest slices' points are held out to F_MIN and F_MAX, so the locus
+    cuts the plane like the continued curves do."""
+    out = []
+    for Fstar, row in orbit_rows:
+        alive = numpy.flatnonzero(row != 0)
+        # an orbit stable up to the last grid speed has no torus point
+        ok = len(alive) and alive[-1] + 2 < len(V_GRID)
+        out.append((V_GRID[alive[-1] + 1] if ok else BEYOND, Fstar))
+    return [(out[0][0], F_MIN)] + out + [(out[-1][0], F_MAX)]
+
+
+def curve_list(drawn, pitchforks, torus):
+    """Every curve that bounds a region: [{"name", "kind", "V", "Fstar"}]
+    (the pitchfork lines as two points each)."""
+    out = []
+    for kind in ("hopf", "fold"):
+        for n, diagram in enumerate(drawn[kind]):
+            for m, branch in enumerate(results.loaded(diagram)):
+                out.append({"name": f"{kind}{n + 1}.{m + 1}", "kind": kind,
+                            "V": branch["V"], "Fstar": branch["Fstar"]})
+    out += [{"name": f"pitchfork{n + 1}", "kind": "pitchfork", "V": [V_MIN, V_MAX],
+             "Fstar": [f, f]} for n, f in enumerate(pitchforks)]
+    V, F = numpy.array(torus, dtype=float).T
+    out.append({"name": "torus_slices", "kind": "torus", "V": V, "Fstar": F})
+    return out
+
+
+def region_map(sr_stable, orbits, edge_curves, pitchforks):
+    """(code [F*, V] on F_GRID x V_GRID, check): the regions bounded by the
+    edge curves (and by the edges of the straight-rolling stability grid,
+    which are the Hopf curves and pitchforks again, closing them where AUTO
+    stopped), each labelled by the attractors the slices find inside it
+    (regionmap.paint).  Straight rolling and the yaw band are exact (grid,
+    pitchfork loads); where a slice finds no stable orbit nor straight
+    rolling beyond the torus points, the attractor is quasi-periodic shimmy
+    (simulations, docs/reproduction.md).  orbits: [(slice load, its orbit
+    bits along V_GRID)]."""
+    samples = numpy.full(sr_stable.shape, -1, dtype=int)
+    for (Fstar, row), (V_torus, _) in zip(orbits, torus_locus(orbits)[1:-1]):
+        samples[slice_row(Fstar)] = numpy.where((V_GRID >= V_torus) & (row == 0),
+                                                ATTRACTORS["quasi"], row)
+    edges = regionmap.curve_pixels(V_GRID, F_GRID, [(c["V"], c["Fstar"]) for c in edge_curves])
+    edges |= regionmap.boundary_pixels(sr_stable.astype(int))
+    painted, check = regionmap.paint(edges, samples)
     lo, hi = min(pitchforks), max(pitchforks)
-    ax.axhspan(lo, hi, color="0.3", alpha=0.35, lw=0)
-    return handles
+    yaw = ((F_GRID >= lo) & (F_GRID <= hi))[:, None] & numpy.ones(len(V_GRID), dtype=bool)
+    found = painted | numpy.where(sr_stable, ATTRACTORS["straight"], 0) \
+        | numpy.where(yaw, ATTRACTORS["yaw"], 0)
+    return found, check
+
+
+COLOURS = {  # by region_key; white: straight rolling only
+    1: "white", 5: "tab:orange", 3: "tab:olive", 6: "tab:purple", 7: "tab:brown",
+    2: "tab:cyan", 4: "tab:red", 16: "tab:gray", 8: "0.85", 0: "k"}
+
+
+def region_key(found):
+    """The code without the yaw bit (hatched on top), except where off-centre
+    yaw is all there is."""
+    return numpy.where(found == ATTRACTORS["yaw"], found, found & ~ATTRACTORS["yaw"])
+
+
+def region_name(value):
+    """The legend text of a region_key."""
+    names = [NAMES[bit] for bit in sorted(NAMES) if value & bit]
+    if not names:
+        return "no stable state found"
+    return ("" if len(names) == 1 else "coexisting: ") + " / ".join(names)
+
+
+def shade(ax, found):
+    """Paint the map (regions by colour, the yaw band hatched); returns the
+    legend patches of the regions present."""
+    key = region_key(found)
+    values = numpy.unique(key).tolist()
+    colours = [COLOURS.get(v, "k") for v in values]
+    half_V, half_F = 0.5 * (V_GRID[1] - V_GRID[0]), 0.5 * (F_GRID[1] - F_GRID[0])
+    ax.imshow(numpy.searchsorted(values, key), cmap=ListedColormap(colours), vmin=-0.5,
+              vmax=len(values) - 0.5, alpha=0.45, origin="lower", aspect="auto",
+              interpolation="nearest", extent=(V_GRID[0] - half_V, V_GRID[-1] + half_V,
+                                               F_GRID[0] - half_F, F_GRID[-1] + half_F))
+    band = F_GRID[((found & ATTRACTORS["yaw"]) != 0).any(axis=1)]
+    ax.fill_between([0, V_MAX], band.min(), band.max(), facecolor="none", edgecolor="0.3",
+                    hatch="///", lw=0)
+    handles = [Patch(facecolor=c, edgecolor="0.4", alpha=0.45, label=region_name(v))
+               for v, c in zip(values, colours)]
+    return handles + [Patch(facecolor="none", edgecolor="0.3", hatch="///",
+                            label="between the pitchforks: off-centre yaw equilibria\n"
+                                  "(straight rolling unstable; their stability\n"
+                                  "in V not computed)")]
 
 
 def stored_curves():
@@ -246,51 +322,105 @@ def parts():
     return jobs
 
 
+def mx_ends(drawn, tol=1e-3):
+    """(joins, open): the MX ends of the drawn curves, those where two curves
+    meet (distance in V/V_MAX and F*/F_MAX below tol: the Hopf curves from
+    H1 and H2 reach their common turning point from both sides, inside the
+    oleo stage switch, and AUTO stops there) as [{"V", "Fstar", "curves"}],
+    and the others [{"V", "Fstar", "curve"}]."""
+    ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "curve": f"{kind}{n + 1}"}
+            for kind in ("hopf", "fold") for n, diagram in enumerate(drawn[kind])
+            for branch in results.loaded(diagram)
+            for i, _, _ in branches.labelled_points(branch, "MX")]
+    joins, used = [], set()
+    for a, p in enumerate(ends):
+        for b in range(a + 1, len(ends)):
+            q = ends[b]
+            if a not in used and b not in used and numpy.hypot(
+                    (p["V"] - q["V"]) / V_MAX, (p["Fstar"] - q["Fstar"]) / F_MAX) < tol:
+                used |= {a, b}
+                joins.append({"V": 0.5 * (p["V"] + q["V"]), "Fstar": 0.5 * (p["Fstar"] + q["Fstar"]),
+                              "curves": [p["curve"], q["curve"]]})
+    return joins, [e for k, e in enumerate(ends) if k not in used]
+
+
 def compute(parts):
     """The parts assembled: the second fold curve (from a slice above the
-    fold S curve's top) and the attractor map."""
+    fold S curve's top), the torus points on the slices, and the region map
+    bounded by the curves (region_map)."""
     stored = parts["curves"]
     slices = {Fstar: parts[f"slice_{Fstar:.4f}"] for Fstar in SLICES}
     large = parts["large"]
     upper = upper_folds(paths.rundir("fig11/upper_folds"), stored["fold"],
                         {Fstar: part["folds"] for Fstar, part in slices.items()})
-    orbits = [stable_orbits(part["branches"] + large.get(f"{Fstar:.4f}", []))
+    orbits = [(Fstar, slice_codes(stable_orbits(part["branches"]
+                                                + large.get(f"{Fstar:.4f}", []))))
               for Fstar, part in slices.items()]
-    found = attractor_map(numpy.asarray(parts["grid"], dtype=bool), orbits)
     drawn = {kind: stored[kind] for kind in ("hopf", "fold", "zero")}
     drawn["fold"] += [results.stored(d, ("V", "Fstar")) for d in upper]
-    return {"curves": drawn, "pitchfork": stored["pitchfork"], "map": found}
+    pitchforks = stored["pitchfork"][1]
+    edges = curve_list(drawn, pitchforks, torus_locus(orbits))
+    found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
+                              pitchforks)
+    for row, col, n, votes in check["pieces"]:
+        if n - max(votes.values()) > PIECE_DISAGREEMENT * n:
+            print(f"REPORTED: fig11 region near V = {V_GRID[col]:.1f}, F* = {F_GRID[row]:.2f}: "
+                  f"slice samples {votes} (labelled by the majority)")
+    print(f"fig11: {check['disagree']} of {check['samples']} slice samples disagree with "
+          "their region's label")
+    joins, stops = mx_ends(drawn)
+    for stop in stops:
+        print(f"REPORTED: fig11 {stop['curve']} stops (MX) at V = {stop['V']:.4g}, "
+              f"F* = {stop['Fstar']:.4g}")
+    names = {str(v): ((region_name(v & ~ATTRACTORS["yaw"]) if v & ~ATTRACTORS["yaw"] else "")
+                      + (BAND if v & ATTRACTORS["yaw"] else "")).lstrip("; ")
+             for v in numpy.unique(found).tolist()}
+    return {"curves": drawn, "pitchfork": stored["pitchfork"], "mx_joins": joins,
+            "mx_stops": stops, "edge_curves": edges, "region_check": check,
+            "region_map": {"V": V_GRID, "Fstar": F_GRID, "code": found, "names": names}}
+
+
+STYLES = {"hopf": ("k-", "Hopf (y_fp = 1 mm)"), "fold": ("b--", "fold of periodic orbits"),
+          "zero": ("k:", "Hopf, zero freeplay")}
 
 
 def plot(result):
-    found = numpy.asarray(result["map"])
-    curves = {kind: [results.loaded(d) for d in diagrams]
-              for kind, diagrams in result["curves"].items()}
-    fig, ax = plt.subplots(figsize=(9, 6.5))
-    regions = shade(ax, found, result["pitchfork"][1])
-    for kind, style in (("hopf", "k-"), ("fold", "b--"), ("zero", "k:")):
-        for diagram in curves[kind]:
-            for branch in diagram:
+    region = result["region_map"]
+    found = numpy.asarray(region["code"])
+    fig, ax = plt.subplots(figsize=(8, 6.5))
+    handles = []
+    for kind, (style, label) in STYLES.items():
+        for diagram in result["curves"][kind]:
+            for branch in results.loaded(diagram):
                 ax.plot(branch["V"], branch["Fstar"], style, lw=1.4)
+        handles.append(plt.Line2D([], [], color=style[0], ls=style[1:], label=label))
     for f in result["pitchfork"][1]:
         ax.axhline(f, color="g", lw=1.4, ls="-.")
-    for diagram in curves["hopf"] + curves["fold"] + curves["zero"]:
-        for branch in diagram:
-            for index, _, _ in branches.labelled_points(branch, "MX"):
-                ax.plot(branch["V"][index], branch["Fstar"][index], "rx", ms=8)
-    handles = [plt.Line2D([], [], color="k", label="Hopf (y_fp = 1 mm)"),
-               plt.Line2D([], [], color="b", ls="--", label="fold of periodic orbits"),
-               plt.Line2D([], [], color="g", ls="-.", label="pitchfork"),
-               plt.Line2D([], [], color="k", ls=":", label="Hopf, zero freeplay"),
-               plt.Line2D([], [], color="r", marker="x", ls="", label="continuation stopped (MX)"),
-               Patch(color="0.3", alpha=0.35, label="off-centre yaw")]
-    ax.legend(handles=handles + regions, fontsize=7, loc="upper right", framealpha=0.9)
+    handles.append(plt.Line2D([], [], color="g", ls="-.", label="pitchfork"))
+    torus, = [c for c in result["edge_curves"] if c["kind"] == "torus"]
+    ax.plot(torus["V"], torus["Fstar"], color="m", lw=1.4, marker=".", ms=4)
+    handles.append(plt.Line2D([], [], color="m", marker=".", label="torus points on the "
+                              "slices (stable orbit lost), joined"))
+    for join in result["mx_joins"]:
+        ax.plot(join["V"], join["Fstar"], "ko", ms=4)
+    if result["mx_joins"]:
+        handles.append(plt.Line2D([], [], color="k", marker="o", ms=4, ls="",
+                                  label="Hopf curves from H1 and H2 meet: turning point\n"
+                                        "inside the oleo stage switch (AUTO stops both)"))
+    for stop in result["mx_stops"]:
+        ax.plot(stop["V"], stop["Fstar"], "rx", ms=8)
+    if result["mx_stops"]:
+        handles.append(plt.Line2D([], [], color="r", marker="x", ls="",
+                                  label="continuation stopped (MX)"))
+    regions = shade(ax, found)
+    ax.legend(handles=handles + regions, fontsize=7, loc="upper left",
+              bbox_to_anchor=(1.01, 1.0), framealpha=0.9)
     ax.set_xlim(0, V_MAX)
     ax.set_ylim(0, F_MAX)
     ax.set_xlabel("V [m/s]")
     ax.set_ylabel(r"$F_z^*$")
-    ax.set_title(r"Fig. 11: $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm; white: only straight "
-                 "rolling stable; orbit shading from diagrams in V at "
+    ax.set_title(r"Fig. 11: $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm; regions bounded by the "
+                 "curves, labelled from diagrams in V at "
                  f"F* = {SLICES[0]:g}, {SLICES[1]:g}, ..., {SLICES[-1]:g}", fontsize=8)
     plotting.save(fig, "fig11")
 

@@ -1,0 +1,60 @@
+"""Fig. 11's region helpers on synthetic input (no AUTO run): the torus
+locus read off slice rows, the pairing of MX ends where two Hopf curves meet,
+and the region map's codes around one curve."""
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
+from check import check, check_close  # noqa: E402
+import fig11  # noqa: E402
+
+V = fig11.V_GRID
+HIGH, QUASI = fig11.ATTRACTORS["high"], fig11.ATTRACTORS["quasi"]
+
+
+def branch(Vs, Fs, mx_at_end):
+    """A stored branch of a curve (results.stored's record)."""
+    return {"columns": {"V": list(Vs), "Fstar": list(Fs)}, "stable": [True] * len(Vs),
+            "labels": [[len(Vs) - 1, 9, "MX"]] if mx_at_end else []}
+
+
+def main():
+    lost = np.where((V >= 40) & (V < 350), HIGH, 0)        # stable orbit lost at 350 m/s
+    whole = np.where(V >= 40, HIGH, 0)                     # stable up to 600 m/s
+    locus = fig11.torus_locus([(0.2, lost), (1.5, whole)])
+    check_close("torus point where the stable orbit ends", locus[1][0], 350.0, abs=1e-9)
+    check("no torus point on a slice stable to V_MAX: the locus runs beyond the plot",
+          locus[2][0] == fig11.BEYOND and fig11.BEYOND > fig11.V_MAX)
+    check("the locus is held out to F_MIN and F_MAX",
+          locus[0] == (350.0, fig11.F_MIN) and locus[-1] == (fig11.BEYOND, fig11.F_MAX))
+
+    drawn = {"hopf": [[branch([1.4, 7.3237], [1.0, 0.685025], True)],
+                      [branch([28.3, 7.3240], [1.0, 0.685025], True)],
+                      [branch([144.0, 300.0], [1.0, 0.5], True)]], "fold": []}
+    joins, stops = fig11.mx_ends(drawn)
+    check("two MX ends 3e-4 m/s apart are joined", len(joins) == 1
+          and joins[0]["curves"] == ["hopf1", "hopf2"], joins)
+    check_close("the join lies half way", joins[0]["V"], 7.32385, abs=1e-9)
+    check("a lone MX end stays a stop", len(stops) == 1 and stops[0]["curve"] == "hopf3", stops)
+
+    # one vertical curve at 300 m/s; the slices find the high orbit right of it
+    sr = np.zeros((len(fig11.F_GRID), len(V)), dtype=bool)
+    rows = [(F, np.where(V > 300, HIGH, 0)) for F in (1.0, 2.0)]
+    edges = [{"V": [300.0, 300.0], "Fstar": [0.0, 4.0]}]
+    found, report = fig11.region_map(sr, rows, edges, [0.037, 0.408])
+    above = fig11.F_GRID > 0.5
+    check("right of the curve: high-frequency shimmy at every load above the band",
+          np.all(found[np.ix_(above, V > 301)] == HIGH))
+    check("left of it: nothing stable found (code 0) at every load above the band",
+          np.all(found[np.ix_(above, V < 299)] == 0))
+    band = (fig11.F_GRID >= 0.037) & (fig11.F_GRID <= 0.408)
+    check("the pitchfork band carries the yaw bit", np.all(found[band] & fig11.ATTRACTORS["yaw"]))
+    check("the synthetic samples agree with their pieces", report["disagree"] == 0, report)
+    check("no quasi-periodic code without a torus point", not np.any(found & QUASI))
+
+
+main()
