@@ -33,7 +33,12 @@ FREEPLAY = dict(yfp=1.0, eps_rel=0.1)
 SLICES = numpy.concatenate((numpy.arange(0.0625, 2.0, 0.125), numpy.arange(2.125, 3.5, 0.25)))
 F_GRID = numpy.arange(F_MIN, F_MAX + 1e-9, 0.01)
 V_GRID = numpy.arange(V_MIN, V_MAX + 1e-9, 0.5)
-LOW_FREQUENCY_HZ = 8.0
+LOW_FREQUENCY_HZ = 8.0   # folds above it start the upper fold curves
+# An orbit family is low-frequency if it is born at a Hopf point below this:
+# the slices' Hopf frequencies fall in two groups, 1.7-8.3 Hz and 10.3-14.6
+# Hz (the large family, 16-47 Hz, is not Hopf-born in range); a fixed split
+# of each orbit's own frequency cut one family (5-14 Hz at F* > 2) in two.
+FAMILY_SPLIT_HZ = 9.3
 FOLD_TIME_LIMIT = 120  # s, guard for a fold-curve run (they take 20-40 s)
 STOP = {"Fstar": [F_MIN, F_MAX], "V": [V_MIN, V_MAX]}
 V_SCAN = numpy.linspace(V_MIN, V_MAX, 3000)
@@ -131,16 +136,18 @@ def large_family(parameter_set="figures"):
 
 
 def stable_orbits(stored):
-    """{"low"|"high": [(V0, V1), ...]}: the V-intervals of stable low- (< 8
-    Hz) and high-frequency orbits on stored branches of one slice load."""
+    """{"low"|"high": [(V0, V1), ...]}: the V-intervals of stable orbits on
+    stored branches of one slice load, by family: a branch is low-frequency
+    if its frequency where its amplitude is smallest (its Hopf point) is
+    below FAMILY_SPLIT_HZ, whatever the frequency of its stable part."""
     found = {"low": [], "high": []}
     for branch in results.loaded(stored):
-        V, freq = branch["V"], branch["freq"]
+        V, amplitude = branch["V"], branch["psi_amp"]
+        kind = "low" if branch["freq"][numpy.argmin(amplitude)] < FAMILY_SPLIT_HZ else "high"
         # stable orbits of non-zero amplitude
-        keep = branches.stable_mask(branch) & (branch["psi_amp"] > ct.COLLAPSED)
+        keep = branches.stable_mask(branch) & (amplitude > ct.COLLAPSED)
         for run in branches.runs_of(keep, overlap=False):
             if keep[run.start]:
-                kind = "low" if numpy.median(freq[run]) < LOW_FREQUENCY_HZ else "high"
                 found[kind].append((V[run].min(), V[run].max()))
     return found
 
@@ -158,19 +165,23 @@ def upper_folds(rundir, first, folds):
     (`first`, stored) does not reach: continued both ways from each fold on
     the lowest slice above its top load (folds: {slice load: [(run name,
     label)]}) that no curve computed so far passes through.  A direction
-    that fails (or stalls: FOLD_TIME_LIMIT) is reported and left out."""
+    that fails (or stalls: FOLD_TIME_LIMIT) is reported and left out.  The
+    folds of the higher slices that no curve passes through start curves
+    too (a curve can stop in MX before it reaches them)."""
     top = max(numpy.max(branch["Fstar"]) for diagram in first
               for branch in results.loaded(diagram))
     above = [f for f in SLICES if f > top and folds[f]]
     if not above:
         return []
-    out = []
-    points = [ct.load(slice_rundir(above[0]), name)(lab) for name, lab in folds[above[0]]]
-    for k, point in enumerate(points):
+    out, k = [], 0
+    points = [ct.load(slice_rundir(Fstar), name)(lab) for Fstar in above
+              for name, lab in folds[Fstar]]
+    for point in points:
         if on_curves(point, out):
             continue
+        k += 1
         for sign in (1, -1):
-            name = f"fold_upper{k + 1}{'+-'[sign < 0]}"
+            name = f"fold_upper{k}{'+-'[sign < 0]}"
             try:
                 out.append(ct.fold_curve(rundir, name, point, ("V", "Fstar"), stop=STOP,
                                          DS=0.05 * sign, DSMAX=1.0, NMX=400, allow_mx=True,

@@ -32,6 +32,19 @@ def main():
     check("the locus is held out to F_MIN and F_MAX",
           locus[0] == (350.0, fig11.F_MIN) and locus[-1] == (fig11.BEYOND, fig11.F_MAX))
 
+    # one family born at 5 Hz whose stable part runs 6-14 Hz, one born at 12 Hz
+    Vs = np.linspace(1.0, 50.0, 50)
+    grows = {"columns": {"V": list(Vs), "freq": list(np.linspace(5.0, 14.0, 50)),
+                         "psi_amp": list(np.linspace(0.0, 2e-3, 50))},
+             "stable": [False] + [True] * 49, "labels": []}
+    high_born = {"columns": {"V": list(Vs + 100), "freq": list(np.linspace(12.0, 9.0, 50)),
+                             "psi_amp": list(np.linspace(0.0, 2e-3, 50))},
+                 "stable": [False] + [True] * 49, "labels": []}
+    found = fig11.stable_orbits([grows, high_born])
+    check("a family is labelled by its Hopf frequency, not by its stable part's",
+          len(found["low"]) == 1 and len(found["high"]) == 1
+          and found["low"][0][1] == 50.0 and found["high"][0][0] > 100.0, found)
+
     drawn = {"hopf": [[branch([1.4, 7.3237], [1.0, 0.685025], True)],
                       [branch([28.3, 7.3240], [1.0, 0.685025], True)],
                       [branch([144.0, 300.0], [1.0, 0.5], True)]], "fold": []}
