@@ -27,7 +27,9 @@ import sys
 import tempfile
 
 import atlas_cell
+import atlas_compare
 import paths
+import results
 import jobgrid
 from jobgrid import GridError, axis
 
@@ -126,15 +128,38 @@ def summary(points):
                 text += f" ({s['modulation_hz']:.3g})"
             parts.append(text)
         lines.append(f"{c['V']:g} {c['Fstar']:g} {c['label']} | " + "; ".join(parts))
+    agreement = fig11_agreement(cells)
+    if agreement is not None:
+        lines += atlas_compare.report(agreement)
     text = "\n".join(lines) + "\n"
-    for name, content in (("summary.txt", text), ("summary.json", json.dumps(cells, indent=1))):
+    stored = {"cells": cells, "fig11_agreement": agreement}
+    for name, content in (("summary.txt", text), ("summary.json", json.dumps(stored, indent=1))):
         with tempfile.NamedTemporaryFile("w", dir=ATLAS_DIR, delete=False) as out:
             out.write(content)
         os.replace(out.name, os.path.join(ATLAS_DIR, name))
     print("\n".join(lines[:3 + len(counts)]))
+    if agreement is not None:
+        print("\n".join(atlas_compare.report(agreement)))
     print(f"atlas: wrote {ATLAS_DIR}/summary.txt, summary.json")
     import atlas_plot
     atlas_plot.plot(cells, atlas_cell.NAMES, atlas_cell.KINDS)
+    if agreement is not None:
+        atlas_plot.overlay(cells, agreement, results.read("fig11"))
+
+
+def fig11_agreement(cells):
+    """atlas_compare.compare against Fig. 11's cached regions, or None (said
+    why) when there is no cached Fig. 11 with a region map."""
+    try:
+        fig11 = results.read("fig11")
+    except results.MissingResult as exc:
+        print(f"atlas: no comparison with Fig. 11: {exc}")
+        return None
+    if "region_map" not in fig11:
+        print("atlas: no comparison with Fig. 11: its cached result has no region_map "
+              f"({results.path('fig11')}; run `make fig11`)")
+        return None
+    return atlas_compare.compare(cells, fig11)
 
 
 def main():

@@ -77,3 +77,54 @@ def plot(cells, names, order):
     fig.tight_layout(rect=(0, 0.08, 1, 1))
     import plotting
     plotting.save(fig, "atlas")
+
+
+def overlay(cells, agreement, fig11):
+    """The atlas cells over Fig. 11's regions and edge curves: which agree,
+    which do not (annotated with the atlas's code), which lie on a curve."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Patch
+    from matplotlib.lines import Line2D
+    region_map = fig11["region_map"]
+    names = region_map.get("names", {})
+    code = numpy.asarray(region_map["code"], int)
+    present = sorted(set(code.ravel().tolist()))
+    index = numpy.searchsorted(present, code)
+    colours = matplotlib.colormaps["tab20"](numpy.linspace(0, 1, 20))[:len(present)]
+    fig, ax = plt.subplots(figsize=(12, 7))
+    ax.pcolormesh(edges(region_map["V"]), edges(region_map["Fstar"]), index,
+                  cmap=matplotlib.colors.ListedColormap(colours), alpha=0.45,
+                  vmin=-0.5, vmax=len(present) - 0.5)
+    for curve in fig11["edge_curves"]:
+        ax.plot(curve["V"], curve["Fstar"], "k-", lw=0.8)
+    styles = {"agree": ("o", "#1a9850", "agrees with Fig. 11"),
+              "disagree": ("X", "#d73027", "disagrees (atlas code written beside)"),
+              "on_curve": ("o", "0.55", "on a curve: not compared")}
+    for group, (marker, colour, _) in styles.items():
+        for e in agreement[group]:
+            ax.plot(e["V"], e["Fstar"], marker=marker, color=colour, ms=6 if group ==
+                    "disagree" else 4, mfc=colour if group != "on_curve" else "none", ls="none")
+            if group == "disagree":
+                ax.annotate(str(e["atlas"]) if e["atlas"] is not None else "?",
+                            (e["V"], e["Fstar"]), xytext=(4, 3), textcoords="offset points",
+                            fontsize=7, color=colour)
+    handles = [Patch(facecolor=colours[k], alpha=0.45, label=f"{c}: {names.get(str(c), c)}")
+               for k, c in enumerate(present)]
+    handles += [Line2D([], [], marker=m, color=col, ls="none", label=text)
+                for m, col, text in styles.values()]
+    handles.append(Line2D([], [], color="k", lw=0.8, label="Fig. 11's edge curves"))
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=7,
+              frameon=False)
+    ax.set_xlim(0, 600)
+    ax.set_ylim(0, 3.5)
+    ax.set_xlabel("V [m/s]")
+    ax.set_ylabel("F*")
+    fraction = agreement["fraction"]
+    ax.set_title(f"Atlas over Fig. 11's regions: {len(agreement['agree'])} of "
+                 f"{agreement['off_curve']} cells off the curves agree"
+                 + (f" ({100 * fraction:.1f} %)" if fraction is not None else ""), fontsize=10)
+    fig.tight_layout()
+    import plotting
+    plotting.save(fig, "atlas_fig11")

@@ -20,6 +20,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check, check_close  # noqa: E402
 import atlas_cell  # noqa: E402
+import atlas_compare  # noqa: E402
 import attractor  # noqa: E402
 
 T = np.arange(0.0, 10.0 + 1e-9, 1e-3)       # two 5 s windows, atlas sampling
@@ -117,8 +118,45 @@ def bad_input():
               names == ["V150_F0.1", "V200_F0.1", "V250_F0.1", "V300_F0.1"], names)
 
 
+def comparison():
+    """atlas_compare on a stub of Fig. 11's region map: codes OR-ed over the
+    starts, the distance to a curve, the fraction over the cells off it."""
+    def cell(v, fstar, *kinds):
+        return {"V": v, "Fstar": fstar,
+                "starts": {f"s{k}": {"kind": kind} for k, kind in enumerate(kinds)}}
+    check("cell code: straight + high + high = 5",
+          atlas_compare.cell_code(cell(1, 1, "straight", "high", "high")) == 5)
+    check("cell code: quasi + a start leaving the domain = 16 (a transient, not a region)",
+          atlas_compare.cell_code(cell(1, 1, "quasi", "domain")) == 16)
+    check("cell code: every start leaving the domain = 32 (lift-off)",
+          atlas_compare.cell_code(cell(1, 1, "domain", "domain")) == 32)
+    check("cell code: an unsettled start gives no code",
+          atlas_compare.cell_code(cell(1, 1, "straight", "unsettled")) is None)
+    # the vertical line V = 300 m/s: distance (V - 300) / 600 at any F*
+    line = {"name": "hopf", "kind": "hopf", "V": [300.0, 300.0], "Fstar": [0.0, 3.5]}
+    d, name = atlas_compare.curve_distance([line], 330.0, 1.75)
+    check_close("distance to the segment V = 300: 30 / 600", d, 0.05, rel=1e-12)
+    check("nearest curve named", name == "hopf", name)
+    stub = {"region_map": {"V": [0.0, 200.0, 400.0, 600.0], "Fstar": [0.0, 3.5],
+                           "code": [[1, 1, 4, 4], [1, 1, 4, 4]], "names": {"1": "straight"}},
+            "edge_curves": [line]}
+    cells = [cell(100, 1, "straight"), cell(500, 1, "straight", "high"), cell(305, 1, "high"),
+             cell(450, 2, "high"), cell(150, 2, "unsettled")]
+    r = atlas_compare.compare(cells, stub)
+    check("stub: V = 305 (distance 0.008 < NEAR) on the curve",
+          [(e["V"], e["Fstar"]) for e in r["on_curve"]] == [(305, 1)], r["on_curve"])
+    check("stub: V = 100 and 450 agree", [e["V"] for e in r["agree"]] == [100, 450], r["agree"])
+    check("stub: V = 500 (straight + high in the high region) and 150 (not settled) disagree",
+          [(e["V"], e["atlas_name"]) for e in r["disagree"]]
+          == [(500, "straight + high"), (150, "not settled")], r["disagree"])
+    check_close("stub: fraction 2 of 4", r["fraction"], 0.5, rel=1e-12)
+    check("stub: report lists both disagreeing cells",
+          sum("disagree V" in line for line in atlas_compare.report(r)) == 2)
+
+
 def main():
     synthetic()
+    comparison()
     bad_input()
     simulated()
 
