@@ -96,7 +96,7 @@ def overlay(cells, agreement, fig11):
     fig, ax = plt.subplots(figsize=(12, 7))
     ax.pcolormesh(edges(region_map["V"]), edges(region_map["Fstar"]), index,
                   cmap=matplotlib.colors.ListedColormap(colours), alpha=0.45,
-                  vmin=-0.5, vmax=len(present) - 0.5)
+                  vmin=-0.5, vmax=len(present) - 0.5, rasterized=True)
     for curve in fig11["edge_curves"]:
         ax.plot(curve["V"], curve["Fstar"], "k-", lw=0.8)
     styles = {"agree": ("o", "#1a9850", "agrees with Fig. 11"),
