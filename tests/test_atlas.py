@@ -140,16 +140,19 @@ def comparison():
     stub = {"region_map": {"V": [0.0, 200.0, 400.0, 600.0], "Fstar": [0.0, 3.5],
                            "code": [[1, 1, 4, 4], [1, 1, 4, 4]], "names": {"1": "straight"}},
             "edge_curves": [line]}
-    cells = [cell(100, 1, "straight"), cell(500, 1, "straight", "high"), cell(305, 1, "high"),
-             cell(450, 2, "high"), cell(150, 2, "unsettled")]
+    cells = [cell(100, 1, "straight"), cell(500, 1, "straight", "high"), cell(303, 1, "high"),
+             cell(450, 2, "high"), cell(150, 2, "unsettled"), cell(550, 2, "high", "yaw")]
     r = atlas_compare.compare(cells, stub)
-    check("stub: V = 305 (distance 0.008 < NEAR) on the curve",
-          [(e["V"], e["Fstar"]) for e in r["on_curve"]] == [(305, 1)], r["on_curve"])
-    check("stub: V = 100 and 450 agree", [e["V"] for e in r["agree"]] == [100, 450], r["agree"])
+    check("stub: V = 303 (distance 0.005 < NEAR) on the curve",
+          [(e["V"], e["Fstar"]) for e in r["on_curve"]] == [(303, 1)], r["on_curve"])
+    check("stub: V = 100, 450 and 550 (yaw bit not compared) agree",
+          [e["V"] for e in r["agree"]] == [100, 450, 550], r["agree"])
+    check("stub: V = 550 listed with a differing yaw bit",
+          [e["V"] for e in r["yaw_differs"]] == [550], r["yaw_differs"])
     check("stub: V = 500 (straight + high in the high region) and 150 (not settled) disagree",
           [(e["V"], e["atlas_name"]) for e in r["disagree"]]
           == [(500, "straight + high"), (150, "not settled")], r["disagree"])
-    check_close("stub: fraction 2 of 4", r["fraction"], 0.5, rel=1e-12)
+    check_close("stub: fraction 3 of 5", r["fraction"], 0.6, rel=1e-12)
     check("stub: report lists both disagreeing cells",
           sum("disagree V" in line for line in atlas_compare.report(r)) == 2)
 
