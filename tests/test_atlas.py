@@ -123,13 +123,23 @@ def comparison():
     starts, the distance to a curve, the fraction over the cells off it."""
     def cell(v, fstar, *kinds):
         return {"V": v, "Fstar": fstar,
-                "starts": {f"s{k}": {"kind": kind} for k, kind in enumerate(kinds)}}
+                "starts": {f"s{k}": {"kind": kind, "amplitude_rad": 0.1, "frequency_hz": 40.0}
+                           for k, kind in enumerate(kinds)}}
     check("cell code: straight + high + high = 5",
           atlas_compare.cell_code(cell(1, 1, "straight", "high", "high")) == 5)
     check("cell code: quasi + a start leaving the domain = 16 (a transient, not a region)",
           atlas_compare.cell_code(cell(1, 1, "quasi", "domain")) == 16)
     check("cell code: every start leaving the domain = 32 (lift-off)",
           atlas_compare.cell_code(cell(1, 1, "domain", "domain")) == 32)
+    def orbit(kind, f):
+        return {"kind": kind, "frequency_hz": f, "amplitude_rad": 3e-3}
+    two = {"V": 20, "Fstar": 2.2, "starts": {"a": orbit("high", 11.2), "b": orbit("high", 18.1),
+                                             "c": orbit("high", 18.1)}}
+    check("cell code: two coexisting orbits above 8 Hz (11.2, 18.1 Hz) = low + high = 6",
+          atlas_compare.cell_code(two) == 6, atlas_compare.cell_code(two))
+    one = {"V": 20, "Fstar": 1.8, "starts": {"a": orbit("high", 9.7), "b": orbit("high", 9.7)}}
+    check("cell code: a lone orbit at 9.7 Hz keeps the 8 Hz split: high = 4",
+          atlas_compare.cell_code(one) == 4, atlas_compare.cell_code(one))
     check("cell code: an unsettled start gives no code",
           atlas_compare.cell_code(cell(1, 1, "straight", "unsettled")) is None)
     # the vertical line V = 300 m/s: distance (V - 300) / 600 at any F*
