@@ -32,6 +32,10 @@ AUTO_DIR = os.environ.get("AUTO_DIR", os.path.join(BUILD, "auto", "07p"))
 if not os.path.isdir(os.path.join(AUTO_DIR, "python", "auto")):
     sys.exit(f"autoglue: no AUTO-07p at AUTO_DIR={AUTO_DIR} (run `make setup`)")
 os.environ["AUTO_DIR"] = AUTO_DIR
+# AUTO is built with OpenMP; more than one thread changes its rounding, so a
+# driver started by hand gives make's results only with one (the Makefile's
+# default too).
+os.environ.setdefault("OMP_NUM_THREADS", "1")
 sys.path.insert(0, os.path.join(AUTO_DIR, "python"))
 if "bool" not in vars(numpy):  # hasattr() would warn on numpy 1.24
     numpy.bool = numpy.bool_  # AUTO 0.9.2's Points.py still uses numpy.bool
@@ -233,17 +237,42 @@ def read_constants(paths):
     return merged
 
 
-def _kill_children(signum, frame):
-    """SIGALRM handler of run(time_limit=...): kill this process's children
-    (the AUTO executable); AUTO's run() then raises."""
-    for entry in os.listdir("/proc"):
-        try:
-            with open(f"/proc/{entry}/stat") as stat:
-                parent = int(stat.read().rsplit(")", 1)[1].split()[1])
-        except (OSError, ValueError, IndexError):
-            continue
-        if parent == os.getpid():
-            os.kill(int(entry), signal.SIGKILL)
+def _cpu_seconds(pid):
+    """CPU time (user + system) a process has used, from /proc/<pid>/stat."""
+    with open(f"/proc/{pid}/stat") as stat:
+        fields = stat.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+class _CPULimit:
+    """While active, kills this process's children (the AUTO executable) once
+    one has used `seconds` of CPU time (None: no limit).  A stall guard on
+    CPU, not wall, time: a loaded machine must not cut short a run that an
+    idle one finishes, or the figure would depend on the load."""
+
+    def __init__(self, seconds):
+        self.seconds, self.fired = seconds, False
+
+    def __enter__(self):
+        if self.seconds:
+            signal.signal(signal.SIGALRM, self._check)
+            signal.setitimer(signal.ITIMER_REAL, 1.0, 1.0)
+        return self
+
+    def __exit__(self, *exc):
+        if self.seconds:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+
+    def _check(self, signum, frame):
+        for entry in os.listdir("/proc"):
+            try:
+                with open(f"/proc/{entry}/stat") as stat:
+                    parent = int(stat.read().rsplit(")", 1)[1].split()[1])
+                if parent == os.getpid() and _cpu_seconds(entry) > self.seconds:
+                    os.kill(int(entry), signal.SIGKILL)
+                    self.fired = True
+            except (OSError, ValueError, IndexError):
+                continue
 
 
 def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time_limit=None,
@@ -260,8 +289,8 @@ def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time
     allow_mx, an MX is no error: the diagram is returned
     (for curves known to end at a hard spot; the caller marks the end);
     its progress line says so.
-    time_limit: seconds after which the AUTO executable is killed and
-    RunError raised (for runs known to stall in AUTO's iterations).
+    time_limit: CPU seconds of the AUTO executable after which it is killed
+    and RunError raised (for runs known to stall in AUTO's iterations).
     rundir is claimed (claim); AUTO's messages go to <rundir>/<name>.log.
     """
     rundir = claim(rundir)
@@ -274,25 +303,20 @@ def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time
     outputs = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
     log = os.path.join(rundir, f"{name}.log")
     started = time.monotonic()
+    limit = _CPULimit(time_limit)
     cwd = os.getcwd()
     os.chdir(rundir)
     try:
         for stale in ["fort.7", "fort.8", "fort.9"] + outputs:
             if os.path.exists(stale):
                 os.remove(stale)
-        if time_limit:
-            signal.signal(signal.SIGALRM, _kill_children)
-            signal.alarm(int(time_limit))
-        with _LogTo(log):
+        with limit, _LogTo(log):
             auto.run(data, sv=name, **kw)
     except auto.AUTOExceptions.AUTORuntimeError as exc:
-        timed_out = time_limit and signal.alarm(0) == 0
-        why = f"killed after the time limit of {time_limit} s" if timed_out else exc
+        why = f"killed after the limit of {time_limit} s of CPU time" if limit.fired else exc
         PROGRESS.step(rundir, name, time.monotonic() - started, "FAILED")
         raise RunError(f"run {name} in {rundir}: AUTO stopped ({why})", log) from exc
     finally:
-        if time_limit:
-            signal.alarm(0)
         os.chdir(cwd)
     missing = [path for path in outputs if not os.path.exists(path)]
     if missing:

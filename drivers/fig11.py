@@ -39,7 +39,7 @@ LOW_FREQUENCY_HZ = 8.0   # folds above it start the upper fold curves
 # Hz (the large family, 16-47 Hz, is not Hopf-born in range); a fixed split
 # of each orbit's own frequency cut one family (5-14 Hz at F* > 2) in two.
 FAMILY_SPLIT_HZ = 9.3
-FOLD_TIME_LIMIT = 120  # s, guard for a fold-curve run (they take 20-40 s)
+FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
 STOP = {"Fstar": [F_MIN, F_MAX], "V": [V_MIN, V_MAX]}
 V_SCAN = numpy.linspace(V_MIN, V_MAX, 3000)
 

@@ -1,10 +1,12 @@
 """Isolated runs and a quiet console (drivers/autoglue.py: claim, run).
 
-Two processes that want the same run directory, started 1 s apart: the
-second waits for the first and says so, and both read back the same, whole
-branch.  A cut-short b-file is an error.  AUTO's output goes to a log file in
+Two processes that want the same run directory, the second started once
+the first holds it: the second waits for the first and says so, and both
+read back the same, whole branch.  A cut-short b-file is an error.  AUTO's output goes to a log file in
 the run directory; the console gets one progress line per run; a failed run's
-error carries the tail of its log and its path."""
+error carries the tail of its log and its path.  A run's time limit counts
+the AUTO executable's CPU time, not the wall clock, so a loaded machine does
+not cut short a run an idle one finishes."""
 import os
 import subprocess
 import sys
@@ -15,7 +17,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "drivers"))
 import autoglue  # noqa: E402
 import continuation as ct  # noqa: E402
-from check import check  # noqa: E402
+from check import check, wait_until_claimed  # noqa: E402
 
 RUN_ROOT = os.path.join(ROOT, "build", "tests", "isolated")
 HOPF_V = 346.1  # m/s, zero freeplay, F* = 1 (Fig. 7, reference fig07/b.eq_F1)
@@ -44,7 +46,7 @@ def job():
 
 def concurrent():
     first = job()
-    time.sleep(1.0)
+    wait_until_claimed(os.path.join(RUN_ROOT, "shared"), first)
     second = job()
     outputs = [p.communicate(timeout=300) for p in (first, second)]
     results = []
@@ -103,12 +105,29 @@ def failures():
           "cut short" in message and path in message, message)
 
 
+def cpu_limit():
+    """autoglue's stall guard on a child that waits (no CPU) and on one that
+    computes: only the second is killed."""
+    for program, killed in (("import time; time.sleep(2.5)", False),
+                            ("while True: pass", True)):
+        started = time.monotonic()
+        with autoglue._CPULimit(1.0) as limit:
+            status = subprocess.run([sys.executable, "-c", program], timeout=60).returncode
+        seconds = time.monotonic() - started
+        what = "a busy child is killed after 1 s of CPU" if killed else \
+            "a waiting child outlives a 1 s CPU limit (2.5 s of wall time)"
+        check(what, limit.fired == killed and (status != 0) == killed
+              and (seconds < 10 if killed else seconds >= 2.5),
+              f"fired {limit.fired}, status {status}, {seconds:.1f} s")
+
+
 def main():
     os.environ["MLG_RUN_ROOT"] = RUN_ROOT
     autoglue.RUN_ROOT = RUN_ROOT
     stdout = concurrent()
     quiet_console(stdout)
     failures()
+    cpu_limit()
 
 
 if __name__ == "__main__":

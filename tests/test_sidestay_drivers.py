@@ -17,7 +17,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from check import check  # noqa: E402
+from check import check, wait_until_claimed  # noqa: E402
 
 
 def driver(*args):
@@ -93,14 +93,7 @@ def shared_reference():
                                 env=env, text=True, stdout=subprocess.PIPE,
                                 stderr=subprocess.PIPE)
     first = start("5")
-    # The second starts once the first holds the rho = mu = 0 directory (its
-    # pid in the lock file), not after a fixed pause a loaded machine outlasts.
-    lock = os.path.join(root, ".sidestay_rho0_mu0.lock")
-    deadline = time.monotonic() + 120
-    while time.monotonic() < deadline and first.poll() is None:
-        if os.path.exists(lock) and f"process {first.pid} " in open(lock).read():
-            break
-        time.sleep(0.05)
+    wait_until_claimed(os.path.join(root, "sidestay_rho0_mu0"), first)
     second = start("10")
     (out1, err1), (out2, err2) = first.communicate(timeout=300), second.communicate(timeout=300)
     if not check("sidestay at 5 and 10 deg, the second started while the first holds rho = mu = 0: "
