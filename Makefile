@@ -99,7 +99,7 @@ bench: setup $(BENCH_DEPS) $(BENCH_PROGRAMS)
 	@if [ -z "$(strip $(BENCH_PROGRAMS))" ]; then \
 	    echo "bench: no benchmark programs are registered yet (BENCH_PROGRAMS is empty)"; \
 	fi
-	@echo "bench: the figure suite (-j1 against -j2, about 45 min) is \`make bench-figures\`"
+	@echo "bench: the figure suite (-j1 against -j2, about 25 min on 2 idle cores) is \`make bench-figures\`"
 	@set -e; for prog in $(abspath $(BENCH_PROGRAMS)); do \
 	    echo "bench: $$prog"; \
 	    case $$prog in *.py) $(PYTHON) "$$prog" ;; *) "$$prog" ;; esac; \

@@ -60,7 +60,7 @@ REGRESS_FIGURES += sidestay_rho10_mu10
 calibrate: $(AUTO_DRIVER_DEPS)
 	$(PYTHON) drivers/calibrate_c_psi.py
 
-# The figure-suite benchmark (-j1 against -j2, about 45 min; `make bench` names it).
+# The figure-suite benchmark (-j1 against -j2, about 25 min on 2 idle cores; `make bench` names it).
 .PHONY: bench-figures
 bench-figures: setup
 	$(PYTHON) tests/bench/bench_figures.py

@@ -1,9 +1,10 @@
 """Benchmark of the figure suite: wall time of `make -j1 figures` and
 `make -j2 figures`, each from scratch in its own run root (build/bench/j1,
 build/bench/j2) of an otherwise built tree, in one session; then every run
-directory of the two compared with the diagram comparator (the -j2 suite
-must produce the same diagrams).  About 45 min on 2 cores: run it through
-`make bench-figures`, on a machine left otherwise idle.
+directory of the two compared, every saved point of every b-file (the -j2
+suite must produce the same diagrams, bit for bit).  About 25 min on 2 idle
+cores: run it through `make bench-figures`, on a machine left otherwise
+idle; `--compare-only` repeats the comparison of the last two suites.
 
 The parallel work is the parts of Figs. 11, 13, 14 and 16 and the figures
 themselves; with more cores the wall time is bounded by the longest single
@@ -17,8 +18,6 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-COMPARE = os.path.join(ROOT, "tests", "regression", "compare_diagrams.py")
-PYTHON = os.environ.get("PYTHON", sys.executable)
 
 
 def suite(jobs):
@@ -42,22 +41,58 @@ def run_dirs(run_root):
                   if any(f.startswith("b.") for f in files))
 
 
+def data_lines(path):
+    """The solution lines of a b-file (header lines, which name files and
+    constants, start with 0)."""
+    with open(path) as f:
+        return [line for line in f if line.split()[:1] not in ([], ["0"])]
+
+
+def differences(one, two):
+    """What differs between the b-files of directory `one` and their twins in
+    `two`, every saved point and digit ('' if nothing).  The two suites run
+    the same AUTO runs with one thread each, so the job order must not change
+    a bit."""
+    out = []
+    for name in sorted(f for f in os.listdir(one) if f.startswith("b.")):
+        theirs = os.path.join(two, name)
+        if not os.path.exists(theirs):
+            out.append(f"{name}: missing in {two}")
+            continue
+        a, b = data_lines(os.path.join(one, name)), data_lines(theirs)
+        first = next((k for k, (x, y) in enumerate(zip(a, b)) if x != y), None)
+        if first is not None or len(a) != len(b):
+            out.append(f"{name}: {len(a)} vs {len(b)} lines" + (
+                "" if first is None else f", first difference:\n  {a[first].rstrip()}\n"
+                f"  {b[first].rstrip()}"))
+    return "\n".join(out)
+
+
+def compare(one, two):
+    """Exit status of comparing the run roots of the two suites."""
+    dirs = run_dirs(one)
+    differ = {d: differences(os.path.join(one, d), os.path.join(two, d)) for d in dirs}
+    differ = {d: report for d, report in differ.items() if report}
+    missing = sorted(set(run_dirs(two)) ^ set(dirs))
+    print(f"bench_figures: {len(dirs)} run directories compared, -j2 vs -j1 (bitwise): "
+          + ("all agree" if not differ and not missing else
+             f"DIFFERENT {sorted(differ)}, only in one {missing}"))
+    for d, report in differ.items():
+        print(f"--- {d}\n{report[:2000]}")
+    return 1 if differ or missing else 0
+
+
 def main():
     os.makedirs(os.path.join(ROOT, "build", "bench"), exist_ok=True)
+    if sys.argv[1:] == ["--compare-only"]:
+        sys.exit(compare(os.path.join(ROOT, "build", "bench", "j1"),
+                         os.path.join(ROOT, "build", "bench", "j2")))
     serial, one = suite(1)
     print(f"bench_figures: make -j1 figures {serial / 60:.1f} min", flush=True)
     parallel, two = suite(2)
     print(f"bench_figures: make -j2 figures {parallel / 60:.1f} min; ratio -j2/-j1 "
           f"{parallel / serial:.2f} (goal <= 0.55)", flush=True)
-    dirs = run_dirs(one)
-    differ = [d for d in dirs if subprocess.run(
-        [PYTHON, COMPARE, os.path.join(one, d), os.path.join(two, d)],
-        capture_output=True).returncode != 0]
-    missing = sorted(set(run_dirs(two)) ^ set(dirs))
-    print(f"bench_figures: {len(dirs)} run directories compared, -j2 vs -j1: "
-          + ("all agree" if not differ and not missing else
-             f"DIFFERENT {differ}, only in one {missing}"))
-    sys.exit(1 if differ or missing else 0)
+    sys.exit(compare(one, two))
 
 
 if __name__ == "__main__":
