@@ -85,7 +85,7 @@ $(eval $(call cached_figure,fig12))
 $(eval $(call cached_figure,fig12_v1,,fig12,--strut-variant 1))
 
 FIGURES += fig06 fig10 fig11 fig12 fig12_v1
-REGRESS_FIGURES += fig10 fig12
+REGRESS_FIGURES += fig10 fig11 fig12
 TEST_PROGRAMS += tests/test_freeplay_diagrams.py tests/test_regionmap.py tests/test_fig11_regions.py
 
 # Sweep over side-stay angles (drivers/sweep.py; degrees, comma-separated),
