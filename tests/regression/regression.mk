@@ -32,14 +32,15 @@ COMPARE := tests/regression/compare_diagrams.py
 REFERENCE_SET := tests/regression/reference_set.py
 export REGRESS_QUICK REGRESS_FIGURES
 
-# $(call private_run,<root>,<fig>,$(MAKE)): shell code that runs figure <fig>
-# with MLG_RUN_ROOT a new directory under <root>, left in $scratch (with the
-# figures of REGRESS_WITH_<fig>).  The caller writes $(MAKE) in its recipe
-# line so that make sees a recursive call and passes its jobserver on (a
-# $(MAKE) only inside this variable runs the figure's parts at -j1).
+# $(call private_run,<root>,<fig>,$(MAKE),<on failure>): shell code that runs
+# figure <fig> with MLG_RUN_ROOT a new directory under <root>, left in
+# $scratch (with the figures of REGRESS_WITH_<fig>); if the figure fails, it
+# says so and runs the shell code <on failure>.  The caller writes $(MAKE) in
+# its recipe line so that make sees a recursive call and passes its jobserver
+# on (a $(MAKE) only inside this variable runs the figure's parts at -j1).
 private_run = mkdir -p $(1) && scratch=$$(mktemp -d $(abspath $(1))/.$(2).XXXXXX) && \
     { MLG_RUN_ROOT=$$scratch $(3) --no-print-directory $(2) $(REGRESS_WITH_$(2)) || \
-      { echo "$(2): failed; its runs are kept in $$scratch" >&2; exit 1; }; }
+      { echo "$(2): failed; its runs are kept in $$scratch" >&2; $(4); }; }
 
 .PHONY: regress refs
 regress: setup
@@ -51,8 +52,13 @@ regress: setup
 	if [ -n "$$failed" ]; then echo "regress: DIFFERENT or failed:$$failed"; exit 1; fi; \
 	echo "regress: $(strip $(REGRESS_FIGURES)) agree with tests/reference/"
 
+# A figure that stops (a run that fails its driver's checks) is still compared
+# as far as it got, so the table shows how far its finished runs moved.
 regress-%: setup
-	@$(call private_run,$(REGRESS_ROOT),$*,$(MAKE)); \
+	@$(call private_run,$(REGRESS_ROOT),$*,$(MAKE),stopped=1); \
+	if [ -n "$$stopped" ]; then \
+	    echo "$*: its runs up to the stop, against $(REFERENCE_ROOT)/$*:"; \
+	    $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$*; exit 1; fi; \
 	$(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$*; status=$$?; \
 	$(PYTHON) $(REFERENCE_SET) publish $$scratch/$* $(REGRESS_ROOT)/$* || exit 1; \
 	mkdir -p $(REGRESS_ROOT)/figures; \
@@ -64,7 +70,7 @@ refs: setup
 	@set -e; for fig in $(REGRESS_FIGURES); do $(MAKE) --no-print-directory refs-$$fig; done
 
 refs-%: setup
-	@$(call private_run,$(REFS_ROOT),$*,$(MAKE)); \
+	@$(call private_run,$(REFS_ROOT),$*,$(MAKE),exit 1); \
 	$(PYTHON) $(REFERENCE_SET) replace $* $$scratch/$* || \
 	    { echo "refs-$*: $(REFERENCE_ROOT)/$* left as it was; runs in $$scratch" >&2; exit 1; }; \
 	rm -rf $$scratch
