@@ -34,6 +34,7 @@ import jobgrid
 from jobgrid import GridError, axis
 
 ATLAS_DIR = os.path.join(paths.RUN_ROOT, "atlas")
+CELLS = jobgrid.Plane("V", "F", ATLAS_DIR)   # cell V<v>_F<F*>
 # 18 x 13 cells: every region of Fig. 11 holds at least one (the stable
 # straight-rolling band at F* = 1 lies between 28.3 and 41.5 m/s: V = 30, 40;
 # the off-centre-yaw band between F* = 0.037 and 0.408: 0.1, 0.2, 0.3)
@@ -41,23 +42,10 @@ DEFAULT_V = "5,10,20,30,40,50,70,100,150:600:50"
 DEFAULT_FSTAR = "0.02,0.1,0.2,0.3,0.5,0.8,1,1.4,1.8,2.2,2.6,3,3.5"
 
 
-def cell_name(v, fstar):
-    return f"V{v:g}_F{fstar:g}"
-
-
-def parse_cell(name):
-    v, fstar = name[len("V"):].split("_F")
-    return float(v), float(fstar)
-
-
 def grid(args):
     vs = axis(args.V, "ATLAS_V (--V)", "speeds in m/s")
     fstars = axis(args.Fstar, "ATLAS_FSTAR (--Fstar)", "loads F*")
     return [(v, f) for f in fstars for v in vs]
-
-
-def result_path(v, fstar):
-    return os.path.join(ATLAS_DIR, cell_name(v, fstar), "result.json")
 
 
 def check(points):
@@ -77,23 +65,23 @@ def check(points):
 
 def run_cell(name):
     try:
-        v, fstar = parse_cell(name)
+        v, fstar = CELLS.parse(name)
     except ValueError:
         sys.exit(f"atlas: {name!r} is not a cell name V<v>_F<f> (see `atlas.py targets`)")
-    rundir = os.path.dirname(result_path(v, fstar))
+    rundir = os.path.dirname(CELLS.result_path(v, fstar))
     os.makedirs(rundir, exist_ok=True)
     result = atlas_cell.cell(v, fstar, rundir)
     # written whole or not at all: make sees a result only when it is complete
     with tempfile.NamedTemporaryFile("w", dir=rundir, delete=False, suffix=".tmp") as out:
         json.dump(result, out, indent=1)
-    os.replace(out.name, result_path(v, fstar))
+    os.replace(out.name, CELLS.result_path(v, fstar))
     print(f"atlas: {name}: {result['label']} ({result['cpu_seconds']:.1f} s CPU)")
 
 
 def load(points):
     cells = []
     for v, fstar in points:
-        path = result_path(v, fstar)
+        path = CELLS.result_path(v, fstar)
         if not os.path.exists(path):
             sys.exit(f"atlas: no result for V = {v:g}, F* = {fstar:g} ({path}); "
                      "run `make atlas` (or atlas.py cell) first")
@@ -173,7 +161,7 @@ def main():
         points = grid(args)
     except GridError as exc:
         sys.exit(f"atlas: grid rejected: {exc}")
-    jobgrid.dispatch("atlas", "cell", args, points, targets=result_path, job_name=cell_name,
+    jobgrid.dispatch("atlas", "cell", args, points, targets=CELLS.result_path, job_name=CELLS.name,
                      run_job=run_cell, check=check, summary=summary)
 
 

@@ -7,6 +7,7 @@ must be a finite number, and no two may share a job (job names use 6
 significant digits, f"{value:g}").
 """
 import math
+import os
 import shlex
 import sys
 
@@ -57,6 +58,26 @@ def axis(text, variable, unit="numbers"):
             values.append(value)
     return values
 
+
+
+class Plane:
+    """The jobs of a grid over two axes: named <a><value>_<b><value> with the
+    axes' prefixes a, b (values as f"{value:g}"), each writing
+    <directory>/<name>/result.json."""
+
+    def __init__(self, first, second, directory):
+        self.first, self.second, self.directory = first, second, directory
+
+    def name(self, a, b):
+        return f"{self.first}{a:g}_{self.second}{b:g}"
+
+    def parse(self, name):
+        """(a, b) of a job name; ValueError if it is not one."""
+        a, b = name[len(self.first):].split(f"_{self.second}")
+        return float(a), float(b)
+
+    def result_path(self, a, b):
+        return os.path.join(self.directory, self.name(a, b), "result.json")
 
 
 def dispatch(tool, job_command, args, points, *, targets, job_name, run_job, check, summary):

@@ -27,27 +27,15 @@ import jobgrid
 from jobgrid import GridError, axis
 
 SWEEP_DIR = os.path.join(paths.RUN_ROOT, "sweep")
+POINTS = jobgrid.Plane("rho", "mu", SWEEP_DIR)   # point rho<deg>_mu<deg>
 DEFAULT_GRID = "-10,0,10"
 V_START, V_STOP = 0.5, 600.0
-
-
-def point_name(rho, mu):
-    return f"rho{rho:g}_mu{mu:g}"
-
-
-def parse_point(name):
-    rho, mu = name[len("rho"):].split("_mu")
-    return float(rho), float(mu)
 
 
 def grid(args):
     rhos = axis(args.rho, "SWEEP_RHO (--rho)", "angles in degrees")
     mus = axis(args.mu, "SWEEP_MU (--mu)", "angles in degrees")
     return [(rho, mu) for rho in rhos for mu in mus]
-
-
-def result_path(rho, mu):
-    return os.path.join(SWEEP_DIR, point_name(rho, mu), "result.json")
 
 
 def parameters(rho, mu, eom_terms=2):
@@ -71,7 +59,7 @@ def check(points):
 def run_point(name):
     import continuation as ct
     import numpy
-    rho, mu = parse_point(name)
+    rho, mu = POINTS.parse(name)
     started = time.monotonic()
     values = parameters(rho, mu)
     ct.Start("figures", V=V_START, **values)                 # validates first
@@ -79,7 +67,7 @@ def run_point(name):
                           numpy.linspace(V_START, V_STOP, 3000), limit=1, **values)
     result = {"rho_deg": rho, "mu_deg": mu, "critical_V": hopf[0]["V"] if hopf else None,
               "seconds": round(time.monotonic() - started, 2)}
-    with open(result_path(rho, mu), "w") as out:
+    with open(POINTS.result_path(rho, mu), "w") as out:
         json.dump(result, out, indent=1)
     print(f"sweep: {name}: critical speed "
           + (f"{result['critical_V']:.3f} m/s" if hopf else f"> {V_STOP:g} m/s"))
@@ -93,7 +81,7 @@ def summary(points):
     mus = sorted({mu for _, mu in points})
     speed = numpy.full((len(mus), len(rhos)), numpy.nan)
     for rho, mu in points:
-        with open(result_path(rho, mu)) as f:
+        with open(POINTS.result_path(rho, mu)) as f:
             value = json.load(f)["critical_V"]
         speed[mus.index(mu), rhos.index(rho)] = numpy.nan if value is None else value
         print(f"sweep: rho = {rho:6g} deg, mu = {mu:6g} deg: critical speed "
@@ -127,7 +115,7 @@ def main():
         points = grid(args)
     except GridError as exc:
         sys.exit(f"sweep: grid rejected: {exc}")
-    jobgrid.dispatch("sweep", "point", args, points, targets=result_path, job_name=point_name,
+    jobgrid.dispatch("sweep", "point", args, points, targets=POINTS.result_path, job_name=POINTS.name,
                      run_job=run_point, check=check, summary=summary)
 
 
