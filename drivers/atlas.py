@@ -20,7 +20,6 @@ DEFAULT_V x DEFAULT_FSTAR):
 
 `make atlas` (with -j N for N cells at once) runs check, every cell, summary.
 """
-import argparse
 import json
 import os
 import sys
@@ -31,7 +30,7 @@ import atlas_compare
 import paths
 import results
 import jobgrid
-from jobgrid import GridError, axis
+from jobgrid import axis
 
 ATLAS_DIR = os.path.join(paths.RUN_ROOT, "atlas")
 CELLS = jobgrid.Plane("V", "F", ATLAS_DIR)   # cell V<v>_F<F*>
@@ -151,18 +150,9 @@ def fig11_agreement(cells):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("command", choices=["check", "targets", "jobs", "cell", "summary"])
-    parser.add_argument("name", nargs="?", help="V<v>_F<f> (cell only)")
-    parser.add_argument("--V", default=DEFAULT_V, help="speeds [m/s]")
-    parser.add_argument("--Fstar", default=DEFAULT_FSTAR, help="loads F*")
-    args = parser.parse_args()
-    try:
-        points = grid(args)
-    except GridError as exc:
-        sys.exit(f"atlas: grid rejected: {exc}")
-    jobgrid.dispatch("atlas", "cell", args, points, targets=CELLS.result_path, job_name=CELLS.name,
-                     run_job=run_cell, check=check, summary=summary)
+    jobgrid.main("atlas", __doc__.splitlines()[0], "cell", CELLS,
+                 [("--V", DEFAULT_V, "speeds [m/s]"), ("--Fstar", DEFAULT_FSTAR, "loads F*")],
+                 grid, run_job=run_cell, check=check, summary=summary)
 
 
 if __name__ == "__main__":

@@ -6,6 +6,7 @@ up to stop inclusive), or several of these joined by commas.  Every value
 must be a finite number, and no two may share a job (job names use 6
 significant digits, f"{value:g}").
 """
+import argparse
 import math
 import os
 import shlex
@@ -78,6 +79,26 @@ class Plane:
 
     def result_path(self, a, b):
         return os.path.join(self.directory, self.name(a, b), "result.json")
+
+
+def main(tool, description, job_command, plane, options, grid, *, run_job, check, summary):
+    """The command line of a job-grid driver drivers/<tool>.py:
+    `<tool>.py check|targets|jobs|summary|<job_command> [NAME] [--<axis> ...]`.
+    options: (flag, default, help) per axis; grid(args): the points (a
+    GridError ends the process naming the axis's variable)."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("command", choices=["check", "targets", "jobs", job_command, "summary"])
+    parser.add_argument("name", nargs="?",
+                        help=f"{plane.first}<value>_{plane.second}<value> ({job_command} only)")
+    for flag, default, text in options:
+        parser.add_argument(flag, default=default, help=text)
+    args = parser.parse_args()
+    try:
+        points = grid(args)
+    except GridError as exc:
+        sys.exit(f"{tool}: grid rejected: {exc}")
+    dispatch(tool, job_command, args, points, targets=plane.result_path, job_name=plane.name,
+             run_job=run_job, check=check, summary=summary)
 
 
 def dispatch(tool, job_command, args, points, *, targets, job_name, run_job, check, summary):

@@ -15,7 +15,6 @@ comma-separated; the default grid is 3 x 3):
 
 `make sweep` (with -j N for N jobs at once) runs check, every point, summary.
 """
-import argparse
 import json
 import math
 import os
@@ -24,7 +23,7 @@ import time
 
 import paths
 import jobgrid
-from jobgrid import GridError, axis
+from jobgrid import axis
 
 SWEEP_DIR = os.path.join(paths.RUN_ROOT, "sweep")
 POINTS = jobgrid.Plane("rho", "mu", SWEEP_DIR)   # point rho<deg>_mu<deg>
@@ -105,18 +104,10 @@ def summary(points):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("command", choices=["check", "targets", "jobs", "point", "summary"])
-    parser.add_argument("name", nargs="?", help="rho<deg>_mu<deg> (point only)")
-    parser.add_argument("--rho", default=DEFAULT_GRID, help="rho values [deg], comma-separated")
-    parser.add_argument("--mu", default=DEFAULT_GRID, help="mu values [deg], comma-separated")
-    args = parser.parse_args()
-    try:
-        points = grid(args)
-    except GridError as exc:
-        sys.exit(f"sweep: grid rejected: {exc}")
-    jobgrid.dispatch("sweep", "point", args, points, targets=POINTS.result_path, job_name=POINTS.name,
-                     run_job=run_point, check=check, summary=summary)
+    jobgrid.main("sweep", __doc__.splitlines()[0], "point", POINTS,
+                 [("--rho", DEFAULT_GRID, "rho values [deg], comma-separated"),
+                  ("--mu", DEFAULT_GRID, "mu values [deg], comma-separated")],
+                 grid, run_job=run_point, check=check, summary=summary)
 
 
 if __name__ == "__main__":
