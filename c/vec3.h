@@ -4,58 +4,68 @@
 
 #include "dual.h"
 
+/* Forced inline in the derivative builds: a dual of ten directions is 128
+ * bytes (AVX2), a dmat nine of them, and an out-of-line call passes these by
+ * value through memory, copies that cost more than the arithmetic.  The
+ * plain-double build keeps the compiler's choice (its f is faster so). */
+#if DUAL_N > 0
+#define VEC3_INLINE DUAL_INLINE
+#else
+#define VEC3_INLINE static inline
+#endif
+
 typedef struct { dual c[3]; } dvec;      /* components X, Y, Z */
 typedef struct { dual a[3][3]; } dmat;   /* a[row][column] */
 
-static inline dvec v_make(dual x, dual y, dual z)
+VEC3_INLINE dvec v_make(dual x, dual y, dual z)
 {
     dvec r = {{x, y, z}};
     return r;
 }
 
-static inline dvec v_const(double x, double y, double z)
+VEC3_INLINE dvec v_const(double x, double y, double z)
 {
     return v_make(d_const(x), d_const(y), d_const(z));
 }
 
-static inline dvec v_add(dvec a, dvec b)
+VEC3_INLINE dvec v_add(dvec a, dvec b)
 {
     return v_make(d_add(a.c[0], b.c[0]), d_add(a.c[1], b.c[1]), d_add(a.c[2], b.c[2]));
 }
 
-static inline dvec v_sub(dvec a, dvec b)
+VEC3_INLINE dvec v_sub(dvec a, dvec b)
 {
     return v_make(d_sub(a.c[0], b.c[0]), d_sub(a.c[1], b.c[1]), d_sub(a.c[2], b.c[2]));
 }
 
-static inline dvec v_neg(dvec a)
+VEC3_INLINE dvec v_neg(dvec a)
 {
     return v_make(d_neg(a.c[0]), d_neg(a.c[1]), d_neg(a.c[2]));
 }
 
-static inline dvec v_scale(dvec a, dual s)
+VEC3_INLINE dvec v_scale(dvec a, dual s)
 {
     return v_make(d_mul(a.c[0], s), d_mul(a.c[1], s), d_mul(a.c[2], s));
 }
 
-static inline dvec v_scalec(dvec a, double s)
+VEC3_INLINE dvec v_scalec(dvec a, double s)
 {
     return v_make(d_mulc(a.c[0], s), d_mulc(a.c[1], s), d_mulc(a.c[2], s));
 }
 
-static inline dual v_dot(dvec a, dvec b)
+VEC3_INLINE dual v_dot(dvec a, dvec b)
 {
     return d_add(d_add(d_mul(a.c[0], b.c[0]), d_mul(a.c[1], b.c[1])), d_mul(a.c[2], b.c[2]));
 }
 
-static inline dvec v_cross(dvec a, dvec b)
+VEC3_INLINE dvec v_cross(dvec a, dvec b)
 {
     return v_make(d_sub(d_mul(a.c[1], b.c[2]), d_mul(a.c[2], b.c[1])),
                   d_sub(d_mul(a.c[2], b.c[0]), d_mul(a.c[0], b.c[2])),
                   d_sub(d_mul(a.c[0], b.c[1]), d_mul(a.c[1], b.c[0])));
 }
 
-static inline dvec m_apply(dmat m, dvec x)
+VEC3_INLINE dvec m_apply(dmat m, dvec x)
 {
     dvec r;
     for (int i = 0; i < 3; i++)
@@ -64,7 +74,7 @@ static inline dvec m_apply(dmat m, dvec x)
     return r;
 }
 
-static inline dmat m_mul(dmat p, dmat q)
+VEC3_INLINE dmat m_mul(dmat p, dmat q)
 {
     dmat r;
     for (int i = 0; i < 3; i++)
@@ -76,7 +86,7 @@ static inline dmat m_mul(dmat p, dmat q)
 
 /* R(v, theta): right-hand rotation by theta about the unit vector v
  * (Rodrigues: R = cos t I + sin t [v]x + (1 - cos t) v v^T). */
-static inline dmat m_rotation(dvec v, dual theta)
+VEC3_INLINE dmat m_rotation(dvec v, dual theta)
 {
     dual c = d_cos(theta), s = d_sin(theta);
     dual one_c = d_sub(d_const(1.0), c);
