@@ -2,7 +2,10 @@
 MLG model from each of STARTS at one (V, F*), y_fp = 1 mm, epsilon = 0.1 mm
 absolute, `figures` set, each end state classified by drivers/attractor.py.
 A start not settled after STAGES[0] seconds is run again for STAGES[1];
-still unsettled, it is reported as such.
+still unsettled, it is reported as such.  A start that leaves the domain
+keeps what it was doing until then (`before`), and a shimmy end keeps the
+lateral and tyre motion relative to psi (end_state), so that a new rule
+for a kind can be applied to stored cells.
 """
 import os
 import resource
@@ -54,27 +57,59 @@ def inside_start(v, fstar, psi0, csv):
     raise RuntimeError(f"atlas: no start inside the domain at V = {v:g}, F* = {fstar:g}")
 
 
-def run_stage(v, fstar, psi0, t_end, rundir):
-    """Simulate t_end seconds from psi0 and classify the end state
-    (attractor.classify; `domain` if the model leaves its domain)."""
+def read_run(csv):
+    """t, psi, delta, lambda_L of the simulator's samples (of a run that left
+    the domain: those up to then), or None if there are none."""
+    import numpy
+    try:
+        data = numpy.loadtxt(csv, delimiter=",", skiprows=1, usecols=(0, 1, 2, 9), ndmin=2)
+    except (OSError, ValueError):
+        return None
+    return data if len(data) else None
+
+
+def end_state(data):
+    """attractor.classify of the samples, with the lateral (delta) and tyre
+    (lambda_L) motion relative to psi at the orbit's frequency as
+    [amplitude ratio, phase lead in degrees] for a shimmy end."""
     import numpy
     import attractor
+    t, psi = data[:, 0], data[:, 1]
+    result = attractor.classify(t, psi, WINDOW)
+    if result["frequency_hz"] > 0:
+        last = t >= t[-1] - WINDOW
+        for name, col in (("delta_over_psi", 2), ("lambda_over_psi", 3)):
+            ratio = attractor.mode_shape(t[last], psi[last], data[last, col],
+                                         result["frequency_hz"])
+            result[name] = [abs(ratio), float(numpy.degrees(numpy.angle(ratio)))]
+    return result
+
+
+def run_stage(v, fstar, psi0, t_end, rundir):
+    """Simulate t_end seconds from psi0 and classify the end state
+    (end_state; `domain` if the model leaves its domain, with `before`: the
+    state classified over the samples up to then, if there are 2 WINDOW
+    seconds of them)."""
     import simulator
     csv = os.path.join(rundir, "run.csv")
     proc = simulator.run(csv, *simulator_args(v, fstar, psi0, t_end))
+    data = read_run(csv)
+    discard(csv)
     if proc.returncode != 0:
         reason = left_domain(proc)
         if reason is None:
-            discard(csv)
             raise RuntimeError(f"atlas: mlg_simulate failed at V = {v:g}, F* = {fstar:g}, "
                                f"psi0 = {psi0:g}: {proc.stderr.strip()}")
-        discard(csv)
-        return {"kind": "domain", "t_end": t_end, "psi0": psi0, "reason": reason}
-    data = numpy.loadtxt(csv, delimiter=",", skiprows=1, usecols=(0, 1))
-    os.remove(csv)
-    if data[-1, 0] < t_end - 1e-9:
-        raise RuntimeError(f"atlas: the run stopped at t = {data[-1, 0]:g} s of {t_end:g}")
-    result = attractor.classify(data[:, 0], data[:, 1], WINDOW)
+        result = {"kind": "domain", "t_end": t_end, "psi0": psi0, "reason": reason,
+                  "before": None}
+        if data is not None and data[-1, 0] - data[0, 0] >= 2 * WINDOW:
+            result["before"] = end_state(data)
+            result["before"]["t_end"] = float(data[-1, 0])
+        return result
+    if data is None or data[-1, 0] < t_end - 1e-9:
+        raise RuntimeError(f"atlas: the run stopped at t = "
+                           f"{0 if data is None else data[-1, 0]:g} s of {t_end:g}")
+    result = end_state(data)
     result.update(t_end=t_end, psi0=psi0)
     return result
 
@@ -102,10 +137,31 @@ def cell(v, fstar, rundir):
         for start, s in starts.items():
             if s["kind"] in ("low", "high") and s["t_end"] < STAGES[-1]:
                 starts[start] = run_stage(v, fstar, s["psi0"], STAGES[-1], rundir)
+    unstable_orbits(starts)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)
     return {"V": v, "Fstar": fstar, "starts": starts, "label": label(starts),
             "cpu_seconds": round(cpu, 2)}
+
+
+def unstable_orbits(starts):
+    """A start that sits on a periodic orbit with its modulation at the
+    measurement floor (attractor.SPREAD_NOISE: no trend can be read) is on
+    an unstable orbit, not an attractor, when another start of the cell
+    grows a modulation around the same orbit (amplitude and frequency
+    within SAME): it ends on that start's torus, only later (a start near
+    rest excites the unstable Floquet pair little; it grows at ~1e-2 /s
+    from ~1e-5 and needs ~10 min).  Its kind becomes quasi, with the start
+    that showed the growth in `unstable_by`."""
+    import attractor
+    growing = {k: s for k, s in starts.items() if s["kind"] == "quasi" and s.get("growing")}
+    for start, s in starts.items():
+        if s["kind"] not in ("low", "high") or s["peak_spread"] >= attractor.SPREAD_NOISE:
+            continue
+        for other, g in growing.items():
+            if distinct([g, s]) == [g]:
+                s.update(kind="quasi", unstable_by=other, growing=True)
+                break
 
 
 # cell labels: the distinct kinds its starts reached, in this order

@@ -1,42 +1,61 @@
 """What a time simulation settled on: the classifier of the attractor atlas.
 
 classify(t, psi) looks at the torsion angle psi over the last 2 W seconds of a
-run (two windows of W seconds, the earlier one A, the later one B) and
-returns a dict with its `kind` and the measured numbers.  Kinds and criteria
-(amplitude = half peak-to-peak of psi in B; thresholds are the constants
-below; PSI_FP is the freeplay angle y_fp / r_tlk, about 2.1e-3 rad at 1 mm):
+run (two windows of W seconds, the earlier one A, the later one B) and at the
+trend of its modulation over the last half of the run, and returns a dict
+with its `kind` and the measured numbers.  Amplitude = half peak-to-peak of
+psi in B; peak spread = (largest - smallest psi peak) / largest, the size of
+the modulation; PSI_FP, the freeplay angle y_fp / r_tlk, is about 2.1e-3 rad
+at 1 mm.  The modulation's trend is the slope of log(peak spread) against
+time, one spread per SPAN seconds (spread_trend, also used by torus.py to
+check AUTO's Floquet rates), with its standard error sigma: growing if the
+slope exceeds both RATE_MIN and SIGNIFICANT sigma, decaying if it is below
+minus that, steady otherwise.  Kinds and criteria:
 
   straight   stationary (amplitude < STILL) at |mean psi| < CENTRE
   yaw        stationary off centre: |mean psi| >= CENTRE (the pitchfork band)
   low        periodic shimmy, dominant frequency < SPLIT_HZ (Fig. 11's
              low-frequency orbits, 1.7-4.7 Hz at F* = 1)
-  high       periodic shimmy, dominant frequency >= SPLIT_HZ
-  quasi      a stationary amplitude modulation: the psi peaks of B spread by
-             >= MODULATED of their largest value, fill that range without a
-             gap (no period-k orbit), and the spread in A and B agree; the
-             modulation frequency is the envelope's strongest frequency
-  unsettled  none of the above within the time limit: amplitude or mean
-             differ between A and B by more than SETTLED of the amplitude, or
-             the peak spread by more than SPREAD_SETTLED of itself (at least
-             SPREAD_FLOOR); never guessed as anything else.  A modulation
-             growing by less than SPREAD_SETTLED per window (about 2 %/s) is
-             not seen: such an orbit counts as periodic
+  high       periodic shimmy, dominant frequency >= SPLIT_HZ.  Periodic:
+             amplitude and mean settled (below), and the modulation is at
+             the measurement floor (spread < SPREAD_NOISE), or decaying (a
+             transient dying on a stable orbit, whatever its size), or
+             steady, of at least MODULATED, with peaks at a few discrete
+             values (period-k, `levels` > 1)
+  quasi      a modulation that grows (spread >= SPREAD_NOISE): the orbit it
+             surrounds is unstable (a Floquet pair outside the unit circle),
+             so the attractor is the torus beyond it (`growing` true); or a
+             steady modulation of at least MODULATED that fills its range
+             without a gap (a saturated torus).  The modulation frequency is
+             the envelope's strongest frequency
+  unsettled  none of the above: amplitude or mean differ between A and B by
+             more than SETTLED of the amplitude, or a modulation between
+             SPREAD_NOISE and MODULATED with no trend (neither a clean orbit
+             nor a torus yet); never guessed as anything else
 The kind `domain` (the model left its domain, e.g. a wheel lifts off) comes
-from the simulator's error, not from here.  Periodic orbits whose peaks take
-a few discrete values (period-k) count as low/high, with `levels` > 1.
+from the simulator's error, not from here.
 """
 import numpy
 
 SPLIT_HZ = 8.0        # low/high frequency boundary [Hz] (as drivers/fig11.py)
 STILL = 1e-6          # psi amplitude of a stationary state [rad]
 CENTRE = 1e-5         # |mean psi| of straight rolling [rad] (psi_fp ~ 2e-3)
-MODULATED = 5e-3      # relative peak spread of a modulated oscillation
+MODULATED = 5e-3      # relative peak spread of a saturated torus
 SETTLED = 0.01        # relative change A -> B of amplitude and mean (of the
                       # amplitude) allowed for a settled state
-SPREAD_SETTLED = 0.1  # relative change A -> B of the peak spread allowed ...
-SPREAD_FLOOR = 1e-5   # ... or this much absolute (the peak fit's error is
-                      # < 1e-6; orbits of Fig. 11 that settle keep ~2e-5 from
-                      # the axial mode, damped at only 0.016 /s)
+SPREAD_NOISE = 1e-5   # peak spread of a clean periodic orbit: stable orbits
+                      # far from any bifurcation (V = 200, F* = 1) keep
+                      # 2e-6 .. 5e-6 with no trend (integration and peak-fit
+                      # error); below this a trend is not read
+SPAN = 2.0            # s per spread sample of the trend fit (two periods of
+                      # the slowest modulation, ~1 Hz, per sample)
+FIT_PART = 0.5        # the trend is fitted over this last part of the run,
+                      # after the other modes' transients
+RATE_MIN = 1e-3       # |trend| [1/s] that counts: AUTO's Floquet rates
+                      # ln|mu| f are 1e-3 .. 1e-1 /s within 1-25 m/s of the
+                      # torus points; a slower trend changes the spread by
+                      # < 6 % over 60 s and is not told from steady
+SIGNIFICANT = 3.0     # ... and it must exceed this many standard errors
 GAP = 0.2             # a gap in the sorted peaks wider than this share of their
                       # range means discrete levels (period-k), not a torus
 
@@ -108,6 +127,47 @@ def levels(p):
     return 1 + int(numpy.sum(numpy.diff(s) > GAP * width)) if width > 0 else 1
 
 
+def spread_trend(t, psi, t0, t1, span=SPAN):
+    """The modulation's trend over [t0, t1): the least-squares slope of
+    log(peak spread) against time, one spread per `span` seconds, as
+    {"rate" [1/s], "rate_error" (its standard error), "first", "last"
+    (the first and last spread)}; None if fewer than 4 spreads fit in."""
+    starts = numpy.arange(t0, t1 - span + 1e-9, span)
+    if len(starts) < 4:
+        return None
+    times, spreads = [], []
+    for a in starts:
+        part = (t >= a) & (t < a + span)
+        times.append(a + span / 2)
+        spreads.append(window_numbers(t[part], psi[part])["spread"])
+    # a spread of exactly 0 (all peaks equal to the fit's precision) is
+    # floored so that the logarithm exists
+    (rate, _), cov = numpy.polyfit(times, numpy.log(numpy.maximum(spreads, 1e-12)), 1,
+                                   cov=True)
+    return {"rate": float(rate), "rate_error": float(numpy.sqrt(cov[0, 0])),
+            "first": float(spreads[0]), "last": float(spreads[-1])}
+
+
+def trend_kind(fit):
+    """"growing", "decaying" or "steady" (see the module's docstring);
+    None without a fit."""
+    if fit is None:
+        return None
+    bound = max(RATE_MIN, SIGNIFICANT * fit["rate_error"])
+    return "growing" if fit["rate"] > bound else "decaying" if fit["rate"] < -bound else "steady"
+
+
+def mode_shape(t, psi, other, frequency):
+    """other's fundamental at `frequency` relative to psi's (complex: the
+    amplitude ratio and the phase lead of `other`), over whole periods."""
+    k, _ = crossings(t, psi)
+    part = slice(k[0], k[-1]) if len(k) >= 2 else slice(None)
+    e = numpy.exp(-2j * numpy.pi * frequency * t[part])
+    c_psi = numpy.sum((psi[part] - psi[part].mean()) * e)
+    c_other = numpy.sum((other[part] - other[part].mean()) * e)
+    return complex(c_other / c_psi) if c_psi != 0 else complex("nan")
+
+
 def classify(t, psi, window):
     """The kind of state reached over the last 2 * window seconds, with its
     numbers (amplitude, mean [rad], frequency, modulation [Hz])."""
@@ -121,7 +181,7 @@ def classify(t, psi, window):
     result = {"amplitude_rad": B["amplitude"], "mean_rad": B["mean"],
               "frequency_hz": B["frequency_hz"], "modulation_hz": None,
               "peak_spread": B["spread"], "levels": 1,
-              "change": None}
+              "change": None, "trend": None, "growing": False}
     scale = max(B["amplitude"], STILL)
     change = max(abs(B["amplitude"] - A["amplitude"]) / scale,
                  abs(B["mean"] - A["mean"]) / scale)
@@ -130,16 +190,27 @@ def classify(t, psi, window):
         result["frequency_hz"] = 0.0
         result["kind"] = "straight" if abs(B["mean"]) < CENTRE else "yaw"
         return result
-    spread_change = abs(B["spread"] - A["spread"])
-    if change > SETTLED or spread_change > max(SPREAD_SETTLED * max(A["spread"], B["spread"]),
-                                               SPREAD_FLOOR):
+    fit = spread_trend(t, psi, t_end - FIT_PART * (t_end - t[0]), t_end)
+    trend = trend_kind(fit)
+    result["trend"] = trend
+    result["spread_rate"] = fit and fit["rate"]
+    result["spread_rate_error"] = fit and fit["rate_error"]
+    if change > SETTLED:
         result["kind"] = "unsettled"
         return result
     tp, p = B["peaks"]
-    result["levels"] = levels(p) if B["spread"] >= MODULATED else 1
-    if B["spread"] >= MODULATED and result["levels"] == 1:
-        result["kind"] = "quasi"
-        result["modulation_hz"] = envelope_frequency(tp, p)
-        return result
-    result["kind"] = "low" if B["frequency_hz"] < SPLIT_HZ else "high"
+    periodic = "low" if B["frequency_hz"] < SPLIT_HZ else "high"
+    noise = B["spread"] < SPREAD_NOISE
+    if trend == "growing" and not noise:
+        result.update(kind="quasi", growing=True, modulation_hz=envelope_frequency(tp, p))
+    elif noise or trend == "decaying":
+        result["kind"] = periodic
+    elif B["spread"] >= MODULATED and trend == "steady":
+        result["levels"] = levels(p)
+        if result["levels"] > 1:
+            result["kind"] = periodic
+        else:
+            result.update(kind="quasi", modulation_hz=envelope_frequency(tp, p))
+    else:                           # a small steady modulation, or no fit
+        result["kind"] = "unsettled"
     return result

@@ -94,13 +94,8 @@ def simulated_rate(values, v, psi0):
                            "--yfp", values["yfp"], "--eps-abs", eps, "--eps-rel", 0,
                            "--t-end", SIM_T[1], "--psi0", psi0)
         data = numpy.loadtxt(csv, delimiter=",", skiprows=1, usecols=(0, 1))
-    times, spreads = [], []
-    for t0 in numpy.arange(SIM_T[0], SIM_T[1] - 1e-9, SPAN):
-        part = (data[:, 0] >= t0) & (data[:, 0] < t0 + SPAN)
-        times.append(t0 + SPAN / 2)
-        spreads.append(attractor.window_numbers(data[part, 0], data[part, 1])["spread"])
-    slope = numpy.polyfit(times, numpy.log(spreads), 1)[0]
-    return float(slope), float(spreads[0]), float(spreads[-1])
+    fit = attractor.spread_trend(data[:, 0], data[:, 1], SIM_T[0], SIM_T[1], SPAN)
+    return fit["rate"], fit["first"], fit["last"]
 
 
 def tr_point(rundir, name, bd, v, slope):

@@ -24,6 +24,7 @@ import atlas_compare  # noqa: E402
 import attractor  # noqa: E402
 
 T = np.arange(0.0, 10.0 + 1e-9, 1e-3)       # two 5 s windows, atlas sampling
+T40 = np.arange(0.0, 40.0 + 1e-9, 1e-3)     # the first stage's time limit
 W = atlas_cell.WINDOW
 
 
@@ -40,16 +41,46 @@ def synthetic():
     check("synthetic 3 Hz sine: low", r["kind"] == "low", r)
     check_close("synthetic 3 Hz sine: frequency", r["frequency_hz"], 3.0, rel=1e-3)
 
-    modulated = 0.12 * (1 + 0.03 * np.sin(2 * np.pi * 1.03 * T)) * np.sin(2 * np.pi * 39.8 * T)
-    r = attractor.classify(T, modulated, W)
-    check("synthetic 3 % modulation at 1.03 Hz: quasi", r["kind"] == "quasi", r)
+    # 40 s signals (a first stage): the trend is fitted over 20-40 s
+    def carrier(modulation):
+        return 0.12 * (1 + modulation) * np.sin(2 * np.pi * 39.8 * T40)
+
+    r = attractor.classify(T40, carrier(0.03 * np.sin(2 * np.pi * 1.03 * T40)), W)
+    check("synthetic steady 3 % modulation at 1.03 Hz: quasi, trend steady",
+          r["kind"] == "quasi" and r["trend"] == "steady" and not r["growing"], r)
+    check("synthetic steady modulation: |trend| below RATE_MIN",
+          abs(r["spread_rate"]) < attractor.RATE_MIN, r["spread_rate"])
     check_close("synthetic modulation: its frequency", r["modulation_hz"] or 0, 1.03, rel=0.05)
 
-    growing = 0.12 * (1 + 1e-4 * np.exp(0.2 * T) * np.sin(2 * np.pi * 1.4 * T)) \
-        * np.sin(2 * np.pi * 42.0 * T)
-    r = attractor.classify(T, growing, W)
-    check("synthetic modulation growing at 0.2 /s from 1e-4: unsettled",
-          r["kind"] == "unsettled", r)
+    growing = carrier(1e-3 * np.exp(0.02 * T40) * np.sin(2 * np.pi * 1.4 * T40))
+    r = attractor.classify(T40, growing, W)
+    check("synthetic modulation growing at 0.02 /s from 0.1 % (still below MODULATED): "
+          "quasi, growing", r["kind"] == "quasi" and r["growing"] and r["trend"] == "growing", r)
+    check_close("synthetic growing modulation: fitted rate 0.02 /s", r["spread_rate"], 0.02,
+                rel=0.05)
+
+    decaying = carrier(2e-2 * np.exp(-0.016 * T40) * np.sin(2 * np.pi * 0.8 * T40))
+    r = attractor.classify(T40, decaying, W)
+    check("synthetic 1 % modulation decaying at 0.016 /s (the axial mode): high, decaying",
+          r["kind"] == "high" and r["trend"] == "decaying", r)
+    check_close("synthetic decaying modulation: fitted rate -0.016 /s", r["spread_rate"],
+                -0.016, rel=0.05)
+
+    slow = carrier(1e-3 * np.exp(2e-4 * T40) * np.sin(2 * np.pi * 1.4 * T40))
+    r = attractor.classify(T40, slow, W)
+    check("synthetic 0.2 % modulation growing at 2e-4 /s (< RATE_MIN): steady, so unsettled",
+          r["kind"] == "unsettled" and r["trend"] == "steady", r)
+
+    fit = attractor.spread_trend(T40, growing, 20.0, 40.0)
+    check_close("spread_trend: first spread 2e-3 exp(0.02 * 21) (two-sided, 1 s into the fit)",
+                fit["first"], 2e-3 * np.exp(0.02 * 21.0), rel=0.05)
+    check("spread_trend: fewer than 4 spreads give no fit",
+          attractor.spread_trend(T40, growing, 34.0, 40.0) is None)
+
+    lateral = 0.2 * 0.12 * np.sin(2 * np.pi * 39.8 * T40 - np.radians(60.0))
+    ratio = attractor.mode_shape(T40[-5000:], carrier(0)[-5000:], lateral[-5000:], 39.8)
+    check_close("mode_shape: amplitude ratio 0.2", abs(ratio), 0.2, rel=1e-3)
+    check_close("mode_shape: phase -60 deg", np.degrees(np.angle(ratio)), -60.0, abs=0.1)
 
     decaying = 1e-4 * np.exp(-0.3 * T) * np.sin(2 * np.pi * 38.0 * T)
     r = attractor.classify(T, decaying, W)
@@ -61,9 +92,9 @@ def synthetic():
     check("synthetic rest at psi = 1.7e-3: yaw", r["kind"] == "yaw", r)
     check_close("synthetic yaw: mean", r["mean_rad"], 1.7e-3, rel=1e-9)
 
-    two = 0.1 * np.sin(2 * np.pi * 40.0 * T) * (1 + 0.05 * np.sign(np.sin(2 * np.pi * 20.0 * T
-                                                                            + 0.1)))
-    r = attractor.classify(T, two, W)
+    two = 0.1 * np.sin(2 * np.pi * 40.0 * T40) * (1 + 0.05 * np.sign(np.sin(2 * np.pi * 20.0
+                                                                              * T40 + 0.1)))
+    r = attractor.classify(T40, two, W)
     check("synthetic period-2 (two peak levels): high with levels 2",
           r["kind"] == "high" and r["levels"] == 2, r)
 
@@ -72,6 +103,28 @@ def synthetic():
         check("3 s of samples for two 5 s windows: refused", False, "no error")
     except ValueError as exc:
         check("3 s of samples for two 5 s windows: refused", "window" in str(exc), exc)
+
+
+def unstable_orbit():
+    """A start on an orbit with its modulation at the noise floor ends on the
+    torus when another start's modulation grows around the same orbit."""
+    starts = {"rolling": {"kind": "high", "peak_spread": 6e-6, "amplitude_rad": 0.1425,
+                          "frequency_hz": 39.98},
+              "shimmy": {"kind": "quasi", "growing": True, "peak_spread": 1.2e-3,
+                         "amplitude_rad": 0.1426, "frequency_hz": 39.98},
+              "other": {"kind": "high", "peak_spread": 6e-6, "amplitude_rad": 0.05,
+                        "frequency_hz": 30.0},
+              "modulated": {"kind": "high", "peak_spread": 2e-4, "amplitude_rad": 0.1425,
+                            "frequency_hz": 39.98}}
+    atlas_cell.unstable_orbits(starts)
+    check("unstable orbit: the start at the noise floor on the same orbit (0.07 % apart) "
+          "is quasi, shown by shimmy",
+          starts["rolling"]["kind"] == "quasi" and starts["rolling"]["unstable_by"] == "shimmy",
+          starts["rolling"])
+    check("unstable orbit: a different orbit (0.05 rad, 30 Hz) stays high",
+          starts["other"]["kind"] == "high", starts["other"])
+    check("unstable orbit: a start whose own spread (2e-4) was read stays as read",
+          starts["modulated"]["kind"] == "high", starts["modulated"])
 
 
 def simulated():
@@ -91,8 +144,18 @@ def simulated():
         check_close("V = 450, F* = 0.3: psi amplitude 0.120 rad", r["amplitude_rad"], 0.120,
                     abs=0.002)
         check_close("V = 450, F* = 0.3: frequency 39.8 Hz", r["frequency_hz"], 39.8, abs=0.2)
-        check("V = 450, F* = 0.3 after 20 s: growing modulation, so unsettled",
-              r["kind"] == "unsettled", r)
+        check("V = 450, F* = 0.3 after 20 s: growing modulation, so quasi (growing)",
+              r["kind"] == "quasi" and r["growing"], r)
+        check("V = 450, F* = 0.3: modulation growing at 0.005-0.1 /s (AUTO's rates near "
+              "the torus points: 1e-3 .. 1e-1)", 0.005 < r["spread_rate"] < 0.1, r["spread_rate"])
+        r = atlas_cell.run_stage(600.0, 0.3, 0.05, 25.0, tmp)
+        check("V = 600, F* = 0.3 from 0.05 rad: a wheel lifts off before 25 s",
+              r["kind"] == "domain" and "lifts off" in r["reason"], r)
+        before = r["before"] or {}
+        check("V = 600, F* = 0.3: before lift-off a ~40 Hz shimmy whose modulation grows "
+              "beyond 0.5 %", before.get("trend") == "growing"
+              and before.get("peak_spread", 0) > attractor.MODULATED
+              and 35 < before.get("frequency_hz", 0) < 45, before)
         check("no simulator output left behind", os.listdir(tmp) == [], os.listdir(tmp))
 
 
@@ -169,6 +232,7 @@ def comparison():
 
 def main():
     synthetic()
+    unstable_orbit()
     comparison()
     bad_input()
     simulated()
