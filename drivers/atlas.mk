@@ -11,7 +11,7 @@ else ifneq ($(ATLAS_GRID),)
 $(error ATLAS_GRID=$(ATLAS_GRID): the only named grid is coarse)
 endif
 ATLAS_ARGS := $(if $(ATLAS_V),--V=$(ATLAS_V)) $(if $(ATLAS_FSTAR),--Fstar=$(ATLAS_FSTAR))
-$(eval $(call job_grid,atlas,$(ATLAS_ARGS),$(MLG_SIMULATE) drivers/atlas_cell.py \
-    drivers/attractor.py drivers/simulator.py,cell))
+$(eval $(call job_grid,atlas,$(ATLAS_ARGS),$(MLG_SIMULATE) $(MLG_SHARED) \
+    drivers/atlas_cell.py drivers/attractor.py drivers/simulator.py,cell))
 
 TEST_PROGRAMS += tests/test_atlas.py

@@ -68,14 +68,23 @@ def read_run(csv):
     return data if len(data) else None
 
 
-def end_state(data):
+def freeplay_angle(fstar):
+    """psi_fp = y_fp / r_tlk [rad] at straight rolling (r_tlk depends on the
+    strut compression, so on F*): 2.56e-3 at F* = 0.02, 2.05e-3 at 3.5."""
+    import mlgmodel
+    model = mlgmodel.Model("figures", Fstar=fstar, yfp=FREEPLAY["yfp"],
+                           eps_abs=FREEPLAY["eps_abs"], eps_rel=FREEPLAY["eps_rel"])
+    return FREEPLAY["yfp"] * 1e-3 / model.r_tlk(model.equilibrium()["eta"])
+
+
+def end_state(data, psi_fp):
     """attractor.classify of the samples, with the lateral (delta) and tyre
     (lambda_L) motion relative to psi at the orbit's frequency as
     [amplitude ratio, phase lead in degrees] for a shimmy end."""
     import numpy
     import attractor
     t, psi = data[:, 0], data[:, 1]
-    result = attractor.classify(t, psi, WINDOW)
+    result = attractor.classify(t, psi, WINDOW, psi_fp)
     if result["frequency_hz"] > 0:
         last = t >= t[-1] - WINDOW
         for name, col in (("delta_over_psi", 2), ("lambda_over_psi", 3)):
@@ -103,13 +112,13 @@ def run_stage(v, fstar, psi0, t_end, rundir):
         result = {"kind": "domain", "t_end": t_end, "psi0": psi0, "reason": reason,
                   "before": None}
         if data is not None and data[-1, 0] - data[0, 0] >= 2 * WINDOW:
-            result["before"] = end_state(data)
+            result["before"] = end_state(data, freeplay_angle(fstar))
             result["before"]["t_end"] = float(data[-1, 0])
         return result
     if data is None or data[-1, 0] < t_end - 1e-9:
         raise RuntimeError(f"atlas: the run stopped at t = "
                            f"{0 if data is None else data[-1, 0]:g} s of {t_end:g}")
-    result = end_state(data)
+    result = end_state(data, freeplay_angle(fstar))
     result.update(t_end=t_end, psi0=psi0)
     return result
 

@@ -25,30 +25,16 @@ NEAR = 0.01               # distance to a curve, in units of SCALE
 COMPARED = ~CODES["yaw"]  # bits compared (see above)
 
 
-def periodic_kinds(states):
-    """The kinds of the periodic end states: where two different orbits
-    coexist (atlas_cell.distinct), the slower is the low-frequency family
-    and the faster the high one, whatever the fixed split (at F* = 1.8-2.6
-    and low speed both run above 8 Hz); a lone orbit keeps its kind."""
-    import atlas_cell
-    orbits = atlas_cell.distinct([s for s in states if s["kind"] in ("low", "high")])
-    if len(orbits) < 2:
-        return [s["kind"] for s in orbits]
-    slow = min(s["frequency_hz"] for s in orbits)
-    return ["low" if s["frequency_hz"] == slow else "high" for s in orbits]
-
-
 def cell_code(cell):
     """The OR of the cell's end states (CODES), or None if one is unsettled.
     Leaving the domain counts only where no start settled in it (lift-off
     as the region's fate): beside settled states it is a large start's
-    transient lifting a wheel, not a region of Fig. 11.  Periodic ends are
-    named by periodic_kinds."""
+    transient lifting a wheel, not a region of Fig. 11."""
     states = list(cell["starts"].values())
     kinds = [s["kind"] for s in states]
     if "unsettled" in kinds:
         return None
-    settled = [k for k in kinds if k not in ("domain", "low", "high")] + periodic_kinds(states)
+    settled = [k for k in kinds if k != "domain"]
     code = 0
     for kind in settled or kinds:
         code |= CODES[kind]

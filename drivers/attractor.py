@@ -5,8 +5,8 @@ run (two windows of W seconds, the earlier one A, the later one B) and at the
 trend of its modulation over the last half of the run, and returns a dict
 with its `kind` and the measured numbers.  Amplitude = half peak-to-peak of
 psi in B; peak spread = (largest - smallest psi peak) / largest, the size of
-the modulation; PSI_FP, the freeplay angle y_fp / r_tlk, is about 2.1e-3 rad
-at 1 mm.  The modulation's trend is the slope of log(peak spread) against
+the modulation; psi_fp, the freeplay angle y_fp / r_tlk (the caller's), is
+2.05-2.56e-3 rad at 1 mm.  The modulation's trend is the slope of log(peak spread) against
 time, one spread per SPAN seconds (spread_trend, also used by torus.py to
 check AUTO's Floquet rates), with its standard error sigma: growing if the
 slope exceeds both RATE_MIN and SIGNIFICANT sigma, decaying if it is below
@@ -14,9 +14,11 @@ minus that, steady otherwise.  Kinds and criteria:
 
   straight   stationary (amplitude < STILL) at |mean psi| < CENTRE
   yaw        stationary off centre: |mean psi| >= CENTRE (the pitchfork band)
-  low        periodic shimmy, dominant frequency < SPLIT_HZ (Fig. 11's
-             low-frequency orbits, 1.7-4.7 Hz at F* = 1)
-  high       periodic shimmy, dominant frequency >= SPLIT_HZ.  Periodic:
+  low        periodic shimmy that barely engages the torque link: amplitude
+             below ENGAGED psi_fp (Fig. 11's low-frequency family, born at
+             Hopf points below 9.3 Hz; 1.7-14 Hz along its stable part)
+  high       periodic shimmy swinging further (the family born above 9.3 Hz
+             and the large-amplitude family, 12-47 Hz).  Periodic:
              amplitude and mean settled (below), and the modulation is at
              the measurement floor (spread < SPREAD_NOISE), or decaying (a
              transient dying on a stable orbit, whatever its size), or
@@ -37,7 +39,13 @@ from the simulator's error, not from here.
 """
 import numpy
 
-SPLIT_HZ = 8.0        # low/high frequency boundary [Hz] (as drivers/fig11.py)
+ENGAGED = 1.305       # low/high boundary of the amplitude / psi_fp: on the
+                      # stable orbits of Fig. 11's 22 slices and large family
+                      # (13024 points) the low family reaches at most 1.299,
+                      # the high family at least 1.309 (but for 2 points at
+                      # its Hopf point, 144.6 m/s, where no low orbit exists);
+                      # no frequency separates them (low up to 14.1 Hz, high
+                      # from 12.2 Hz)
 STILL = 1e-6          # psi amplitude of a stationary state [rad]
 CENTRE = 1e-5         # |mean psi| of straight rolling [rad] (psi_fp ~ 2e-3)
 MODULATED = 5e-3      # relative peak spread of a saturated torus
@@ -168,9 +176,10 @@ def mode_shape(t, psi, other, frequency):
     return complex(c_other / c_psi) if c_psi != 0 else complex("nan")
 
 
-def classify(t, psi, window):
+def classify(t, psi, window, psi_fp):
     """The kind of state reached over the last 2 * window seconds, with its
-    numbers (amplitude, mean [rad], frequency, modulation [Hz])."""
+    numbers (amplitude, mean [rad], frequency, modulation [Hz]); psi_fp [rad]
+    is the freeplay angle (low/high)."""
     t_end = t[-1]
     if t_end - t[0] < 2 * window - 1e-9:
         raise ValueError(f"attractor.classify: {t_end - t[0]:g} s of samples, need "
@@ -199,7 +208,7 @@ def classify(t, psi, window):
         result["kind"] = "unsettled"
         return result
     tp, p = B["peaks"]
-    periodic = "low" if B["frequency_hz"] < SPLIT_HZ else "high"
+    periodic = "low" if B["amplitude"] < ENGAGED * psi_fp else "high"
     noise = B["spread"] < SPREAD_NOISE
     if trend == "growing" and not noise:
         result.update(kind="quasi", growing=True, modulation_hz=envelope_frequency(tp, p))

@@ -25,27 +25,39 @@ import attractor  # noqa: E402
 
 T = np.arange(0.0, 10.0 + 1e-9, 1e-3)       # two 5 s windows, atlas sampling
 T40 = np.arange(0.0, 40.0 + 1e-9, 1e-3)     # the first stage's time limit
+PSI_FP = 2.088e-3                           # freeplay angle at F* = 1 [rad]
 W = atlas_cell.WINDOW
 
 
 def synthetic():
     sine = 0.12 * np.sin(2 * np.pi * 40.0 * T)
-    r = attractor.classify(T, sine, W)
+    r = attractor.classify(T, sine, W, PSI_FP)
     check("synthetic 40 Hz sine: high", r["kind"] == "high", r)
     check_close("synthetic 40 Hz sine: amplitude", r["amplitude_rad"], 0.12, rel=1e-4)
     check_close("synthetic 40 Hz sine: frequency", r["frequency_hz"], 40.0, rel=1e-4)
     check("synthetic 40 Hz sine: peak spread below 1e-6 (quartic fit)",
           r["peak_spread"] < 1e-6, r["peak_spread"])
 
-    r = attractor.classify(T, 2e-3 * np.sin(2 * np.pi * 3.0 * T + 0.3), W)
+    r = attractor.classify(T, 2e-3 * np.sin(2 * np.pi * 3.0 * T + 0.3), W, PSI_FP)
     check("synthetic 3 Hz sine: low", r["kind"] == "low", r)
     check_close("synthetic 3 Hz sine: frequency", r["frequency_hz"], 3.0, rel=1e-3)
+
+    # low / high by how far the swing passes the freeplay angle (ENGAGED):
+    # the orbits of V = 20 m/s, F* = 1.8 (psi_fp 2.066e-3) and F* = 0.02
+    # (psi_fp 2.555e-3), whatever their frequency
+    for amplitude, f, psi_fp, kind in ((2.42e-3, 9.7, 2.066e-3, "low"),
+                                       (3.13e-3, 18.1, 2.066e-3, "high"),
+                                       (3.40e-3, 13.6, 2.555e-3, "high")):
+        r = attractor.classify(T, amplitude * np.sin(2 * np.pi * f * T), W, psi_fp)
+        check(f"synthetic {amplitude:g} rad at {f:g} Hz, psi_fp {psi_fp:g} rad "
+              f"(ratio {amplitude / psi_fp:.2f}, ENGAGED {attractor.ENGAGED}): {kind}",
+              r["kind"] == kind, r)
 
     # 40 s signals (a first stage): the trend is fitted over 20-40 s
     def carrier(modulation):
         return 0.12 * (1 + modulation) * np.sin(2 * np.pi * 39.8 * T40)
 
-    r = attractor.classify(T40, carrier(0.03 * np.sin(2 * np.pi * 1.03 * T40)), W)
+    r = attractor.classify(T40, carrier(0.03 * np.sin(2 * np.pi * 1.03 * T40)), W, PSI_FP)
     check("synthetic steady 3 % modulation at 1.03 Hz: quasi, trend steady",
           r["kind"] == "quasi" and r["trend"] == "steady" and not r["growing"], r)
     check("synthetic steady modulation: |trend| below RATE_MIN",
@@ -53,21 +65,21 @@ def synthetic():
     check_close("synthetic modulation: its frequency", r["modulation_hz"] or 0, 1.03, rel=0.05)
 
     growing = carrier(1e-3 * np.exp(0.02 * T40) * np.sin(2 * np.pi * 1.4 * T40))
-    r = attractor.classify(T40, growing, W)
+    r = attractor.classify(T40, growing, W, PSI_FP)
     check("synthetic modulation growing at 0.02 /s from 0.1 % (still below MODULATED): "
           "quasi, growing", r["kind"] == "quasi" and r["growing"] and r["trend"] == "growing", r)
     check_close("synthetic growing modulation: fitted rate 0.02 /s", r["spread_rate"], 0.02,
                 rel=0.05)
 
     decaying = carrier(2e-2 * np.exp(-0.016 * T40) * np.sin(2 * np.pi * 0.8 * T40))
-    r = attractor.classify(T40, decaying, W)
+    r = attractor.classify(T40, decaying, W, PSI_FP)
     check("synthetic 1 % modulation decaying at 0.016 /s (the axial mode): high, decaying",
           r["kind"] == "high" and r["trend"] == "decaying", r)
     check_close("synthetic decaying modulation: fitted rate -0.016 /s", r["spread_rate"],
                 -0.016, rel=0.05)
 
     slow = carrier(1e-3 * np.exp(2e-4 * T40) * np.sin(2 * np.pi * 1.4 * T40))
-    r = attractor.classify(T40, slow, W)
+    r = attractor.classify(T40, slow, W, PSI_FP)
     check("synthetic 0.2 % modulation growing at 2e-4 /s (< RATE_MIN): steady, so unsettled",
           r["kind"] == "unsettled" and r["trend"] == "steady", r)
 
@@ -83,23 +95,23 @@ def synthetic():
     check_close("mode_shape: phase -60 deg", np.degrees(np.angle(ratio)), -60.0, abs=0.1)
 
     decaying = 1e-4 * np.exp(-0.3 * T) * np.sin(2 * np.pi * 38.0 * T)
-    r = attractor.classify(T, decaying, W)
+    r = attractor.classify(T, decaying, W, PSI_FP)
     check("synthetic decay at 0.3 /s: unsettled, not straight", r["kind"] == "unsettled", r)
 
-    r = attractor.classify(T, np.zeros_like(T), W)
+    r = attractor.classify(T, np.zeros_like(T), W, PSI_FP)
     check("synthetic rest at psi = 0: straight", r["kind"] == "straight", r)
-    r = attractor.classify(T, np.full_like(T, 1.7e-3), W)
+    r = attractor.classify(T, np.full_like(T, 1.7e-3), W, PSI_FP)
     check("synthetic rest at psi = 1.7e-3: yaw", r["kind"] == "yaw", r)
     check_close("synthetic yaw: mean", r["mean_rad"], 1.7e-3, rel=1e-9)
 
     two = 0.1 * np.sin(2 * np.pi * 40.0 * T40) * (1 + 0.05 * np.sign(np.sin(2 * np.pi * 20.0
                                                                               * T40 + 0.1)))
-    r = attractor.classify(T40, two, W)
+    r = attractor.classify(T40, two, W, PSI_FP)
     check("synthetic period-2 (two peak levels): high with levels 2",
           r["kind"] == "high" and r["levels"] == 2, r)
 
     try:
-        attractor.classify(T[:3000], T[:3000], W)
+        attractor.classify(T[:3000], T[:3000], W, PSI_FP)
         check("3 s of samples for two 5 s windows: refused", False, "no error")
     except ValueError as exc:
         check("3 s of samples for two 5 s windows: refused", "window" in str(exc), exc)
@@ -194,15 +206,6 @@ def comparison():
           atlas_compare.cell_code(cell(1, 1, "quasi", "domain")) == 16)
     check("cell code: every start leaving the domain = 32 (lift-off)",
           atlas_compare.cell_code(cell(1, 1, "domain", "domain")) == 32)
-    def orbit(kind, f):
-        return {"kind": kind, "frequency_hz": f, "amplitude_rad": 3e-3}
-    two = {"V": 20, "Fstar": 2.2, "starts": {"a": orbit("high", 11.2), "b": orbit("high", 18.1),
-                                             "c": orbit("high", 18.1)}}
-    check("cell code: two coexisting orbits above 8 Hz (11.2, 18.1 Hz) = low + high = 6",
-          atlas_compare.cell_code(two) == 6, atlas_compare.cell_code(two))
-    one = {"V": 20, "Fstar": 1.8, "starts": {"a": orbit("high", 9.7), "b": orbit("high", 9.7)}}
-    check("cell code: a lone orbit at 9.7 Hz keeps the 8 Hz split: high = 4",
-          atlas_compare.cell_code(one) == 4, atlas_compare.cell_code(one))
     check("cell code: an unsettled start gives no code",
           atlas_compare.cell_code(cell(1, 1, "straight", "unsettled")) is None)
     # the vertical line V = 300 m/s: distance (V - 300) / 600 at any F*
