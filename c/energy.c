@@ -40,7 +40,8 @@ int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
     double psi_s = psi + beta * sin_p, theta_a = psi_s + g.m.v;       /* after eq. (6) */
     strut_lengths l = strut_lengths_at(mp.c, d_const(eta));
     structure s = structure_at(mp.c, &g, &l, d_const(eta), d_const(theta_a));
-    pose q = pose_at(&mp, &g, &l, d_const(psi), d_const(delta), d_const(beta));
+    pose q;
+    pose_at(&q, &mp, &g, &l, d_const(psi), d_const(delta), d_const(beta));
     double I_a = s.I_a.v, L_beta = l.L_beta.v;
 
     /* kinetic: torsion, strut bending about u_delta and about u_beta, the axle's

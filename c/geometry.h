@@ -31,7 +31,8 @@ static inline sidestay sidestay_geometry(const model_parameters *mp)
     g.H1 = d_add(d_mulc(d_sq(cr), c0), d_mulc(d_mul(d_mul(sr, cr), sm), s0));
     g.H2 = d_mulc(d_mul(cr, cm), -s0);
     g.H3 = d_sub(d_mulc(d_sq(sr), c0), d_mulc(d_mul(d_mul(sr, cr), sm), s0));
-    g.R0 = m_rotation(v_const(0.0, -1.0, 0.0), d_const(phi0));
+    dvec minus_e_Y = v_const(0.0, -1.0, 0.0);
+    m_rotation(&g.R0, &minus_e_Y, d_const(phi0));
     return g;
 }
 
@@ -64,36 +65,47 @@ static inline dvec unit_horizontal(dual x, dual y)
     return v_make(d_div(x, n), d_div(y, n), d_const(0.0));
 }
 
-static inline pose pose_at(const model_parameters *mp, const sidestay *g,
+/* r = R R0 x: the point at offset x in the unraked, unturned gear */
+static inline void placed_point(dvec *r, const dmat *R, const dmat *R0, dvec x)
+{
+    dvec raked;
+    m_apply(&raked, R0, &x);
+    m_apply(r, R, &raked);
+}
+
+/* fills *q (a pose returned by value is copied: 4 kB at ten directions) */
+static inline void pose_at(pose *q, const model_parameters *mp, const sidestay *g,
                            const strut_lengths *s, dual psi, dual delta, dual beta)
 {
     const mlg_constants *c = mp->c;
-    pose q;
     dual psi_s = d_add(psi, d_mul(beta, g->sin_p));               /* psi_s = psi + beta sin p */
-    dmat R_b = m_rotation(g->u_beta, beta);
-    dmat R_bd = m_mul(R_b, m_rotation(g->u_delta0, delta));
-    dmat R_bdp = m_mul(R_bd, m_rotation(g->u_psi0, psi_s));
-    q.u_delta = m_apply(R_b, g->u_delta0);
-    q.u_psi = m_apply(R_bd, g->u_psi0);
-    q.u_eta = m_apply(R_b, g->u_psi0);
-    q.u_a = m_apply(R_bdp, v_const(0.0, 1.0, 0.0));
-    q.u_lambda = unit_horizontal(q.u_a.c[0], q.u_a.c[1]);
-    q.u_f = unit_horizontal(q.u_a.c[1], d_neg(q.u_a.c[0]));
+    dmat R_b, R_d, R_bd, R_p, R_bdp;
+    m_rotation(&R_b, &g->u_beta, beta);
+    m_rotation(&R_d, &g->u_delta0, delta);
+    m_mul(&R_bd, &R_b, &R_d);
+    m_rotation(&R_p, &g->u_psi0, psi_s);
+    m_mul(&R_bdp, &R_bd, &R_p);
+    const dvec e_Y = v_const(0.0, 1.0, 0.0);
+    m_apply(&q->u_delta, &R_b, &g->u_delta0);
+    m_apply(&q->u_psi, &R_bd, &g->u_psi0);
+    m_apply(&q->u_eta, &R_b, &g->u_psi0);
+    m_apply(&q->u_a, &R_bdp, &e_Y);
+    q->u_lambda = unit_horizontal(q->u_a.c[0], q->u_a.c[1]);
+    q->u_f = unit_horizontal(q->u_a.c[1], d_neg(q->u_a.c[0]));
     /* u_r = R(u_f, -pi/2) u_a = u_a x u_f, exactly, since u_f is normal to u_a */
-    q.u_r = v_cross(q.u_a, q.u_f);
-    q.P_0 = m_apply(R_bd, m_apply(g->R0, v_make(d_const(0), d_const(0), d_neg(s->L_delta))));
-    q.P_beta = m_apply(R_b, m_apply(g->R0, v_make(d_const(0), d_const(0),
-                                                   d_sub(s->L_beta, s->L_delta))));
+    q->u_r = v_cross(q->u_a, q->u_f);
+    placed_point(&q->P_0, &R_bd, &g->R0, v_make(d_const(0), d_const(0), d_neg(s->L_delta)));
+    placed_point(&q->P_beta, &R_b, &g->R0,
+                 v_make(d_const(0), d_const(0), d_sub(s->L_beta, s->L_delta)));
     for (int i = 0; i < 2; i++) {
         double side = i == 0 ? c->a : -c->a;
-        q.P_wheel[i] = m_apply(R_bdp, m_apply(g->R0, v_make(d_const(-c->e), d_const(side),
-                                                            d_neg(s->L_delta))));
+        placed_point(&q->P_wheel[i], &R_bdp, &g->R0,
+                     v_make(d_const(-c->e), d_const(side), d_neg(s->L_delta)));
     }
     dual cb = d_cos(beta), sb = d_sin(beta);
-    q.cos_phi = d_add(d_add(d_mul(g->H1, cb), d_mul(g->H2, sb)), g->H3);
-    q.dcos_phi = d_add(d_neg(d_mul(g->H1, sb)), d_mul(g->H2, cb));
-    q.d2cos_phi = d_neg(d_add(d_mul(g->H1, cb), d_mul(g->H2, sb)));
-    return q;
+    q->cos_phi = d_add(d_add(d_mul(g->H1, cb), d_mul(g->H2, sb)), g->H3);
+    q->dcos_phi = d_add(d_neg(d_mul(g->H1, sb)), d_mul(g->H2, cb));
+    q->d2cos_phi = d_neg(d_add(d_mul(g->H1, cb), d_mul(g->H2, sb)));
 }
 
 #endif

@@ -65,44 +65,43 @@ VEC3_INLINE dvec v_cross(dvec a, dvec b)
                   d_sub(d_mul(a.c[0], b.c[1]), d_mul(a.c[1], b.c[0])));
 }
 
-VEC3_INLINE dvec m_apply(dmat m, dvec x)
+/* The matrix operations write through r, which must not be an operand:
+ * a dmat returned by value is copied (1152 bytes at ten directions). */
+
+/* r = m x */
+VEC3_INLINE void m_apply(dvec *r, const dmat *m, const dvec *x)
 {
-    dvec r;
     for (int i = 0; i < 3; i++)
-        r.c[i] = d_add(d_add(d_mul(m.a[i][0], x.c[0]), d_mul(m.a[i][1], x.c[1])),
-                       d_mul(m.a[i][2], x.c[2]));
-    return r;
+        r->c[i] = d_add(d_add(d_mul(m->a[i][0], x->c[0]), d_mul(m->a[i][1], x->c[1])),
+                        d_mul(m->a[i][2], x->c[2]));
 }
 
-VEC3_INLINE dmat m_mul(dmat p, dmat q)
+/* r = p q */
+VEC3_INLINE void m_mul(dmat *r, const dmat *p, const dmat *q)
 {
-    dmat r;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            r.a[i][j] = d_add(d_add(d_mul(p.a[i][0], q.a[0][j]), d_mul(p.a[i][1], q.a[1][j])),
-                              d_mul(p.a[i][2], q.a[2][j]));
-    return r;
+            r->a[i][j] = d_add(d_add(d_mul(p->a[i][0], q->a[0][j]), d_mul(p->a[i][1], q->a[1][j])),
+                               d_mul(p->a[i][2], q->a[2][j]));
 }
 
-/* R(v, theta): right-hand rotation by theta about the unit vector v
+/* r = R(v, theta): right-hand rotation by theta about the unit vector v
  * (Rodrigues: R = cos t I + sin t [v]x + (1 - cos t) v v^T). */
-VEC3_INLINE dmat m_rotation(dvec v, dual theta)
+VEC3_INLINE void m_rotation(dmat *r, const dvec *v, dual theta)
 {
     dual c = d_cos(theta), s = d_sin(theta);
     dual one_c = d_sub(d_const(1.0), c);
-    dmat r;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            r.a[i][j] = d_mul(one_c, d_mul(v.c[i], v.c[j]));
+            r->a[i][j] = d_mul(one_c, d_mul(v->c[i], v->c[j]));
     for (int i = 0; i < 3; i++)
-        r.a[i][i] = d_add(r.a[i][i], c);
-    r.a[0][1] = d_sub(r.a[0][1], d_mul(s, v.c[2]));
-    r.a[1][0] = d_add(r.a[1][0], d_mul(s, v.c[2]));
-    r.a[0][2] = d_add(r.a[0][2], d_mul(s, v.c[1]));
-    r.a[2][0] = d_sub(r.a[2][0], d_mul(s, v.c[1]));
-    r.a[1][2] = d_sub(r.a[1][2], d_mul(s, v.c[0]));
-    r.a[2][1] = d_add(r.a[2][1], d_mul(s, v.c[0]));
-    return r;
+        r->a[i][i] = d_add(r->a[i][i], c);
+    r->a[0][1] = d_sub(r->a[0][1], d_mul(s, v->c[2]));
+    r->a[1][0] = d_add(r->a[1][0], d_mul(s, v->c[2]));
+    r->a[0][2] = d_add(r->a[0][2], d_mul(s, v->c[1]));
+    r->a[2][0] = d_sub(r->a[2][0], d_mul(s, v->c[1]));
+    r->a[1][2] = d_sub(r->a[1][2], d_mul(s, v->c[0]));
+    r->a[2][1] = d_add(r->a[2][1], d_mul(s, v->c[0]));
 }
 
 #endif

@@ -45,7 +45,8 @@ static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], int di
     w.beta_twist = x.eom >= MLG_EOM_SIDESTAY ? d_mul(w.beta_dot, g.sin_p) : d_const(0.0);
     strut_lengths l = strut_lengths_at(mp.c, eta);
     structure s = structure_at(mp.c, &g, &l, eta, x.theta_a);
-    pose q = pose_at(&mp, &g, &l, psi, delta, beta);
+    pose q;
+    pose_at(&q, &mp, &g, &l, psi, delta, beta);
     dual twist_rate = d_add(w.psi_dot, w.beta_twist);
     w.Omega = axle_angular_velocity(twist_rate, q.u_psi, w.delta_dot, q.u_delta, w.beta_dot,
                                     g.u_beta);
