@@ -14,7 +14,7 @@ $(MLG_OBJECTS): build/obj/%.o: c/%.c $(MLG_HEADERS)
 	$(CC) $(MLG_CFLAGS) -fPIC -c $< -o $@
 
 # On x86-64 the Jacobian is built a second time for AVX2 (4-wide blocks, about
-# 1.5 times faster), chosen at run time on CPUs that have it (jacobian_dispatch.c);
+# 1.7 times faster), chosen at run time on CPUs that have it (jacobian_dispatch.c);
 # -ffp-contract=off (as -std=c11 implies): no fused multiply-add, so that both
 # builds round alike.  MLG_AVX2=no builds the generic one only.
 MLG_AVX2 ?= $(if $(filter x86_64-%,$(shell $(CC) -dumpmachine)),yes,no)

@@ -1,5 +1,5 @@
 /* mlg_rhs_jacobian: the AVX2 build of the Jacobian where the CPU has AVX2
- * (about 1.5 times faster), else the generic one; same results to the bit. */
+ * (about 1.7 times faster), else the generic one; same results to the bit. */
 #include "jacobian_variants.h"
 
 int mlg_rhs_jacobian(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX],
