@@ -188,6 +188,14 @@ def upper_folds(rundir, first, folds):
                                          time_limit=FOLD_TIME_LIMIT))
             except autoglue.RunError as exc:
                 print(f"REPORTED: {name} left out: {exc.brief}")
+    # every fold of the slices above must lie on a curve (a curve started
+    # from a spurious point, or stopped short, shows here)
+    missed = [p for p in points if not on_curves(p, out)]
+    for p in missed:
+        print(f"REPORTED: fig11 slice fold at V = {p['V']:.4g}, F* = {p['Fstar']:.4g} "
+              "lies on no upper fold curve")
+    print(f"fig11: {len(points) - len(missed)} of {len(points)} slice folds above "
+          f"F* = {top:.4g} lie on the upper fold curves")
     return out
 
 
