@@ -9,17 +9,22 @@ the diagrams in V joined from load to load, and by the edges of the
 straight-rolling stability grid (exact Jacobian eigenvalues); they are
 labelled, not bounded, by the stable low- (< 8 Hz) and high-frequency orbits
 of one-parameter diagrams in V (continuation.speed_diagram and the
-large-amplitude family) on a set of loads (regionmap).  result.json holds
-the map ("region_map": V, Fstar, code per F* row, names) and the curves
-bounding it ("edge_curves") for the attractor atlas."""
+large-amplitude family) on a set of loads (regionmap).  The wheel lift-off
+region is bounded by its edge located by simulation (liftoff).  result.json
+holds the map ("region_map": V, Fstar, code per F* row, names) and the
+curves bounding it ("edge_curves") for the attractor atlas."""
+import os
+
 import matplotlib.pyplot as plt
 from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch
 import numpy
+from scipy.interpolate import PchipInterpolator
 
 import autoglue
 import branches
 import continuation as ct
+import liftoff
 import paths
 import plotting
 import regionmap
@@ -42,6 +47,10 @@ FAMILY_SPLIT_HZ = 9.3
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
 STOP = {"Fstar": [F_MIN, F_MAX], "V": [V_MIN, V_MAX]}
 V_SCAN = numpy.linspace(V_MIN, V_MAX, 3000)
+# The lift-off edge: bisected in V on these loads (from a speed without
+# lift-off within liftoff.T_END up to V_MAX), its ends in F* on V = V_MAX.
+LIFTOFF_LOADS = numpy.round(numpy.arange(0.1, 0.71, 0.1), 2)
+LIFTOFF_FROM = 500.0   # m/s: the bisection's lower end (checked: no lift-off there)
 
 
 def curves(rundir, parameter_set="figures"):
@@ -199,9 +208,11 @@ def upper_folds(rundir, first, folds):
     return out
 
 
-ATTRACTORS = {"straight": 1, "low": 2, "high": 4, "yaw": 8, "quasi": 16}  # bits of a code
+# bits of a code; "liftoff" is the atlas's "domain" (atlas_compare.CODES)
+ATTRACTORS = {"straight": 1, "low": 2, "high": 4, "yaw": 8, "quasi": 16, "liftoff": 32}
 NAMES = {1: "straight rolling", 2: "low-frequency shimmy", 4: "high-frequency shimmy",
-         8: "off-centre yaw equilibria", 16: "quasi-periodic shimmy"}
+         8: "off-centre yaw equilibria", 16: "quasi-periodic shimmy",
+         32: "wheel lift-off (the model's domain ends)"}
 BAND = "; between the pitchforks: off-centre yaw equilibria (their stability not computed)"
 PIECE_DISAGREEMENT = 0.05   # a piece whose samples disagree more than this is reported
 
@@ -245,9 +256,52 @@ def torus_locus(orbit_rows):
     return [(out[0][0], F_MIN)] + out + [(out[-1][0], F_MAX)]
 
 
-def curve_list(drawn, pitchforks, torus):
+def liftoff_rundir():
+    return paths.rundir("fig11/liftoff")
+
+
+def liftoff_speed(Fstar):
+    """A part: the lowest speed (to liftoff.TOL_V) at which a wheel lifts
+    off at load F*, bisected from LIFTOFF_FROM up to V_MAX; None if none
+    does at V_MAX."""
+    csv = os.path.join(liftoff_rundir(), f"F{Fstar:.2f}.csv")
+    V = liftoff.edge_speed(csv, Fstar, LIFTOFF_FROM, V_MAX, **FREEPLAY)
+    print(f"fig11: lift-off at F* = {Fstar:.2f}: "
+          + (f"from V = {V:.1f} m/s" if V else f"none up to V = {V_MAX:g} m/s"), flush=True)
+    return {"Fstar": float(Fstar), "V": V}
+
+
+def liftoff_edge(speeds):
+    """The lift-off edge from the parts' speeds [{"Fstar", "V" or None}]:
+    the points found, with its two ends on V = V_MAX bisected in F* between
+    the outermost loads with lift-off and their neighbours without
+    ({"points": [(V, F*)], "V", "Fstar": a smooth curve through them (PCHIP
+    in F*)}), or None if no load lifts a wheel off."""
+    found = [k for k, s in enumerate(speeds) if s["V"] is not None]
+    if not found:
+        return None
+    if found != list(range(found[0], found[-1] + 1)):
+        raise RuntimeError("fig11: the loads with lift-off are not contiguous: "
+                           f"{[s['Fstar'] for s in speeds if s['V'] is not None]}")
+    csv = os.path.join(liftoff_rundir(), "ends.csv")
+    ends = []
+    for inside, outside in ((found[0], found[0] - 1), (found[-1], found[-1] + 1)):
+        if not 0 <= outside < len(speeds):
+            raise RuntimeError(f"fig11: a wheel lifts off at F* = {speeds[inside]['Fstar']}, "
+                               "the outermost lift-off load: extend LIFTOFF_LOADS")
+        ends.append(liftoff.edge_load(csv, V_MAX, speeds[outside]["Fstar"],
+                                      speeds[inside]["Fstar"], **FREEPLAY))
+    points = [(V_MAX, ends[0])] + [(speeds[k]["V"], speeds[k]["Fstar"]) for k in found] \
+        + [(V_MAX, ends[1])]
+    V, F = numpy.array(points).T
+    Fs = numpy.linspace(F[0], F[-1], 200)
+    return {"points": points, "V": numpy.minimum(PchipInterpolator(F, V)(Fs), V_MAX),
+            "Fstar": Fs}
+
+
+def curve_list(drawn, pitchforks, torus, lift=None):
     """Every curve that bounds a region: [{"name", "kind", "V", "Fstar"}]
-    (the pitchfork lines as two points each)."""
+    (the pitchfork lines as two points each; the lift-off edge if any)."""
     out = []
     for kind in ("hopf", "fold"):
         for n, diagram in enumerate(drawn[kind]):
@@ -258,10 +312,13 @@ def curve_list(drawn, pitchforks, torus):
              "Fstar": [f, f]} for n, f in enumerate(pitchforks)]
     V, F = numpy.array(torus, dtype=float).T
     out.append({"name": "torus_slices", "kind": "torus", "V": V, "Fstar": F})
+    if lift:
+        out.append({"name": "liftoff", "kind": "liftoff", "V": lift["V"],
+                    "Fstar": lift["Fstar"]})
     return out
 
 
-def region_map(sr_stable, orbits, edge_curves, pitchforks):
+def region_map(sr_stable, orbits, edge_curves, pitchforks, lift=None):
     """(code [F*, V] on F_GRID x V_GRID, check): the regions bounded by the
     edge curves (and by the edges of the straight-rolling stability grid,
     which are the Hopf curves and pitchforks again, closing them where AUTO
@@ -270,11 +327,19 @@ def region_map(sr_stable, orbits, edge_curves, pitchforks):
     pitchfork loads); where a slice finds no stable orbit nor straight
     rolling beyond the torus points, the attractor is quasi-periodic shimmy
     (simulations, docs/reproduction.md).  orbits: [(slice load, its orbit
-    bits along V_GRID)]."""
+    bits along V_GRID)].  Right of the lift-off edge (lift, liftoff_edge)
+    the samples of the slices and of the edge's loads say lift-off: the
+    shimmy there grows until a wheel lifts off."""
     samples = numpy.full(sr_stable.shape, -1, dtype=int)
     for (Fstar, row), (V_torus, _) in zip(orbits, torus_locus(orbits)[1:-1]):
         samples[slice_row(Fstar)] = numpy.where((V_GRID >= V_torus) & (row == 0),
                                                 ATTRACTORS["quasi"], row)
+    if lift:
+        F_edge = [f for _, f in lift["points"]]
+        for Fstar in [f for f, _ in orbits] + list(F_edge[1:-1]):
+            if F_edge[0] <= Fstar <= F_edge[-1]:
+                beyond = V_GRID >= numpy.interp(Fstar, lift["Fstar"], lift["V"])
+                samples[slice_row(Fstar), beyond] = ATTRACTORS["liftoff"]
     edges = regionmap.curve_pixels(V_GRID, F_GRID, [(c["V"], c["Fstar"]) for c in edge_curves])
     edges |= regionmap.boundary_pixels(sr_stable.astype(int))
     painted, check = regionmap.paint(edges, samples)
@@ -287,7 +352,7 @@ def region_map(sr_stable, orbits, edge_curves, pitchforks):
 
 COLOURS = {  # by region_key; white: straight rolling only
     1: "white", 5: "tab:orange", 3: "tab:olive", 6: "tab:purple", 7: "tab:brown",
-    2: "tab:cyan", 4: "tab:red", 16: "tab:gray", 8: "0.85", 0: "k"}
+    2: "tab:cyan", 4: "tab:red", 16: "tab:gray", 32: "tab:blue", 8: "0.85", 0: "k"}
 
 
 def region_key(found):
@@ -338,6 +403,8 @@ def parts():
     jobs = {"curves": stored_curves, "large": large_family, "grid": straight_rolling_stable}
     jobs.update({f"slice_{Fstar:.4f}": lambda Fstar=Fstar: slice_diagram(Fstar)
                  for Fstar in SLICES})
+    jobs.update({f"liftoff_{Fstar:.2f}": lambda Fstar=Fstar: liftoff_speed(Fstar)
+                 for Fstar in LIFTOFF_LOADS})
     return jobs
 
 
@@ -378,9 +445,10 @@ def compute(parts):
     drawn = {kind: stored[kind] for kind in ("hopf", "fold", "zero")}
     drawn["fold"] += [results.stored(d, ("V", "Fstar")) for d in upper]
     pitchforks = stored["pitchfork"][1]
-    edges = curve_list(drawn, pitchforks, torus_locus(orbits))
+    lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS])
+    edges = curve_list(drawn, pitchforks, torus_locus(orbits), lift)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
-                              pitchforks)
+                              pitchforks, lift)
     for row, col, n, votes in check["pieces"]:
         if n - max(votes.values()) > PIECE_DISAGREEMENT * n:
             print(f"REPORTED: fig11 region near V = {V_GRID[col]:.1f}, F* = {F_GRID[row]:.2f}: "
@@ -396,6 +464,8 @@ def compute(parts):
              for v in numpy.unique(found).tolist()}
     return {"curves": drawn, "pitchfork": stored["pitchfork"], "mx_joins": joins,
             "mx_stops": stops, "edge_curves": edges, "region_check": check,
+            "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
+                                 "psi0": liftoff.PSI0},
             "region_map": {"V": V_GRID, "Fstar": F_GRID, "code": found, "names": names}}
 
 
@@ -420,6 +490,14 @@ def plot(result):
     ax.plot(torus["V"], torus["Fstar"], color="m", lw=1.4, marker=".", ms=4)
     handles.append(plt.Line2D([], [], color="m", marker=".", label="torus points on the "
                               "slices (stable orbit lost), joined"))
+    lift = [c for c in result["edge_curves"] if c["kind"] == "liftoff"]
+    if lift:
+        V, F = numpy.array(result["liftoff"]["points"]).T
+        ax.plot(lift[0]["V"], lift[0]["Fstar"], color="navy", lw=1.4)
+        ax.plot(V, F, "o", color="navy", ms=3)
+        handles.append(plt.Line2D([], [], color="navy", marker="o", ms=3, label=(
+            f"wheel lift-off within {result['liftoff']['t_end']:g} s from straight\n"
+            "rolling (bisection in V and on V = 600 in F*)")))
     for join in result["mx_joins"]:
         ax.plot(join["V"], join["Fstar"], "ko", ms=4)
     if result["mx_joins"]:

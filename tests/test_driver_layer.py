@@ -49,7 +49,8 @@ def auto_free(module):
 
 def layer_without_auto():
     for module in ("paths", "branches", "spectrum", "plotting", "results", "simulator",
-                   "surfaces", "paper_table", "freeplay_profile", "fig06", "fig15", "fig19"):
+                   "surfaces", "paper_table", "freeplay_profile", "fig06", "fig15", "fig19",
+                   "liftoff"):
         ok, detail = auto_free(module)
         check(f"{module} imports no AUTO", ok, detail)
 

@@ -10,6 +10,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check, check_close  # noqa: E402
+import atlas_compare  # noqa: E402
 import fig11  # noqa: E402
 
 V = fig11.V_GRID
@@ -68,6 +69,29 @@ def main():
     check("the pitchfork band carries the yaw bit", np.all(found[band] & fig11.ATTRACTORS["yaw"]))
     check("the synthetic samples agree with their pieces", report["disagree"] == 0, report)
     check("no quasi-periodic code without a torus point", not np.any(found & QUASI))
+
+    # a lift-off edge from V = 600 at F* = 1.2 to V = 550 at 1.5 and back to
+    # 600 at 1.8, right of the same curve: its pocket is lift-off, not high
+    Fs = np.linspace(1.2, 1.8, 61)
+    lift = {"points": [(600.0, 1.2), (550.0, 1.5), (600.0, 1.8)],
+            "V": 600.0 - 50.0 * (1.0 - np.abs(Fs - 1.5) / 0.3), "Fstar": Fs}
+    edges.append({"V": lift["V"], "Fstar": lift["Fstar"]})
+    rows = [(F, np.where(V > 300, HIGH, 0)) for F in (1.0, 1.5, 2.0)]
+    found, report = fig11.region_map(sr, rows, edges, [0.037, 0.408], lift)
+    at = fig11.slice_row(1.5)
+    check("right of the lift-off edge at F* = 1.5: lift-off alone",
+          np.all(found[at, V > 552] == fig11.ATTRACTORS["liftoff"]), found[at, V > 540])
+    check("left of it at F* = 1.5, and beside its ends: high-frequency shimmy",
+          np.all(found[at, (V > 301) & (V < 548)] == HIGH)
+          and np.all(found[fig11.slice_row(1.1)][V > 301] == HIGH)
+          and np.all(found[fig11.slice_row(1.9)][V > 301] == HIGH))
+    check("the lift-off samples agree with their piece", report["disagree"] == 0, report)
+    check("every code is the atlas's, lift-off its 'left the domain'",
+          all(atlas_compare.CODES[kind] == fig11.ATTRACTORS[kind]
+              for kind in ("straight", "low", "high", "yaw", "quasi"))
+          and fig11.ATTRACTORS["liftoff"] == atlas_compare.CODES["domain"]
+          and "lift-off" in fig11.NAMES[fig11.ATTRACTORS["liftoff"]],
+          (fig11.ATTRACTORS, atlas_compare.CODES))
 
 
 main()
