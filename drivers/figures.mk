@@ -79,9 +79,10 @@ fig06 fig06-plot: $(MLG_SHARED) | packages
 	$(PYTHON) drivers/fig06.py
 
 $(eval $(call cached_figure,fig10))
-# fig11's lift-off edge simulates (drivers/liftoff.py; the atlas's start).
+# fig11's lift-off edge simulates (drivers/liftoff.py; the atlas's start); its
+# torus curve is continued by drivers/torus.py (Floquet crossings: floquet.py).
 $(eval $(call cached_figure,fig11,drivers/regionmap.py drivers/liftoff.py drivers/simulator.py \
-    drivers/atlas_cell.py $(MLG_SIMULATE)))
+    drivers/atlas_cell.py drivers/torus.py drivers/floquet.py $(MLG_SIMULATE)))
 $(eval $(call cached_figure,fig12))
 # Fig. 12 with the printed strut spring (strut variant 1).
 $(eval $(call cached_figure,fig12_v1,,fig12,--strut-variant 1))
@@ -89,7 +90,7 @@ $(eval $(call cached_figure,fig12_v1,,fig12,--strut-variant 1))
 FIGURES += fig06 fig10 fig11 fig12 fig12_v1
 REGRESS_FIGURES += fig10 fig11 fig12
 TEST_PROGRAMS += tests/test_freeplay_diagrams.py tests/test_regionmap.py tests/test_fig11_regions.py \
-                 tests/test_liftoff.py
+                 tests/test_liftoff.py tests/test_torus_seed.py
 
 # Sweep over side-stay angles (drivers/sweep.py; degrees, comma-separated),
 # one job per grid point (drivers/jobs.mk):

@@ -11,11 +11,18 @@ For each case:
      the last TR speed: after the other modes have died out, the psi
      peaks' spread grows or decays at the critical pair's rate ln|mu| / T,
      which AUTO predicts;
-  3. the torus curve in (V, F*), AUTO ISW = 2 from each TR point, labelled
-     by steps that cross the unit circle in one go (floquet.py says why).
+  3. each window of instability (a crossing out, then back in) at its
+     middle: |mu| - 1 on the base and a fine mesh (FINE_MESH), from AUTO's
+     Floquet multipliers and from the monodromy matrix integrated along the
+     orbit (multiplier_check), and a long simulation at a tight tolerance
+     (WINDOW_SIM_T, WINDOW_RTOL);
+  4. the torus curve in (V, F*), AUTO ISW = 2 from each TR point, labelled
+     by steps that cross the unit circle in one go (floquet.py says why),
+     its start seeded with the critical Floquet eigenfunction (seeded).
+Fig. 11 continues its own torus curve with torus_curve (fig11.torus_curves).
 `torus.py [case ...]` (default: every case) writes each case's result to
 $MLG_RUN_ROOT/torus/<case>/result.json and all cases found there to
-$MLG_RUN_ROOT/torus/result.json (the curves as arrays, for Fig. 11).
+$MLG_RUN_ROOT/torus/result.json (the curves as arrays).
 `make torus`.
 """
 import json
@@ -29,6 +36,7 @@ import numpy
 import autoglue
 import continuation as ct
 import floquet
+import mlgmodel
 import paths
 import spectrum
 
@@ -44,8 +52,14 @@ SIM_T = (20.0, 80.0)   # s: fit the log of the peak spread over this span
 SPAN = 2.0             # s: one peak-spread sample per SPAN
 PSI0_MAX = 0.1         # rad: a larger displacement at rest lifts a wheel off at
                        # F* = 1, V = 560 (the orbit's own amplitude is 0.265)
+FINE_MESH = (320, 7)   # the window check's mesh
+WINDOW_SIM_T = (150.0, 300.0)  # s: a window's pair grows by ~0.01 /s, seen only after
+                               # the other modes (~ -0.04 /s) have died out
+WINDOW_RTOL = 1e-10    # CVODE rtol of the window simulations (atol 1e-2 of it):
+                       # at the default 1e-8 the BDF damping is of the growth's size
 CURVE_FSTAR = (0.02, 3.5)
 CURVE_STEPS = 150      # AUTO steps of a torus curve each way
+CURVE_TIME_LIMIT = 120  # s of CPU per direction (the main curve of Fig. 11: ~25 s each)
 
 
 def orbit_branch(rundir, name, values, mesh, dsmax):
@@ -82,19 +96,21 @@ def predicted_rate(steps, bd, v):
     return math.log1p(g) * on_branch(bd, v, "freq")
 
 
-def simulated_rate(values, v, psi0):
+def simulated_rate(values, v, psi0, span=SIM_T, rtol=None):
     """Growth rate [1/s] of the psi peaks' relative spread in a simulation
-    from psi0 (log-linear fit over SIM_T, one sample per SPAN seconds)."""
+    from psi0 (log-linear fit over span, one sample per SPAN seconds; rtol:
+    the simulator's tolerance, atol 1e-2 of it, default its own)."""
     import attractor
     import simulator
     eps = 0.1 * values["yfp"]
+    tolerance = ("--rtol", rtol, "--atol", 1e-2 * rtol) if rtol else ()
     with tempfile.TemporaryDirectory() as tmp:
         csv = os.path.join(tmp, "run.csv")
         simulator.simulate(csv, "--set", "figures", "--V", v, "--Fstar", values["Fstar"],
                            "--yfp", values["yfp"], "--eps-abs", eps, "--eps-rel", 0,
-                           "--t-end", SIM_T[1], "--psi0", psi0)
+                           "--t-end", span[1], "--psi0", psi0, *tolerance)
         data = numpy.loadtxt(csv, delimiter=",", skiprows=1, usecols=(0, 1))
-    fit = attractor.spread_trend(data[:, 0], data[:, 1], SIM_T[0], SIM_T[1], SPAN)
+    fit = attractor.spread_trend(data[:, 0], data[:, 1], span[0], span[1], SPAN)
     return fit["rate"], fit["first"], fit["last"]
 
 
@@ -124,26 +140,116 @@ def tr_point(rundir, name, bd, v, slope):
                             f"(steps up to {4 * h:.3g} m/s across it)")
 
 
+def windows(found):
+    """The windows of instability among the crossings found (in branch
+    order): [(loses, regains)], consecutive."""
+    return [(a, b) for a, b in zip(found, found[1:]) if a["direction"] > 0 > b["direction"]]
+
+
+def multiplier_check(rundir, name, tr, v, mesh):
+    """|mu| - 1 of the critical pair at speed v on the orbit continued from
+    the TR label tr on mesh (NTST, NCOL), two ways: AUTO's Floquet
+    multipliers and the eigenvalues of the monodromy matrix integrated along
+    the orbit (monodromy_path); each with its error on the trivial
+    multiplier 1, a measure of its accuracy."""
+    sign = 1.0 if v > tr["V"] else -1.0
+    bd = ct.run(rundir, name, "periodic", data=tr, ICP=["V", 11] + ct.MEASURES, NTST=mesh[0],
+                NCOL=mesh[1], DS=0.05 * sign, DSMAX=0.2, NMX=1000, UZR={"V": [v]},
+                UZSTOP={"V": [v + 0.05 * sign]}, expect=["UZ"])
+    steps = floquet.read(os.path.join(rundir, f"d.{name}"))
+    mults = min((s for s in steps if s[0] is not None), key=lambda s: abs(s[0] - v))[1]
+    _, phi = monodromy_path(bd("UZ")[0])
+    mu = numpy.linalg.eigvals(phi[-1])
+    return {"NTST": mesh[0], "NCOL": mesh[1], "auto": floquet.critical(mults)[0],
+            "auto_trivial_error": float(numpy.min(numpy.abs(mults - 1))),
+            "monodromy": floquet.critical(mu)[0],
+            "monodromy_trivial_error": float(numpy.min(numpy.abs(mu - 1)))}
+
+
 TORUS_ICP = ["V", "Fstar", 11, 12] + ct.MEASURES
+SUBSTEPS = 8           # RK4 steps per stored mesh interval of the orbit (monodromy)
 
 
-def torus_curve(rundir, name, tr):
+def monodromy_path(sol, parameter_set="figures"):
+    """The fundamental matrix Phi(t) of the orbit `sol` (an AUTO solution,
+    time scaled to [0, 1]) at its stored points: dPhi/dt = T J(u(t)) Phi,
+    Phi(0) = I, by RK4 on u interpolated linearly between the points (the
+    mesh is adapted, so the freeplay's sharp corners are resolved)."""
+    names = [n for n in mlgmodel.PARNAMES if n and n != mlgmodel.CONSTANTS_FILE]
+    if sol.PAR[mlgmodel.CONSTANTS_FILE]:
+        raise ValueError("torus: an orbit run with changed constants (PAR(15) != 0) is not "
+                         "supported by monodromy_path")
+    model = mlgmodel.Model(parameter_set, **{n: sol.PAR[n] for n in names})
+    t = numpy.asarray(sol["t"])
+    U = numpy.array([sol[n] for n in mlgmodel.UNAMES]).T
+    period = sol.PAR["T"]
+
+    def rate(u):
+        return period * numpy.array(model.jacobian(list(u)))
+    phi = numpy.eye(len(mlgmodel.UNAMES))
+    out = [phi]
+    for k in range(len(t) - 1):
+        h = (t[k + 1] - t[k]) / SUBSTEPS
+        du = (U[k + 1] - U[k]) / SUBSTEPS
+        for j in range(SUBSTEPS):
+            a, b, c = rate(U[k] + j * du), rate(U[k] + (j + 0.5) * du), rate(U[k] + (j + 1) * du)
+            k1 = a @ phi
+            k2 = b @ (phi + 0.5 * h * k1)
+            k3 = b @ (phi + 0.5 * h * k2)
+            k4 = c @ (phi + h * k3)
+            phi = phi + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        out.append(phi)
+    return t, out
+
+
+def seeded(start, parameter_set="figures"):
+    """The first point of a torus curve with the critical Floquet
+    eigenfunction filled in.  AUTO's start from a TR label (periodic.f90,
+    STPNTR) guesses the eigenfunction as 1e-4 (cos, sin)(theta t) in every
+    component; on the freeplay orbits its Newton solve then converges to
+    the trivial v = 0 (norm PAR(NPAR) ~ 1e-20) and the continuation after it
+    is singular (MX at the first step, any DS).  Here v1 + i v2 = Phi(t) w0,
+    w0 the eigenvector of the monodromy matrix whose multiplier is nearest
+    exp(i theta) (BCTR: v(1) = exp(i theta) v(0)), scaled to norm 1
+    (ICTR: the integral of |v|^2 equals PAR(NPAR))."""
+    t, phi = monodromy_path(start, parameter_set)
+    mu, vectors = numpy.linalg.eig(phi[-1])
+    k = int(numpy.argmin(numpy.abs(mu - numpy.exp(1j * start.PAR["PAR(12)"]))))
+    w = numpy.array([p @ vectors[:, k] for p in phi])
+    w /= math.sqrt(numpy.trapz(numpy.sum(numpy.abs(w) ** 2, axis=1), t))
+    n = len(mlgmodel.UNAMES)
+    for i in range(n):
+        start[f"U({n + i + 1})"] = w[:, i].real
+        start[f"U({2 * n + i + 1})"] = w[:, i].imag
+    start.PAR["PAR(12)"] = float(abs(numpy.angle(mu[k])))
+    start.PAR[start.PAR.coordnames[-1]] = 1.0          # PAR(NPAR): the norm
+    return start
+
+
+def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS):
     """The TR point continued in (V, F*) both ways, within CURVE_FSTAR and
-    V <= V_MAX.  AUTO's first ISW = 2 run from a TR label only builds the
-    extended system's data (then EP); the curve is continued from there."""
+    V <= V_MAX: the runs (<name>_up, <name>_down).  AUTO's first ISW = 2
+    run from a TR label only builds the extended system's data (its last
+    point, EP, or MX where its degenerate Newton solve fails: the orbit is
+    kept, the eigenfunction is replaced); the curve is continued from there
+    with the eigenfunction filled in (seeded)."""
     first = ct.run(rundir, f"{name}_start", "periodic", data=tr, ISW=2, ICP=TORUS_ICP,
-                   DS=0.01, DSMAX=0.05, NMX=5)
+                   DS=0.001, DSMAX=0.01, NMX=2, allow_mx=True)
+    seed = seeded(first()[-1], parameter_set)
     stop = {"Fstar": list(CURVE_FSTAR), "V": [0.5, V_MAX]}
-    parts = []
-    for sign, part in ((1, "up"), (-1, "down")):
-        bd = ct.run(rundir, f"{name}_{part}", "periodic", data=first("EP")[-1], ISW=2,
-                    ICP=TORUS_ICP, DS=sign * 0.05, DSMAX=2.0, NMX=CURVE_STEPS, UZSTOP=stop,
-                    allow_mx=True, time_limit=900)
-        parts.append({"V": list(map(float, bd[0]["V"])),
-                      "Fstar": list(map(float, bd[0]["Fstar"])),
-                      "freq": list(map(float, bd[0]["freq"])),
-                      "ends": [p["TY name"] for p in bd() if p["TY name"] in ("EP", "MX", "UZ")]})
-    return parts
+    return tuple(ct.run(rundir, f"{name}_{part}", "periodic", data=seed, ISW=2, ICP=TORUS_ICP,
+                        DS=sign * 0.05, DSMAX=5.0, NMX=steps, UZSTOP=stop, allow_mx=True,
+                        time_limit=CURVE_TIME_LIMIT)
+                 for sign, part in ((1, "up"), (-1, "down")))
+
+
+def curve_arrays(runs):
+    """A torus curve's runs as arrays for result.json: [{"V", "Fstar",
+    "freq", "angle", "ends"}] per run."""
+    return [{"V": list(map(float, bd[0]["V"])), "Fstar": list(map(float, bd[0]["Fstar"])),
+             "freq": list(map(float, bd[0]["freq"])), "angle": list(map(float, bd[0]["PAR(12)"])),
+             "ends": [p["TY name"] for p in bd() if p["TY name"] in ("EP", "MX", "UZ")]}
+            for bd in runs]
 
 
 def compute(case):
@@ -189,12 +295,44 @@ def compute(case):
         entry["simulations"].append(sim)
         print(f"torus: {case}: V = {v:.2f}: modulation rate AUTO "
               f"{sim['predicted_rate']:+.4f} /s, simulation {rate:+.4f} /s", flush=True)
+    labels = {}
+
+    def label(k):
+        if k not in labels:
+            labels[k] = tr_point(rundir, f"tr{k + 1}", bd, found[k]["value"],
+                                 found[k]["slope_per_unit"])
+        return labels[k]
+    # each window of instability: its middle on the base and the fine mesh,
+    # and a long simulation there at a tight tolerance
+    entry["windows"] = []
+    for a, b in windows(found):
+        v = 0.5 * (a["value"] + b["value"])
+        window = {"from": a["value"], "to": b["value"], "V": v, "checks": []}
+        try:
+            for mesh in (MESHES[0], FINE_MESH):
+                window["checks"].append(multiplier_check(
+                    rundir, f"window{found.index(a) + 1}_{mesh[0]}_{mesh[1]}",
+                    label(found.index(a)), v, mesh))
+        except autoglue.RunError as exc:
+            window["error"] = exc.brief
+        g = window["checks"][-1]["auto"] if window["checks"] else None
+        rate, first, last = simulated_rate(values, v, min(on_branch(bd, v, "psi_amp"), PSI0_MAX),
+                                           WINDOW_SIM_T, WINDOW_RTOL)
+        window["simulation"] = {"predicted_rate": math.log1p(g) * on_branch(bd, v, "freq")
+                                if g is not None else None, "simulated_rate": rate,
+                                "spread_first": first, "spread_last": last}
+        entry["windows"].append(window)
+        print(f"torus: {case}: window {a['value']:.2f}-{b['value']:.2f}: |mu| - 1 at "
+              f"{v:.2f}: " + ", ".join(f"({c['NTST']}, {c['NCOL']}) AUTO {c['auto']:+.3e}, "
+                                       f"monodromy {c['monodromy']:+.3e}"
+                                       for c in window["checks"])
+              + f"; simulation {rate:+.4f} /s", flush=True)
     entry["curves"] = []
     for k, c in enumerate(found):
         try:
-            tr = tr_point(rundir, f"tr{k + 1}", bd, c["value"], c["slope_per_unit"])
+            tr = label(k)
             entry["curves"].append({"from_V": float(tr["V"]),
-                                    "parts": torus_curve(rundir, f"tr{k + 1}", tr)})
+                                    "parts": curve_arrays(torus_curve(rundir, f"tr{k + 1}", tr))})
         except autoglue.RunError as exc:
             entry["curves"].append({"from_V": c["value"], "error": exc.brief})
             print(f"torus: {case}: torus curve from V = {c['value']:.3f} failed: "
