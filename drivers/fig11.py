@@ -4,10 +4,10 @@ the pitchfork lines, and the zero-freeplay Hopf curve; regions shaded by the
 attractors that coexist there.
 
 The curves are AUTO continuations started from the Fig. 10 special points
-(F* = 1).  The regions are bounded by those curves, by the torus points of
-the diagrams in V joined from load to load, and by the edges of the
-straight-rolling stability grid (exact Jacobian eigenvalues); they are
-labelled, not bounded, by the stable low- (< 8 Hz) and high-frequency orbits
+(F* = 1), and the torus curve of the large-amplitude orbits (AUTO, from a
+torus point at F* = 0.5625).  The regions are bounded by those curves and
+by the edges of the straight-rolling stability grid (exact Jacobian
+eigenvalues); they are labelled, not bounded, by the stable low- (< 8 Hz) and high-frequency orbits
 of one-parameter diagrams in V (continuation.speed_diagram and the
 large-amplitude family) on a set of loads (regionmap).  The wheel lift-off
 region is bounded by its edge located by simulation (liftoff).  result.json
@@ -30,6 +30,7 @@ import plotting
 import regionmap
 import results
 import spectrum
+import torus
 
 F_MIN, F_MAX = 0.02, 3.5
 V_MIN, V_MAX = 0.5, 600.0
@@ -88,15 +89,22 @@ def curves(rundir, parameter_set="figures"):
     return out
 
 
+def large_seed(rundir, parameter_set="figures"):
+    """The large-amplitude shimmy orbit at F* = 1: the orbits born at the
+    last Hopf point of straight rolling there, continued to V = 300 m/s
+    (its UZ1 label), where they are stable."""
+    hopf = spectrum.hopf_scan(parameter_set, "V", V_SCAN, Fstar=1.0, **FREEPLAY)
+    point = ct.hopf_point(rundir, "large_hb", parameter_set, "V", hopf[-1][0], Fstar=1.0,
+                          **FREEPLAY)
+    return ct.periodic_from(rundir, "large_seed", point, stop={"V": [V_MIN, 300.0]})
+
+
 def large_orbits(rundir, parameter_set="figures"):
     """{slice load: orbit diagram in V} of the large-amplitude shimmy family.
     Away from F* = 1 it need not be connected to a Hopf point of straight
     rolling inside V <= 600, so it is followed from the stable orbit at
     F* = 1, V = 300 m/s: continued in F* to every slice load, then in V."""
-    hopf = spectrum.hopf_scan(parameter_set, "V", V_SCAN, Fstar=1.0, **FREEPLAY)
-    point = ct.hopf_point(rundir, "large_hb", parameter_set, "V", hopf[-1][0], Fstar=1.0,
-                          **FREEPLAY)
-    seed = ct.periodic_from(rundir, "large_seed", point, stop={"V": [V_MIN, 300.0]})
+    seed = large_seed(rundir, parameter_set)
     out = {}
     for sign in (1, -1):
         family = ct.periodic_from(rundir, f"large_F{'+-'[sign < 0]}", seed("UZ1"), "Fstar",
@@ -110,6 +118,51 @@ def large_orbits(rundir, parameter_set="figures"):
                                            stop={"V": [V_MIN, V_MAX]}, DS=2.0 * d, DSMAX=5.0,
                                            allow_mx=True) for d in (1, -1)]
     return out
+
+
+# the torus curve bounding the quasi-periodic region, continued from its
+# point on this load; the loads whose other torus points (two narrow
+# tongues of instability below the curve, F* ~ 0.65-1.1) are marked
+TORUS_START = 0.5625
+TORUS_POINT_LOADS = (0.6875, 0.8125, 0.9375)
+TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
+
+
+def torus_curves(parameter_set="figures"):
+    """The torus (Neimark-Sacker) curve of the large-amplitude family in
+    (V, F*) and the torus points off it: {"curves": [[stored branches]],
+    "points": [{"V", "Fstar", "angle", "direction"}]}.  The family is
+    followed from large_seed in F* to TORUS_START and the TORUS_POINT_LOADS,
+    then in V up to V_MAX; its torus points there are the crossings of a
+    Floquet pair through |mu| = 1 (floquet.torus_crossings).  The first one
+    on TORUS_START is continued both ways by AUTO (torus.tr_point,
+    torus.torus_curve); those of the other loads that the curve does not
+    pass through are kept as points: AUTO's continuation of the tongues
+    stops (docs/reproduction.md)."""
+    rundir = paths.rundir("fig11/torus")
+    seed = large_seed(rundir, parameter_set)
+    loads = (TORUS_START,) + TORUS_POINT_LOADS
+    family = ct.periodic_from(rundir, "family", seed("UZ1"), "Fstar",
+                              stop={"Fstar": [min(loads) - 0.01, F_MAX]},
+                              UZR={"Fstar": list(loads)}, DS=-0.02, DSMAX=0.1)
+    found = {}
+    for start in family("UZ"):
+        Fstar = min(loads, key=lambda f: abs(f - start["Fstar"]))
+        if abs(Fstar - start["Fstar"]) < 1e-4:
+            name = f"po_{Fstar:.4f}"
+            orbits = ct.periodic_from(rundir, name, start, stop={"V": [V_MIN, V_MAX]}, DS=2.0,
+                                      DSMAX=5.0)
+            found[Fstar] = (orbits, torus.crossings(rundir, name))
+    orbits, crossings = found[TORUS_START]
+    tr = torus.tr_point(rundir, "tr", orbits, crossings[0]["value"],
+                        crossings[0]["slope_per_unit"])
+    curve = torus.torus_curve(rundir, "torus", tr, parameter_set)
+    points = [{"V": c["value"], "Fstar": Fstar, "angle": c["angle"],
+               "direction": c["direction"]}
+              for Fstar in TORUS_POINT_LOADS for c in found[Fstar][1]
+              if not on_curves({"V": c["value"], "Fstar": Fstar}, curve)]
+    return {"curves": [[branch for run in curve for branch in results.stored(run, TORUS_COLUMNS)]],
+            "points": points}
 
 
 def straight_rolling_stable(parameter_set="figures"):
@@ -236,24 +289,22 @@ def slice_row(Fstar):
     return int(numpy.argmin(numpy.abs(F_GRID - Fstar)))
 
 
-BEYOND = 1.1 * V_MAX   # where the torus locus runs on a slice without a torus point
+BEYOND = 1.1 * V_MAX   # a slice that no torus curve crosses below V_MAX
 
 
-def torus_locus(orbit_rows):
-    """The torus points on the slices: on each slice, the lowest speed from
-    which no stable orbit is found up to V_MAX (the last stable orbit loses
-    stability there), [(V, F*)] per slice, joined from slice to slice.  A
-    slice without one puts the locus at BEYOND (right of the plot: the curve
-    leaves through the right edge between the two slices); the lowest and
-    highest slices' points are held out to F_MIN and F_MAX, so the locus
-    cuts the plane like the continued curves do."""
-    out = []
-    for Fstar, row in orbit_rows:
-        alive = numpy.flatnonzero(row != 0)
-        # an orbit stable up to the last grid speed has no torus point
-        ok = len(alive) and alive[-1] + 2 < len(V_GRID)
-        out.append((V_GRID[alive[-1] + 1] if ok else BEYOND, Fstar))
-    return [(out[0][0], F_MIN)] + out + [(out[-1][0], F_MAX)]
+def torus_speed(edge_curves, Fstar):
+    """The lowest speed at which a torus curve crosses the load Fstar (where
+    the last stable large-amplitude orbit is lost, at the lightest loads),
+    BEYOND if none does."""
+    speeds = [BEYOND]
+    for curve in edge_curves:
+        if curve["kind"] != "torus":
+            continue
+        V, F = numpy.asarray(curve["V"]), numpy.asarray(curve["Fstar"])
+        for k in numpy.flatnonzero((F[:-1] - Fstar) * (F[1:] - Fstar) <= 0):
+            if F[k + 1] != F[k]:
+                speeds.append(V[k] + (Fstar - F[k]) / (F[k + 1] - F[k]) * (V[k + 1] - V[k]))
+    return min(speeds)
 
 
 def liftoff_rundir():
@@ -299,19 +350,17 @@ def liftoff_edge(speeds):
             "Fstar": Fs}
 
 
-def curve_list(drawn, pitchforks, torus, lift=None):
+def curve_list(drawn, pitchforks, lift=None):
     """Every curve that bounds a region: [{"name", "kind", "V", "Fstar"}]
     (the pitchfork lines as two points each; the lift-off edge if any)."""
     out = []
-    for kind in ("hopf", "fold"):
+    for kind in ("hopf", "fold", "torus"):
         for n, diagram in enumerate(drawn[kind]):
             for m, branch in enumerate(results.loaded(diagram)):
                 out.append({"name": f"{kind}{n + 1}.{m + 1}", "kind": kind,
                             "V": branch["V"], "Fstar": branch["Fstar"]})
     out += [{"name": f"pitchfork{n + 1}", "kind": "pitchfork", "V": [V_MIN, V_MAX],
              "Fstar": [f, f]} for n, f in enumerate(pitchforks)]
-    V, F = numpy.array(torus, dtype=float).T
-    out.append({"name": "torus_slices", "kind": "torus", "V": V, "Fstar": F})
     if lift:
         out.append({"name": "liftoff", "kind": "liftoff", "V": lift["V"],
                     "Fstar": lift["Fstar"]})
@@ -325,15 +374,15 @@ def region_map(sr_stable, orbits, edge_curves, pitchforks, lift=None):
     stopped), each labelled by the attractors the slices find inside it
     (regionmap.paint).  Straight rolling and the yaw band are exact (grid,
     pitchfork loads); where a slice finds no stable orbit nor straight
-    rolling beyond the torus points, the attractor is quasi-periodic shimmy
-    (simulations, docs/reproduction.md).  orbits: [(slice load, its orbit
-    bits along V_GRID)].  Right of the lift-off edge (lift, liftoff_edge)
-    the samples of the slices and of the edge's loads say lift-off: the
-    shimmy there grows until a wheel lifts off."""
+    rolling beyond its first torus curve (torus_speed), the attractor is
+    quasi-periodic shimmy (simulations, docs/reproduction.md).  orbits:
+    [(slice load, its orbit bits along V_GRID)].  Right of the lift-off
+    edge (lift, liftoff_edge) the samples of the slices and of the edge's
+    loads say lift-off: the shimmy there grows until a wheel lifts off."""
     samples = numpy.full(sr_stable.shape, -1, dtype=int)
-    for (Fstar, row), (V_torus, _) in zip(orbits, torus_locus(orbits)[1:-1]):
-        samples[slice_row(Fstar)] = numpy.where((V_GRID >= V_torus) & (row == 0),
-                                                ATTRACTORS["quasi"], row)
+    for Fstar, row in orbits:
+        samples[slice_row(Fstar)] = numpy.where(
+            (V_GRID >= torus_speed(edge_curves, Fstar)) & (row == 0), ATTRACTORS["quasi"], row)
     if lift:
         F_edge = [f for _, f in lift["points"]]
         for Fstar in [f for f, _ in orbits] + list(F_edge[1:-1]):
@@ -400,7 +449,8 @@ def stored_curves():
 def parts():
     """The curves from F* = 1, the large-amplitude family, the eigenvalue
     grid and one diagram in V per slice load: independent jobs."""
-    jobs = {"curves": stored_curves, "large": large_family, "grid": straight_rolling_stable}
+    jobs = {"curves": stored_curves, "large": large_family, "grid": straight_rolling_stable,
+            "torus": torus_curves}
     jobs.update({f"slice_{Fstar:.4f}": lambda Fstar=Fstar: slice_diagram(Fstar)
                  for Fstar in SLICES})
     jobs.update({f"liftoff_{Fstar:.2f}": lambda Fstar=Fstar: liftoff_speed(Fstar)
@@ -415,7 +465,7 @@ def mx_ends(drawn, tol=1e-3):
     oleo stage switch, and AUTO stops there) as [{"V", "Fstar", "curves"}],
     and the others [{"V", "Fstar", "curve"}]."""
     ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "curve": f"{kind}{n + 1}"}
-            for kind in ("hopf", "fold") for n, diagram in enumerate(drawn[kind])
+            for kind in ("hopf", "fold", "torus") for n, diagram in enumerate(drawn.get(kind, []))
             for branch in results.loaded(diagram)
             for i, _, _ in branches.labelled_points(branch, "MX")]
     joins, used = [], set()
@@ -444,9 +494,10 @@ def compute(parts):
               for Fstar, part in slices.items()]
     drawn = {kind: stored[kind] for kind in ("hopf", "fold", "zero")}
     drawn["fold"] += [results.stored(d, ("V", "Fstar")) for d in upper]
+    drawn["torus"] = parts["torus"]["curves"]
     pitchforks = stored["pitchfork"][1]
     lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS])
-    edges = curve_list(drawn, pitchforks, torus_locus(orbits), lift)
+    edges = curve_list(drawn, pitchforks, lift)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
                               pitchforks, lift)
     for row, col, n, votes in check["pieces"]:
@@ -462,7 +513,8 @@ def compute(parts):
     names = {str(v): ((region_name(v & ~ATTRACTORS["yaw"]) if v & ~ATTRACTORS["yaw"] else "")
                       + (BAND if v & ATTRACTORS["yaw"] else "")).lstrip("; ")
              for v in numpy.unique(found).tolist()}
-    return {"curves": drawn, "pitchfork": stored["pitchfork"], "mx_joins": joins,
+    return {"curves": drawn, "torus_points": parts["torus"]["points"],
+            "pitchfork": stored["pitchfork"], "mx_joins": joins,
             "mx_stops": stops, "edge_curves": edges, "region_check": check,
             "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
                                  "psi0": liftoff.PSI0},
@@ -486,10 +538,18 @@ def plot(result):
     for f in result["pitchfork"][1]:
         ax.axhline(f, color="g", lw=1.4, ls="-.")
     handles.append(plt.Line2D([], [], color="g", ls="-.", label="pitchfork"))
-    torus, = [c for c in result["edge_curves"] if c["kind"] == "torus"]
-    ax.plot(torus["V"], torus["Fstar"], color="m", lw=1.4, marker=".", ms=4)
-    handles.append(plt.Line2D([], [], color="m", marker=".", label="torus points on the "
-                              "slices (stable orbit lost), joined"))
+    for diagram in result["curves"]["torus"]:
+        for branch in results.loaded(diagram):
+            ax.plot(branch["V"], branch["Fstar"], color="m", lw=1.4)
+    handles.append(plt.Line2D([], [], color="m", label="torus (Neimark-Sacker) curves:\n"
+                              "large orbit loses stability, quasi-periodic\nshimmy beyond "
+                              "(AUTO, ISW = 2)"))
+    for point in result["torus_points"]:
+        ax.plot(point["V"], point["Fstar"], "o", mfc="none", mec="m", ms=5)
+    if result["torus_points"]:
+        handles.append(plt.Line2D([], [], color="m", marker="o", mfc="none", ls="",
+                                  label="torus points of two narrow tongues\n"
+                                        "(orbit unstable inside; not continued)"))
     lift = [c for c in result["edge_curves"] if c["kind"] == "liftoff"]
     if lift:
         V, F = numpy.array(result["liftoff"]["points"]).T

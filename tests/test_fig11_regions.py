@@ -1,5 +1,5 @@
-"""Fig. 11's region helpers on synthetic input (no AUTO run): the torus
-locus read off slice rows, the pairing of MX ends where two Hopf curves meet,
+"""Fig. 11's region helpers on synthetic input (no AUTO run): where a
+torus curve crosses a slice load, the pairing of MX ends where two Hopf curves meet,
 and the region map's codes around one curve."""
 import os
 import sys
@@ -24,14 +24,16 @@ def branch(Vs, Fs, mx_at_end):
 
 
 def main():
-    lost = np.where((V >= 40) & (V < 350), HIGH, 0)        # stable orbit lost at 350 m/s
-    whole = np.where(V >= 40, HIGH, 0)                     # stable up to 600 m/s
-    locus = fig11.torus_locus([(0.2, lost), (1.5, whole)])
-    check_close("torus point where the stable orbit ends", locus[1][0], 350.0, abs=1e-9)
-    check("no torus point on a slice stable to V_MAX: the locus runs beyond the plot",
-          locus[2][0] == fig11.BEYOND and fig11.BEYOND > fig11.V_MAX)
-    check("the locus is held out to F_MIN and F_MAX",
-          locus[0] == (350.0, fig11.F_MIN) and locus[-1] == (fig11.BEYOND, fig11.F_MAX))
+    # a torus curve rising from (350, 0) to (450, 1), then folding back to (420, 0.5)
+    edges = [{"name": "torus1.1", "kind": "torus", "V": [350.0, 450.0, 420.0],
+              "Fstar": [0.0, 1.0, 0.5]},
+             {"name": "hopf1.1", "kind": "hopf", "V": [100.0, 100.0], "Fstar": [0.0, 4.0]}]
+    check_close("torus speed: where the curve crosses the load", fig11.torus_speed(edges, 0.2),
+                370.0, abs=1e-9)
+    check_close("a load the curve crosses twice: the lower speed", fig11.torus_speed(edges, 0.75),
+                425.0, abs=1e-9)
+    check("a load no torus curve crosses: beyond the plot (other curves ignored)",
+          fig11.torus_speed(edges, 1.5) == fig11.BEYOND and fig11.BEYOND > fig11.V_MAX)
 
     # one family born at 5 Hz whose stable part runs 6-14 Hz, one born at 12 Hz
     Vs = np.linspace(1.0, 50.0, 50)
@@ -58,7 +60,7 @@ def main():
     # one vertical curve at 300 m/s; the slices find the high orbit right of it
     sr = np.zeros((len(fig11.F_GRID), len(V)), dtype=bool)
     rows = [(F, np.where(V > 300, HIGH, 0)) for F in (1.0, 2.0)]
-    edges = [{"V": [300.0, 300.0], "Fstar": [0.0, 4.0]}]
+    edges = [{"name": "hopf1.1", "kind": "hopf", "V": [300.0, 300.0], "Fstar": [0.0, 4.0]}]
     found, report = fig11.region_map(sr, rows, edges, [0.037, 0.408])
     above = fig11.F_GRID > 0.5
     check("right of the curve: high-frequency shimmy at every load above the band",
@@ -75,7 +77,7 @@ def main():
     Fs = np.linspace(1.2, 1.8, 61)
     lift = {"points": [(600.0, 1.2), (550.0, 1.5), (600.0, 1.8)],
             "V": 600.0 - 50.0 * (1.0 - np.abs(Fs - 1.5) / 0.3), "Fstar": Fs}
-    edges.append({"V": lift["V"], "Fstar": lift["Fstar"]})
+    edges.append({"name": "liftoff", "kind": "liftoff", "V": lift["V"], "Fstar": lift["Fstar"]})
     rows = [(F, np.where(V > 300, HIGH, 0)) for F in (1.0, 1.5, 2.0)]
     found, report = fig11.region_map(sr, rows, edges, [0.037, 0.408], lift)
     at = fig11.slice_row(1.5)
