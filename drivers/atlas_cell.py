@@ -1,8 +1,9 @@
 """One cell of the attractor atlas (drivers/atlas.py): simulations of the
 MLG model from each of STARTS at one (V, F*), y_fp = 1 mm, epsilon = 0.1 mm
 absolute, `figures` set, each end state classified by drivers/attractor.py.
-A start not settled after STAGES[0] seconds is run again for STAGES[1];
-still unsettled, it is reported as such.  A start that leaves the domain
+A start not settled after STAGES[0] seconds (or whose small modulation
+grows: confirmed()) is run again for STAGES[1]; still unsettled, it is
+reported as such.  A start that leaves the domain
 keeps what it was doing until then (`before`), and a shimmy end keeps the
 lateral and tyre motion relative to psi (end_state), so that a new rule
 for a kind can be applied to stored cells.
@@ -123,13 +124,25 @@ def run_stage(v, fstar, psi0, t_end, rundir):
     return result
 
 
+def confirmed(result):
+    """Whether a stage's end state stands.  Not when unsettled; nor when a
+    modulation still below attractor.MODULATED grows: over the first stage
+    that can be a transient (at V = 250, F* = 0.02 a start's spread grew at
+    0.013 /s over 20-40 s at 1e-4, while the same orbit's decays at
+    -0.017 /s over 60-120 s), so the growth must last to the last stage."""
+    import attractor
+    if result["kind"] == "unsettled":
+        return False
+    return not (result.get("growing") and result["peak_spread"] < attractor.MODULATED)
+
+
 def simulate_start(v, fstar, psi0, rundir):
-    """Classify one start: the first stage that settles, else `unsettled`
-    after the last."""
+    """Classify one start: the first stage whose end state is confirmed,
+    else what the last stage shows."""
     psi0 = inside_start(v, fstar, psi0, os.path.join(rundir, "probe.csv"))
     for t_end in STAGES:
         result = run_stage(v, fstar, psi0, t_end, rundir)
-        if result["kind"] != "unsettled":
+        if confirmed(result):
             break
     return result
 

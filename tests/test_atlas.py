@@ -139,6 +139,16 @@ def unstable_orbit():
           starts["modulated"]["kind"] == "high", starts["modulated"])
 
 
+def confirmation():
+    """A growing modulation below MODULATED must last to the last stage."""
+    for result, expected in (({"kind": "quasi", "growing": True, "peak_spread": 1e-4}, False),
+                             ({"kind": "quasi", "growing": True, "peak_spread": 0.02}, True),
+                             ({"kind": "quasi", "growing": False, "peak_spread": 0.02}, True),
+                             ({"kind": "high", "growing": False, "peak_spread": 1e-6}, True),
+                             ({"kind": "unsettled", "peak_spread": 1e-3}, False)):
+        check(f"confirmed({result}) is {expected}", atlas_cell.confirmed(result) == expected)
+
+
 def simulated():
     with tempfile.TemporaryDirectory() as tmp:
         r = atlas_cell.run_stage(100.0, 1.0, atlas_cell.STARTS["rolling"], 20.0, tmp)
@@ -236,6 +246,7 @@ def comparison():
 def main():
     synthetic()
     unstable_orbit()
+    confirmation()
     comparison()
     bad_input()
     simulated()
