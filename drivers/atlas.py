@@ -102,18 +102,18 @@ def summary(points):
              f"total {sum(cpu):.0f} s", "cells by label:"]
     lines += [f"  {n:5d}  {lab}" for lab, n in sorted(counts.items(), key=lambda x: -x[1])]
     lines.append("V [m/s]  F*  label  |  per start: kind amplitude[rad] frequency[Hz] "
-                 "mean[rad] (modulation [Hz])")
+                 "mean[rad] peak spread, its trend [1/s] (modulation [Hz]) [time limit s]; "
+                 "domain: the reason, and the state before it")
     for c in cells:
         parts = []
         for start, s in c["starts"].items():
             if s["kind"] == "domain":
-                parts.append(f"{start}: domain ({s['reason']})")
+                text = f"{start}: domain ({s['reason']})"
+                if s.get("before"):
+                    text += f" after {start_text(s['before'])}"
+                parts.append(text)
                 continue
-            text = (f"{start}: {s['kind']} {s['amplitude_rad']:.4g} {s['frequency_hz']:.3g} "
-                    f"{s['mean_rad']:.3g}")
-            if s.get("modulation_hz"):
-                text += f" ({s['modulation_hz']:.3g})"
-            parts.append(text)
+            parts.append(f"{start}: {start_text(s)}")
         lines.append(f"{c['V']:g} {c['Fstar']:g} {c['label']} | " + "; ".join(parts))
     agreement = fig11_agreement(cells)
     if agreement is not None:
@@ -132,6 +132,19 @@ def summary(points):
     atlas_plot.plot(cells, atlas_cell.NAMES, atlas_cell.KINDS)
     if agreement is not None:
         atlas_plot.overlay(cells, agreement, results.read("fig11"))
+
+
+def start_text(s):
+    """One start's end state in a line of summary.txt."""
+    text = (f"{s['kind']} {s['amplitude_rad']:.4g} {s['frequency_hz']:.3g} {s['mean_rad']:.3g} "
+            f"spread {s['peak_spread']:.2g}")
+    if s.get("spread_rate") is not None:
+        text += f" {s['trend']} {s['spread_rate']:+.3g}"
+    if s.get("unstable_by"):
+        text += f", on the orbit {s['unstable_by']} shows unstable"
+    if s.get("modulation_hz"):
+        text += f" ({s['modulation_hz']:.3g})"
+    return text + f" [{s['t_end']:g}]"
 
 
 def fig11_agreement(cells):

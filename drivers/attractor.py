@@ -14,11 +14,12 @@ minus that, steady otherwise.  Kinds and criteria:
 
   straight   stationary (amplitude < STILL) at |mean psi| < CENTRE
   yaw        stationary off centre: |mean psi| >= CENTRE (the pitchfork band)
-  low        periodic shimmy that barely engages the torque link: amplitude
-             below ENGAGED psi_fp (Fig. 11's low-frequency family, born at
-             Hopf points below 9.3 Hz; 1.7-14 Hz along its stable part)
-  high       periodic shimmy swinging further (the family born above 9.3 Hz
-             and the large-amplitude family, 12-47 Hz).  Periodic:
+  low        periodic shimmy that barely engages the torque link, and slow:
+             amplitude below ENGAGED psi_fp and frequency below LOW_HZ
+             (Fig. 11's low-frequency family, born at Hopf points below
+             9.3 Hz; 1.7-14.1 Hz, at most 1.299 psi_fp on its stable part)
+  high       any other periodic shimmy (the family born above 9.3 Hz and the
+             large-amplitude family, 12-47 Hz).  Periodic:
              amplitude and mean settled (below), and the modulation is at
              the measurement floor (spread < SPREAD_NOISE), or decaying (a
              transient dying on a stable orbit, whatever its size), or
@@ -40,12 +41,16 @@ from the simulator's error, not from here.
 import numpy
 
 ENGAGED = 1.305       # low/high boundary of the amplitude / psi_fp: on the
-                      # stable orbits of Fig. 11's 22 slices and large family
-                      # (13024 points) the low family reaches at most 1.299,
-                      # the high family at least 1.309 (but for 2 points at
-                      # its Hopf point, 144.6 m/s, where no low orbit exists);
-                      # no frequency separates them (low up to 14.1 Hz, high
-                      # from 12.2 Hz)
+                      # stable orbits of Fig. 11's 22 slices (F* 0.0625 -
+                      # 3.375) and large family (13024 points) the low family
+                      # reaches at most 1.299, the high family at least 1.309
+                      # (but for 2 points at its Hopf point, 144.6 m/s); no
+                      # frequency alone separates them (low up to 14.1 Hz,
+                      # high from 12.2 Hz) ...
+LOW_HZ = 15.0         # ... but below the slices, at F* = 0.02, the family
+                      # born at the high Hopf point (10.7 Hz) shrinks to
+                      # 1.11-1.28 psi_fp at V = 450-600 m/s, at 18-20 Hz
+                      # (the atlas): the low family stays below 14.1 Hz
 STILL = 1e-6          # psi amplitude of a stationary state [rad]
 CENTRE = 1e-5         # |mean psi| of straight rolling [rad] (psi_fp ~ 2e-3)
 MODULATED = 5e-3      # relative peak spread of a saturated torus
@@ -208,7 +213,8 @@ def classify(t, psi, window, psi_fp):
         result["kind"] = "unsettled"
         return result
     tp, p = B["peaks"]
-    periodic = "low" if B["amplitude"] < ENGAGED * psi_fp else "high"
+    periodic = ("low" if B["amplitude"] < ENGAGED * psi_fp and B["frequency_hz"] < LOW_HZ
+                else "high")
     noise = B["spread"] < SPREAD_NOISE
     if trend == "growing" and not noise:
         result.update(kind="quasi", growing=True, modulation_hz=envelope_frequency(tp, p))

@@ -42,15 +42,17 @@ def synthetic():
     check("synthetic 3 Hz sine: low", r["kind"] == "low", r)
     check_close("synthetic 3 Hz sine: frequency", r["frequency_hz"], 3.0, rel=1e-3)
 
-    # low / high by how far the swing passes the freeplay angle (ENGAGED):
-    # the orbits of V = 20 m/s, F* = 1.8 (psi_fp 2.066e-3) and F* = 0.02
-    # (psi_fp 2.555e-3), whatever their frequency
+    # low / high by how far the swing passes the freeplay angle (ENGAGED)
+    # and LOW_HZ: the orbits of V = 20 m/s, F* = 1.8 (psi_fp 2.066e-3) and
+    # of V = 200 and 600 m/s, F* = 0.02 (psi_fp 2.555e-3)
     for amplitude, f, psi_fp, kind in ((2.42e-3, 9.7, 2.066e-3, "low"),
                                        (3.13e-3, 18.1, 2.066e-3, "high"),
-                                       (3.40e-3, 13.6, 2.555e-3, "high")):
+                                       (3.40e-3, 13.6, 2.555e-3, "high"),
+                                       (2.84e-3, 20.3, 2.555e-3, "high")):
         r = attractor.classify(T, amplitude * np.sin(2 * np.pi * f * T), W, psi_fp)
         check(f"synthetic {amplitude:g} rad at {f:g} Hz, psi_fp {psi_fp:g} rad "
-              f"(ratio {amplitude / psi_fp:.2f}, ENGAGED {attractor.ENGAGED}): {kind}",
+              f"(ratio {amplitude / psi_fp:.2f}, ENGAGED {attractor.ENGAGED}, LOW_HZ "
+              f"{attractor.LOW_HZ:g}): {kind}",
               r["kind"] == kind, r)
 
     # 40 s signals (a first stage): the trend is fitted over 20-40 s
