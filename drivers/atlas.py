@@ -136,8 +136,9 @@ def summary(points):
 
 def start_text(s):
     """One start's end state in a line of summary.txt."""
-    text = (f"{s['kind']} {s['amplitude_rad']:.4g} {s['frequency_hz']:.3g} {s['mean_rad']:.3g} "
-            f"spread {s['peak_spread']:.2g}")
+    text = f"{s['kind']} {s['amplitude_rad']:.4g} {s['frequency_hz']:.3g} {s['mean_rad']:.3g}"
+    if s["frequency_hz"] > 0:       # a stationary state has no peaks to spread
+        text += f" spread {s['peak_spread']:.2g}"
     if s.get("spread_rate") is not None:
         text += f" {s['trend']} {s['spread_rate']:+.3g}"
     if s.get("unstable_by"):
