@@ -4,9 +4,10 @@ the pitchfork lines, and the zero-freeplay Hopf curve; regions shaded by the
 attractors that coexist there.
 
 The curves are AUTO continuations started from the Fig. 10 special points
-(F* = 1), and the torus curve of the large-amplitude orbits (AUTO, from a
-torus point at F* = 0.5625).  The regions are bounded by those curves and
-by the edges of the straight-rolling stability grid (exact Jacobian
+(F* = 1), the torus curve of the large-amplitude orbits (AUTO, from a
+torus point at F* = 0.5625) and an edge of a tongue of instability left of
+it (another Floquet pair, from F* = 0.8125; it bounds no region).  The
+regions are bounded by those curves and by the edges of the straight-rolling stability grid (exact Jacobian
 eigenvalues); they are labelled, not bounded, by the stable low- (< 8 Hz) and high-frequency orbits
 of one-parameter diagrams in V (continuation.speed_diagram and the
 large-amplitude family) on a set of loads (regionmap).  The wheel lift-off
@@ -121,27 +122,22 @@ def large_orbits(rundir, parameter_set="figures"):
 
 
 # the torus curve bounding the quasi-periodic region, continued from its
-# point on this load; the loads whose other torus points (two narrow
-# tongues of instability below the curve, F* ~ 0.65-1.1) are marked
+# point on this load; the loads whose other torus points (narrow tongues of
+# instability below the curve, F* ~ 0.65-1.1) are marked; the tongue whose
+# edge is continued from its first torus point on TONGUE_START
 TORUS_START = 0.5625
 TORUS_POINT_LOADS = (0.6875, 0.8125, 0.9375)
+TONGUE_START = 0.8125
 TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
+TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/s in V)
 
 
-def torus_curves(parameter_set="figures"):
-    """The torus (Neimark-Sacker) curve of the large-amplitude family in
-    (V, F*) and the torus points off it: {"curves": [[stored branches]],
-    "points": [{"V", "Fstar", "angle", "direction"}]}.  The family is
-    followed from large_seed in F* to TORUS_START and the TORUS_POINT_LOADS,
-    then in V up to V_MAX; its torus points there are the crossings of a
-    Floquet pair through |mu| = 1 (floquet.torus_crossings).  The first one
-    on TORUS_START is continued both ways by AUTO (torus.tr_point,
-    torus.torus_curve); those of the other loads that the curve does not
-    pass through are kept as points: AUTO's continuation of the tongues
-    stops (docs/reproduction.md)."""
-    rundir = paths.rundir("fig11/torus")
+def large_crossings(rundir, loads, parameter_set="figures"):
+    """{load: (orbit diagram in V, its torus crossings)}: the large-amplitude
+    family followed from large_seed in F* down to each load, then in V up
+    to V_MAX; its torus points are the crossings of a Floquet pair through
+    |mu| = 1 (floquet.torus_crossings)."""
     seed = large_seed(rundir, parameter_set)
-    loads = (TORUS_START,) + TORUS_POINT_LOADS
     family = ct.periodic_from(rundir, "family", seed("UZ1"), "Fstar",
                               stop={"Fstar": [min(loads) - 0.01, F_MAX]},
                               UZR={"Fstar": list(loads)}, DS=-0.02, DSMAX=0.1)
@@ -153,16 +149,50 @@ def torus_curves(parameter_set="figures"):
             orbits = ct.periodic_from(rundir, name, start, stop={"V": [V_MIN, V_MAX]}, DS=2.0,
                                       DSMAX=5.0)
             found[Fstar] = (orbits, torus.crossings(rundir, name))
-    orbits, crossings = found[TORUS_START]
+    return found
+
+
+def first_torus_curve(rundir, name, found):
+    """The first torus point of an orbit diagram in V (found: (diagram,
+    crossings)) continued both ways by AUTO (torus.tr_point,
+    torus.torus_curve)."""
+    orbits, crossings = found
     tr = torus.tr_point(rundir, "tr", orbits, crossings[0]["value"],
                         crossings[0]["slope_per_unit"])
-    curve = torus.torus_curve(rundir, "torus", tr, parameter_set)
+    return torus.torus_curve(rundir, name, tr)
+
+
+def torus_curves(parameter_set="figures"):
+    """The torus (Neimark-Sacker) curve of the large-amplitude family in
+    (V, F*) and the torus points off it: {"curves": [[stored branches]],
+    "points": [{"V", "Fstar", "angle", "direction"}]}: the curve from the
+    first torus point on TORUS_START, the points of the TORUS_POINT_LOADS
+    that it does not pass through (large_crossings)."""
+    rundir = paths.rundir("fig11/torus")
+    found = large_crossings(rundir, (TORUS_START,) + TORUS_POINT_LOADS, parameter_set)
+    curve = first_torus_curve(rundir, "torus", found[TORUS_START])
     points = [{"V": c["value"], "Fstar": Fstar, "angle": c["angle"],
                "direction": c["direction"]}
               for Fstar in TORUS_POINT_LOADS for c in found[Fstar][1]
               if not on_curves({"V": c["value"], "Fstar": Fstar}, curve)]
     return {"curves": [[branch for run in curve for branch in results.stored(run, TORUS_COLUMNS)]],
             "points": points}
+
+
+def tongue_curve(parameter_set="figures"):
+    """A part: the torus curve of another Floquet pair, an edge of the
+    tongue of instability left of the torus curve, continued from the first
+    torus point on TONGUE_START (large_crossings, first_torus_curve) and
+    cut where its angle reaches pi (torus.before_resonance): {"curves":
+    [[stored branches]], "resonances": [{"V", "Fstar"}] (the cut ends)}."""
+    rundir = paths.rundir("fig11/tongue")
+    found = large_crossings(rundir, (TONGUE_START,), parameter_set)
+    curve = first_torus_curve(rundir, "tongue", found[TONGUE_START])
+    cut = [torus.before_resonance(branch) for run in curve
+           for branch in results.stored(run, TORUS_COLUMNS)]
+    return {"curves": [[branch for branch, _ in cut]],
+            "resonances": [{"V": float(b["columns"]["V"][-1]),
+                            "Fstar": float(b["columns"]["Fstar"][-1])} for b, end in cut if end]}
 
 
 def straight_rolling_stable(parameter_set="figures"):
@@ -352,10 +382,12 @@ def liftoff_edge(speeds):
 
 def curve_list(drawn, pitchforks, lift=None):
     """Every curve that bounds a region: [{"name", "kind", "V", "Fstar"}]
-    (the pitchfork lines as two points each; the lift-off edge if any)."""
+    (the pitchfork lines as two points each; the lift-off edge if any), and
+    the tongue's torus curve (kind "tongue": it bounds no region of the map,
+    region_map leaves it out; the tongue is a few m/s wide)."""
     out = []
-    for kind in ("hopf", "fold", "torus"):
-        for n, diagram in enumerate(drawn[kind]):
+    for kind in ("hopf", "fold", "torus", "tongue"):
+        for n, diagram in enumerate(drawn.get(kind, [])):
             for m, branch in enumerate(results.loaded(diagram)):
                 out.append({"name": f"{kind}{n + 1}.{m + 1}", "kind": kind,
                             "V": branch["V"], "Fstar": branch["Fstar"]})
@@ -389,7 +421,8 @@ def region_map(sr_stable, orbits, edge_curves, pitchforks, lift=None):
             if F_edge[0] <= Fstar <= F_edge[-1]:
                 beyond = V_GRID >= numpy.interp(Fstar, lift["Fstar"], lift["V"])
                 samples[slice_row(Fstar), beyond] = ATTRACTORS["liftoff"]
-    edges = regionmap.curve_pixels(V_GRID, F_GRID, [(c["V"], c["Fstar"]) for c in edge_curves])
+    edges = regionmap.curve_pixels(V_GRID, F_GRID, [(c["V"], c["Fstar"]) for c in edge_curves
+                                                    if c["kind"] != "tongue"])
     edges |= regionmap.boundary_pixels(sr_stable.astype(int))
     painted, check = regionmap.paint(edges, samples)
     lo, hi = min(pitchforks), max(pitchforks)
@@ -450,7 +483,7 @@ def parts():
     """The curves from F* = 1, the large-amplitude family, the eigenvalue
     grid and one diagram in V per slice load: independent jobs."""
     jobs = {"curves": stored_curves, "large": large_family, "grid": straight_rolling_stable,
-            "torus": torus_curves}
+            "torus": torus_curves, "tongue": tongue_curve}
     jobs.update({f"slice_{Fstar:.4f}": lambda Fstar=Fstar: slice_diagram(Fstar)
                  for Fstar in SLICES})
     jobs.update({f"liftoff_{Fstar:.2f}": lambda Fstar=Fstar: liftoff_speed(Fstar)
@@ -465,7 +498,8 @@ def mx_ends(drawn, tol=1e-3):
     oleo stage switch, and AUTO stops there) as [{"V", "Fstar", "curves"}],
     and the others [{"V", "Fstar", "curve"}]."""
     ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "curve": f"{kind}{n + 1}"}
-            for kind in ("hopf", "fold", "torus") for n, diagram in enumerate(drawn.get(kind, []))
+            for kind in ("hopf", "fold", "torus", "tongue")
+            for n, diagram in enumerate(drawn.get(kind, []))
             for branch in results.loaded(diagram)
             for i, _, _ in branches.labelled_points(branch, "MX")]
     joins, used = [], set()
@@ -495,6 +529,7 @@ def compute(parts):
     drawn = {kind: stored[kind] for kind in ("hopf", "fold", "zero")}
     drawn["fold"] += [results.stored(d, ("V", "Fstar")) for d in upper]
     drawn["torus"] = parts["torus"]["curves"]
+    drawn["tongue"] = parts["tongue"]["curves"]
     pitchforks = stored["pitchfork"][1]
     lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS])
     edges = curve_list(drawn, pitchforks, lift)
@@ -513,7 +548,12 @@ def compute(parts):
     names = {str(v): ((region_name(v & ~ATTRACTORS["yaw"]) if v & ~ATTRACTORS["yaw"] else "")
                       + (BAND if v & ATTRACTORS["yaw"] else "")).lstrip("; ")
              for v in numpy.unique(found).tolist()}
-    return {"curves": drawn, "torus_points": parts["torus"]["points"],
+    # the tongue points that its continued edge passes through are drawn by
+    # it (a tighter tolerance: the edge is nearly flat, dV/dF* ~ 850 m/s)
+    tongue = [results.loaded(d) for d in drawn["tongue"]]
+    points = [p for p in parts["torus"]["points"] if not on_curves(p, tongue, TONGUE_TOL)]
+    return {"curves": drawn, "torus_points": points,
+            "resonances": parts["tongue"]["resonances"],
             "pitchfork": stored["pitchfork"], "mx_joins": joins,
             "mx_stops": stops, "edge_curves": edges, "region_check": check,
             "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
@@ -541,15 +581,28 @@ def plot(result):
     for diagram in result["curves"]["torus"]:
         for branch in results.loaded(diagram):
             ax.plot(branch["V"], branch["Fstar"], color="m", lw=1.4)
-    handles.append(plt.Line2D([], [], color="m", label="torus (Neimark-Sacker) curves:\n"
+    handles.append(plt.Line2D([], [], color="m", label="torus (Neimark-Sacker) curve:\n"
                               "large orbit loses stability, quasi-periodic\nshimmy beyond "
                               "(AUTO, ISW = 2)"))
+    for diagram in result["curves"].get("tongue", []):
+        for branch in results.loaded(diagram):
+            ax.plot(branch["V"], branch["Fstar"], color="m", lw=1.2, ls="--")
+    if result["curves"].get("tongue"):
+        handles.append(plt.Line2D([], [], color="m", ls="--", label=(
+            "torus curve of another Floquet pair: edge of a\n"
+            "tongue where the large orbit is unstable (AUTO)")))
+    for end in result.get("resonances", []):
+        ax.plot(end["V"], end["Fstar"], "D", color="m", ms=5)
+    if result.get("resonances"):
+        handles.append(plt.Line2D([], [], color="m", marker="D", ls="", ms=5, label=(
+            "its end: the pair meets at -1 (1:2 resonance,\n"
+            "theta = pi; a period-doubling curve takes over)")))
     for point in result["torus_points"]:
         ax.plot(point["V"], point["Fstar"], "o", mfc="none", mec="m", ms=5)
     if result["torus_points"]:
         handles.append(plt.Line2D([], [], color="m", marker="o", mfc="none", ls="",
-                                  label="torus points of two narrow tongues\n"
-                                        "(orbit unstable inside; not continued)"))
+                                  label="tongue torus points on no continued\n"
+                                        "curve (located on diagrams in V)"))
     lift = [c for c in result["edge_curves"] if c["kind"] == "liftoff"]
     if lift:
         V, F = numpy.array(result["liftoff"]["points"]).T

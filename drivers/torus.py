@@ -202,7 +202,10 @@ def monodromy_path(sol, parameter_set="figures"):
     return t, out
 
 
-def seeded(start, parameter_set="figures"):
+ANGLE_TOL = 0.05       # rad: the seeded pair's argument against the TR label's angle
+
+
+def seeded(start, angle, parameter_set="figures"):
     """The first point of a torus curve with the critical Floquet
     eigenfunction filled in.  AUTO's start from a TR label (periodic.f90,
     STPNTR) guesses the eigenfunction as 1e-4 (cos, sin)(theta t) in every
@@ -210,11 +213,19 @@ def seeded(start, parameter_set="figures"):
     the trivial v = 0 (norm PAR(NPAR) ~ 1e-20) and the continuation after it
     is singular (MX at the first step, any DS).  Here v1 + i v2 = Phi(t) w0,
     w0 the eigenvector of the monodromy matrix whose multiplier is nearest
-    exp(i theta) (BCTR: v(1) = exp(i theta) v(0)), scaled to norm 1
-    (ICTR: the integral of |v|^2 equals PAR(NPAR))."""
+    exp(i angle) (BCTR: v(1) = exp(i theta) v(0)), scaled to norm 1
+    (ICTR: the integral of |v|^2 equals PAR(NPAR)).  angle: the crossing
+    pair's argument at the TR label (AUTO sets PAR(12) there from the
+    multiplier nearest the unit circle, TPSPBV; the start run's own PAR(12)
+    drifts in its degenerate solve), so a tongue's point gets its own pair,
+    not the main curve's; a pair whose argument is off it by more than
+    ANGLE_TOL is an error."""
     t, phi = monodromy_path(start, parameter_set)
     mu, vectors = numpy.linalg.eig(phi[-1])
-    k = int(numpy.argmin(numpy.abs(mu - numpy.exp(1j * start.PAR["PAR(12)"]))))
+    k = int(numpy.argmin(numpy.abs(mu - numpy.exp(1j * angle))))
+    if abs(abs(numpy.angle(mu[k])) - abs(angle)) > ANGLE_TOL:
+        raise ValueError(f"torus: no Floquet pair at angle {angle:.4f} rad (nearest: "
+                         f"{numpy.angle(mu[k]):.4f} rad, |mu| = {abs(mu[k]):.6f})")
     w = numpy.array([p @ vectors[:, k] for p in phi])
     w /= math.sqrt(numpy.trapz(numpy.sum(numpy.abs(w) ** 2, axis=1), t))
     n = len(mlgmodel.UNAMES)
@@ -232,15 +243,37 @@ def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS):
     run from a TR label only builds the extended system's data (its last
     point, EP, or MX where its degenerate Newton solve fails: the orbit is
     kept, the eigenfunction is replaced); the curve is continued from there
-    with the eigenfunction filled in (seeded)."""
+    with the eigenfunction filled in (seeded).  AUTO continues past an
+    angle theta (PAR(12)) of pi without a stop (a UZSTOP on PAR(12) is not
+    tested on these runs): before_resonance cuts a curve there."""
     first = ct.run(rundir, f"{name}_start", "periodic", data=tr, ISW=2, ICP=TORUS_ICP,
                    DS=0.001, DSMAX=0.01, NMX=2, allow_mx=True)
-    seed = seeded(first()[-1], parameter_set)
+    seed = seeded(first()[-1], tr.PAR["PAR(12)"], parameter_set)
     stop = {"Fstar": list(CURVE_FSTAR), "V": [0.5, V_MAX]}
     return tuple(ct.run(rundir, f"{name}_{part}", "periodic", data=seed, ISW=2, ICP=TORUS_ICP,
                         DS=sign * 0.05, DSMAX=5.0, NMX=steps, UZSTOP=stop, allow_mx=True,
                         time_limit=CURVE_TIME_LIMIT)
                  for sign, part in ((1, "up"), (-1, "down")))
+
+
+def before_resonance(record):
+    """A stored torus branch (results.stored, with the column PAR(12)) up to
+    where its angle theta first reaches pi, the end point interpolated
+    there, and whether it does: the Floquet pair meets at -1 (a 1:2 strong
+    resonance), a real end of the torus curve, where a period-doubling
+    curve takes over; AUTO's points past it are not torus points of the
+    orbit."""
+    columns = record["columns"]
+    theta = columns["PAR(12)"]
+    k = numpy.flatnonzero((theta[:-1] - math.pi) * (theta[1:] - math.pi) <= 0)
+    if not len(k):
+        return record, False
+    k = int(k[0])
+    s = (math.pi - theta[k]) / (theta[k + 1] - theta[k])
+    return {"columns": {c: numpy.append(a[:k + 1], a[k] + s * (a[k + 1] - a[k]))
+                        for c, a in columns.items()},
+            "stable": numpy.append(record["stable"][:k + 1], record["stable"][k]),
+            "labels": [lab for lab in record["labels"] if lab[0] <= k]}, True
 
 
 def curve_arrays(runs):

@@ -56,11 +56,19 @@ def main():
           np.max(np.abs(found - exact) / np.abs(exact).max()) < 1e-8,
           np.max(np.abs(found - exact)))
 
-    # the complex multiplier nearest the unit circle plays the critical one
+    # the complex multiplier nearest the unit circle plays the critical one;
+    # the start's own PAR(12) is set off it: the seed follows the angle given
+    # (the TR label's), as on a tongue, where the other pair must not be taken
     pair = exact[exact.imag > 1e-3]
     mu = pair[np.argmin(np.abs(np.abs(pair) - 1))]
-    sol.PAR["PAR(12)"] = float(abs(np.angle(mu)))
-    seeded = torus.seeded(sol)
+    other = pair[np.argmax(np.abs(np.angle(pair) - np.angle(mu)))]    # 2.24 rad against 0.25
+    sol.PAR["PAR(12)"] = float(abs(np.angle(other)))
+    try:
+        torus.seeded(sol, abs(np.angle(mu)) + 3 * torus.ANGLE_TOL)
+        check("an angle with no pair within ANGLE_TOL is refused", False)
+    except ValueError as exc:
+        check("an angle with no pair within ANGLE_TOL is refused", "no Floquet pair" in str(exc))
+    seeded = torus.seeded(sol, float(abs(np.angle(mu))))
     n = len(mlgmodel.UNAMES)
     v = np.array([seeded[f"U({n + i + 1})"] + 1j * seeded[f"U({2 * n + i + 1})"]
                   for i in range(n)])
