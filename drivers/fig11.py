@@ -182,17 +182,12 @@ def torus_curves(parameter_set="figures"):
 def tongue_curve(parameter_set="figures"):
     """A part: the torus curve of another Floquet pair, an edge of the
     tongue of instability left of the torus curve, continued from the first
-    torus point on TONGUE_START (large_crossings, first_torus_curve) and
-    cut where its angle reaches pi (torus.before_resonance): {"curves":
-    [[stored branches]], "resonances": [{"V", "Fstar"}] (the cut ends)}."""
+    torus point on TONGUE_START (large_crossings, first_torus_curve):
+    {"curves": [[stored branches]]}."""
     rundir = paths.rundir("fig11/tongue")
     found = large_crossings(rundir, (TONGUE_START,), parameter_set)
     curve = first_torus_curve(rundir, "tongue", found[TONGUE_START])
-    cut = [torus.before_resonance(branch) for run in curve
-           for branch in results.stored(run, TORUS_COLUMNS)]
-    return {"curves": [[branch for branch, _ in cut]],
-            "resonances": [{"V": float(b["columns"]["V"][-1]),
-                            "Fstar": float(b["columns"]["Fstar"][-1])} for b, end in cut if end]}
+    return {"curves": [[branch for run in curve for branch in results.stored(run, TORUS_COLUMNS)]]}
 
 
 def straight_rolling_stable(parameter_set="figures"):
@@ -553,7 +548,6 @@ def compute(parts):
     tongue = [results.loaded(d) for d in drawn["tongue"]]
     points = [p for p in parts["torus"]["points"] if not on_curves(p, tongue, TONGUE_TOL)]
     return {"curves": drawn, "torus_points": points,
-            "resonances": parts["tongue"]["resonances"],
             "pitchfork": stored["pitchfork"], "mx_joins": joins,
             "mx_stops": stops, "edge_curves": edges, "region_check": check,
             "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
@@ -591,12 +585,6 @@ def plot(result):
         handles.append(plt.Line2D([], [], color="m", ls="--", label=(
             "torus curve of another Floquet pair: edge of a\n"
             "tongue where the large orbit is unstable (AUTO)")))
-    for end in result.get("resonances", []):
-        ax.plot(end["V"], end["Fstar"], "D", color="m", ms=5)
-    if result.get("resonances"):
-        handles.append(plt.Line2D([], [], color="m", marker="D", ls="", ms=5, label=(
-            "its end: the pair meets at -1 (1:2 resonance,\n"
-            "theta = pi; a period-doubling curve takes over)")))
     for point in result["torus_points"]:
         ax.plot(point["V"], point["Fstar"], "o", mfc="none", mec="m", ms=5)
     if result["torus_points"]:

@@ -243,9 +243,9 @@ def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS):
     run from a TR label only builds the extended system's data (its last
     point, EP, or MX where its degenerate Newton solve fails: the orbit is
     kept, the eigenfunction is replaced); the curve is continued from there
-    with the eigenfunction filled in (seeded).  AUTO continues past an
-    angle theta (PAR(12)) of pi without a stop (a UZSTOP on PAR(12) is not
-    tested on these runs): before_resonance cuts a curve there."""
+    with the eigenfunction filled in (seeded).  Its angle theta (PAR(12))
+    may pass pi: past it the pair is on the unit circle at 2 pi - theta
+    (the orbits' multipliers, docs/reproduction.md), so the curve goes on."""
     first = ct.run(rundir, f"{name}_start", "periodic", data=tr, ISW=2, ICP=TORUS_ICP,
                    DS=0.001, DSMAX=0.01, NMX=2, allow_mx=True)
     seed = seeded(first()[-1], tr.PAR["PAR(12)"], parameter_set)
@@ -254,26 +254,6 @@ def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS):
                         DS=sign * 0.05, DSMAX=5.0, NMX=steps, UZSTOP=stop, allow_mx=True,
                         time_limit=CURVE_TIME_LIMIT)
                  for sign, part in ((1, "up"), (-1, "down")))
-
-
-def before_resonance(record):
-    """A stored torus branch (results.stored, with the column PAR(12)) up to
-    where its angle theta first reaches pi, the end point interpolated
-    there, and whether it does: the Floquet pair meets at -1 (a 1:2 strong
-    resonance), a real end of the torus curve, where a period-doubling
-    curve takes over; AUTO's points past it are not torus points of the
-    orbit."""
-    columns = record["columns"]
-    theta = columns["PAR(12)"]
-    k = numpy.flatnonzero((theta[:-1] - math.pi) * (theta[1:] - math.pi) <= 0)
-    if not len(k):
-        return record, False
-    k = int(k[0])
-    s = (math.pi - theta[k]) / (theta[k + 1] - theta[k])
-    return {"columns": {c: numpy.append(a[:k + 1], a[k] + s * (a[k + 1] - a[k]))
-                        for c, a in columns.items()},
-            "stable": numpy.append(record["stable"][:k + 1], record["stable"][k]),
-            "labels": [lab for lab in record["labels"] if lab[0] <= k]}, True
 
 
 def curve_arrays(runs):

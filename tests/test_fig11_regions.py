@@ -1,7 +1,6 @@
 """Fig. 11's region helpers on synthetic input (no AUTO run): where a
 torus curve crosses a slice load, the pairing of MX ends where two Hopf curves meet,
-the region map's codes around one curve (a tongue edge left out), and a tongue's
-torus branch cut where its angle reaches pi."""
+and the region map's codes around one curve (a tongue edge left out)."""
 import os
 import sys
 
@@ -13,7 +12,6 @@ sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check, check_close  # noqa: E402
 import atlas_compare  # noqa: E402
 import fig11  # noqa: E402
-import torus  # noqa: E402
 
 V = fig11.V_GRID
 HIGH, QUASI = fig11.ATTRACTORS["high"], fig11.ATTRACTORS["quasi"]
@@ -87,21 +85,6 @@ def main():
               np.all(mapped[inside] == code), np.unique(mapped[inside]))
     check("a tongue edge is no torus speed", fig11.torus_speed([tongue], 2.5) == fig11.BEYOND)
 
-    # a tongue's torus branch whose angle passes pi between its 3rd and 4th
-    # points: cut there, the end interpolated to theta = pi; one that does not: kept
-    theta = [2.9, 3.0, 3.1, 3.2, 3.3]
-    rec = {"columns": {"V": np.array([500.0, 501.0, 502.0, 503.0, 504.0]),
-                       "Fstar": np.linspace(0.80, 0.84, 5), "PAR(12)": np.array(theta)},
-           "stable": np.zeros(5, dtype=bool), "labels": [[4, 9, "MX"]]}
-    cut, resonance = torus.before_resonance(rec)
-    check("a branch through theta = pi ends there (1:2 resonance)",
-          resonance and len(cut["columns"]["V"]) == 4 and not cut["labels"], cut["labels"])
-    check_close("its end at theta = pi, interpolated", cut["columns"]["V"][-1],
-                502.0 + (np.pi - 3.1) / 0.1, abs=1e-9)
-    check_close("its end angle", cut["columns"]["PAR(12)"][-1], np.pi, abs=1e-12)
-    rec["columns"]["PAR(12)"] = np.array(theta) - 0.5
-    kept, resonance = torus.before_resonance(rec)
-    check("a branch short of pi is kept whole", not resonance and kept is rec)
 
     # a lift-off edge from V = 600 at F* = 1.2 to V = 550 at 1.5 and back to
     # 600 at 1.8, right of the same curve: its pocket is lift-off, not high
