@@ -93,7 +93,7 @@ def overlay(cells, agreement, fig11):
     present = sorted(set(code.ravel().tolist()))
     index = numpy.searchsorted(present, code)
     colours = matplotlib.colormaps["tab20"](numpy.linspace(0, 1, 20))[:len(present)]
-    fig, ax = plt.subplots(figsize=(9, 9.5))
+    fig, ax = plt.subplots(figsize=(14, 8))
     ax.pcolormesh(edges(region_map["V"]), edges(region_map["Fstar"]), index,
                   cmap=matplotlib.colors.ListedColormap(colours), alpha=0.45,
                   vmin=-0.5, vmax=len(present) - 0.5, rasterized=True)
@@ -115,8 +115,8 @@ def overlay(cells, agreement, fig11):
     handles += [Line2D([], [], marker=m, color=col, ls="none", label=text)
                 for m, col, text in styles.values()]
     handles.append(Line2D([], [], color="k", lw=0.8, label="Fig. 11's edge curves"))
-    ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.08), ncol=2,
-              fontsize=6.5, frameon=False)
+    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1), fontsize=7,
+              frameon=False)
     ax.set_xlim(0, 600)
     ax.set_ylim(0, 3.5)
     ax.set_xlabel("V [m/s]")
