@@ -5,8 +5,8 @@ attractors that coexist there.
 
 The curves are AUTO continuations started from the Fig. 10 special points
 (F* = 1), the torus curve of the large-amplitude orbits (AUTO, from a
-torus point at F* = 0.5625) and an edge of a tongue of instability left of
-it (another Floquet pair, from F* = 0.8125; it bounds no region).  The
+torus point at F* = 0.5625) and the edges of a tongue of instability left
+of it (another Floquet pair, from F* = 0.8125; they bound no region).  The
 regions are bounded by those curves and by the edges of the straight-rolling stability grid (exact Jacobian
 eigenvalues); they are labelled, not bounded, by the stable low- (< 8 Hz) and high-frequency orbits
 of one-parameter diagrams in V (continuation.speed_diagram and the
@@ -124,10 +124,12 @@ def large_orbits(rundir, parameter_set="figures"):
 # the torus curve bounding the quasi-periodic region, continued from its
 # point on this load; the loads whose other torus points (narrow tongues of
 # instability below the curve, F* ~ 0.65-1.1) are marked; the tongue whose
-# edge is continued from its first torus point on TONGUE_START
+# edges are continued from its torus points on TONGUE_START ({part: index
+# of the crossing}: the window's two ends, 471.1 and 483.3 m/s)
 TORUS_START = 0.5625
 TORUS_POINT_LOADS = (0.6875, 0.8125, 0.9375)
 TONGUE_START = 0.8125
+TONGUE_EDGES = {"tongue": 0, "tongue2": 1}
 TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
 TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/s in V)
 
@@ -152,13 +154,13 @@ def large_crossings(rundir, loads, parameter_set="figures"):
     return found
 
 
-def first_torus_curve(rundir, name, found):
-    """The first torus point of an orbit diagram in V (found: (diagram,
-    crossings)) continued both ways by AUTO (torus.tr_point,
-    torus.torus_curve)."""
+def first_torus_curve(rundir, name, found, index=0):
+    """A torus point of an orbit diagram in V (found: (diagram, crossings);
+    the first, or crossings[index]) continued both ways by AUTO
+    (torus.tr_point, torus.torus_curve)."""
     orbits, crossings = found
-    tr = torus.tr_point(rundir, "tr", orbits, crossings[0]["value"],
-                        crossings[0]["slope_per_unit"])
+    tr = torus.tr_point(rundir, "tr", orbits, crossings[index]["value"],
+                        crossings[index]["slope_per_unit"])
     return torus.torus_curve(rundir, name, tr)
 
 
@@ -179,14 +181,14 @@ def torus_curves(parameter_set="figures"):
             "points": points}
 
 
-def tongue_curve(parameter_set="figures"):
+def tongue_curve(part, parameter_set="figures"):
     """A part: the torus curve of another Floquet pair, an edge of the
-    tongue of instability left of the torus curve, continued from the first
-    torus point on TONGUE_START (large_crossings, first_torus_curve):
-    {"curves": [[stored branches]]}."""
-    rundir = paths.rundir("fig11/tongue")
+    tongue of instability left of the torus curve, continued from the torus
+    point TONGUE_EDGES[part] on TONGUE_START (large_crossings,
+    first_torus_curve): {"curves": [[stored branches]]}."""
+    rundir = paths.rundir(f"fig11/{part}")
     found = large_crossings(rundir, (TONGUE_START,), parameter_set)
-    curve = first_torus_curve(rundir, "tongue", found[TONGUE_START])
+    curve = first_torus_curve(rundir, "tongue", found[TONGUE_START], TONGUE_EDGES[part])
     return {"curves": [[branch for run in curve for branch in results.stored(run, TORUS_COLUMNS)]]}
 
 
@@ -478,7 +480,8 @@ def parts():
     """The curves from F* = 1, the large-amplitude family, the eigenvalue
     grid and one diagram in V per slice load: independent jobs."""
     jobs = {"curves": stored_curves, "large": large_family, "grid": straight_rolling_stable,
-            "torus": torus_curves, "tongue": tongue_curve}
+            "torus": torus_curves}
+    jobs.update({part: lambda part=part: tongue_curve(part) for part in TONGUE_EDGES})
     jobs.update({f"slice_{Fstar:.4f}": lambda Fstar=Fstar: slice_diagram(Fstar)
                  for Fstar in SLICES})
     jobs.update({f"liftoff_{Fstar:.2f}": lambda Fstar=Fstar: liftoff_speed(Fstar)
@@ -524,7 +527,7 @@ def compute(parts):
     drawn = {kind: stored[kind] for kind in ("hopf", "fold", "zero")}
     drawn["fold"] += [results.stored(d, ("V", "Fstar")) for d in upper]
     drawn["torus"] = parts["torus"]["curves"]
-    drawn["tongue"] = parts["tongue"]["curves"]
+    drawn["tongue"] = [curve for part in TONGUE_EDGES for curve in parts[part]["curves"]]
     pitchforks = stored["pitchfork"][1]
     lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS])
     edges = curve_list(drawn, pitchforks, lift)
