@@ -37,7 +37,7 @@ $(MLG_LIB): $(MLG_OBJECTS)
 MLG_TEST_SOURCES := $(wildcard tests/c/test_*.c)
 MLG_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(MLG_TEST_SOURCES))
 
-$(MLG_TESTS): build/tests/%: tests/c/%.c tests/c/unit.h $(MLG_LIB) | $(PACKAGES_STAMP)
+$(MLG_TESTS): build/tests/%: tests/c/%.c tests/c/unit.h tests/c/near_equilibrium.h $(MLG_LIB) | $(PACKAGES_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(MLG_CFLAGS) -Itests/c $< $(MLG_LIB) -llapack -lm -o $@
 

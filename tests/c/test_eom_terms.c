@@ -18,25 +18,11 @@
 #include <string.h>
 
 #include "mlg_model.h"
+#include "near_equilibrium.h"
 #include "unit.h"
 
 void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda,
             double *w, double *work, const int *lwork, int *info);
-
-static void random_state(mlg_params *p, double *u)
-{
-    mlg_equilibrium(p, -1.0, u);
-    u[MLG_PSI] += unit_between(-0.01, 0.01);
-    u[MLG_DELTA] += unit_between(-0.01, 0.01);
-    u[MLG_BETA] += unit_between(-0.003, 0.003);
-    u[MLG_ETA] += unit_between(-0.01, 0.01);
-    u[MLG_PSI_DOT] = unit_between(-1.0, 1.0);
-    u[MLG_DELTA_DOT] = unit_between(-0.5, 0.5);
-    u[MLG_BETA_DOT] = unit_between(-0.2, 0.2);
-    u[MLG_ETA_DOT] = unit_between(-0.1, 0.1);
-    u[MLG_LAMBDA_L] = unit_between(-0.02, 0.02);
-    u[MLG_LAMBDA_R] = unit_between(-0.02, 0.02);
-}
 
 static void identical_at_zero_angles(void)
 {
@@ -49,7 +35,7 @@ static void identical_at_zero_angles(void)
         p.yfp = n % 2 ? 1.0 : 0.0;
         p.strut_variant = (n / 2) % 2;
         double u[MLG_NX], f[2][MLG_NX], J[2][MLG_NX * MLG_NX], P[2][MLG_NX * MLG_NPAR];
-        random_state(&p, u);
+        near_equilibrium(&p, u);
         int status = 0;
         for (int k = 0; k < 2; k++) {
             p.eom_terms = k;
@@ -221,7 +207,7 @@ static void mass_matrix(void)
         p.c_psi = p.c_beta = p.zeta_delta = p.c_eta1 = p.c_eta2a = p.c_eta2b = 0.0;
         double u[MLG_NX], f[MLG_NX], asym, l;
         p.eom_terms = MLG_EOM_COMPLETE;
-        random_state(&p, u);
+        near_equilibrium(&p, u);
         if (mlg_rhs(&p, u, f) != MLG_OK) continue;
         n_ok++;
         worst = fmax(worst, mass_matrix_error(p, u, &asym, &l));

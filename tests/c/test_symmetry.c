@@ -4,6 +4,7 @@
  * of the side-stay axis u_beta is the axis of (-rho, -mu), so
  * f(S u; -rho, -mu) = S f(u; rho, mu), for every eom_terms level. */
 #include "mlg_model.h"
+#include "near_equilibrium.h"
 #include "unit.h"
 
 static void reflect(const double *u, double *v)
@@ -28,17 +29,7 @@ int main(void)
         p.yfp = n % 2 ? 1.0 : 0.0;
         p.eps_rel = 0.1;
         double u[MLG_NX], su[MLG_NX], f[MLG_NX], fs[MLG_NX], sf[MLG_NX];
-        mlg_equilibrium(&p, -1.0, u);
-        u[MLG_PSI] = unit_between(-0.01, 0.01);
-        u[MLG_DELTA] = unit_between(-0.01, 0.01);
-        u[MLG_BETA] += unit_between(-0.002, 0.002);
-        u[MLG_ETA] += unit_between(-0.01, 0.01);
-        u[MLG_PSI_DOT] = unit_between(-1.0, 1.0);
-        u[MLG_DELTA_DOT] = unit_between(-0.5, 0.5);
-        u[MLG_BETA_DOT] = unit_between(-0.2, 0.2);
-        u[MLG_ETA_DOT] = unit_between(-0.1, 0.1);
-        u[MLG_LAMBDA_L] = unit_between(-0.02, 0.02);
-        u[MLG_LAMBDA_R] = unit_between(-0.02, 0.02);
+        near_equilibrium(&p, u);
         reflect(u, su);
         if (mlg_rhs(&p, u, f) != MLG_OK || mlg_rhs(&p, su, fs) != MLG_OK) continue;
         reflect(f, sf);
@@ -78,16 +69,7 @@ int main(void)
         mlg_params b = a;
         b.rho = -a.rho;
         b.mu = -a.mu;
-        mlg_equilibrium(&a, -1.0, u);
-        u[MLG_PSI] += unit_between(-0.01, 0.01);
-        u[MLG_DELTA] += unit_between(-0.01, 0.01);
-        u[MLG_BETA] += unit_between(-0.002, 0.002);
-        u[MLG_PSI_DOT] = unit_between(-1.0, 1.0);
-        u[MLG_DELTA_DOT] = unit_between(-0.5, 0.5);
-        u[MLG_BETA_DOT] = unit_between(-0.2, 0.2);
-        u[MLG_ETA_DOT] = unit_between(-0.1, 0.1);
-        u[MLG_LAMBDA_L] = unit_between(-0.02, 0.02);
-        u[MLG_LAMBDA_R] = unit_between(-0.02, 0.02);
+        near_equilibrium(&a, u);
         reflect(u, su);
         if (mlg_rhs(&a, u, f) != MLG_OK || mlg_rhs(&b, su, fs) != MLG_OK) continue;
         reflect(f, sf);
