@@ -24,7 +24,8 @@
 #   AUTO_DIR=<dir>  use an already built AUTO-07p instead of building one
 #   AUTO_SRC=<file> build AUTO-07p from this tarball, not the Debian source
 #   PYTHON          interpreter with numpy and matplotlib (/usr/bin/python3)
-#   OMP_NUM_THREADS threads for AUTO (1)
+#   AUTO_THREADS    OpenMP threads of each AUTO run (1; an OMP_NUM_THREADS in
+#                   the environment is not used: results depend on it)
 #   TEST_TIMEOUT    seconds per test program (600)
 #
 # Useful for rules in included makefiles: $(AUTO_DIR), $(PYTHON), `| auto`
@@ -32,9 +33,13 @@
 
 SHELL := /bin/bash
 PYTHON ?= /usr/bin/python3
-OMP_NUM_THREADS ?= 1
+AUTO_THREADS ?= 1
+ifeq ($(shell [[ "$(AUTO_THREADS)" =~ ^[1-9][0-9]*$$ ]] && echo ok),)
+$(error AUTO_THREADS=$(AUTO_THREADS) must be a whole number >= 1 (threads of each AUTO run))
+endif
 TEST_TIMEOUT ?= 600
-export PYTHON OMP_NUM_THREADS
+export PYTHON
+export MLG_AUTO_THREADS := $(AUTO_THREADS)
 export MPLBACKEND := Agg
 export SOURCE_DATE_EPOCH := 0
 

@@ -32,10 +32,14 @@ AUTO_DIR = os.environ.get("AUTO_DIR", os.path.join(BUILD, "auto", "07p"))
 if not os.path.isdir(os.path.join(AUTO_DIR, "python", "auto")):
     sys.exit(f"autoglue: no AUTO-07p at AUTO_DIR={AUTO_DIR} (run `make setup`)")
 os.environ["AUTO_DIR"] = AUTO_DIR
-# AUTO is built with OpenMP; more than one thread changes its rounding, so a
-# driver started by hand gives make's results only with one (the Makefile's
-# default too).
-os.environ.setdefault("OMP_NUM_THREADS", "1")
+# AUTO is built with OpenMP; more than one thread changes its rounding (a
+# fold curve of Fig. 11 then stops at a run-dependent point), so AUTO runs
+# on MLG_AUTO_THREADS threads (make's AUTO_THREADS), 1 unless asked: an
+# OMP_NUM_THREADS inherited from a shell or a cluster job is not used.
+AUTO_THREADS = os.environ.get("MLG_AUTO_THREADS", "1")
+if not (AUTO_THREADS.isdigit() and int(AUTO_THREADS) >= 1):
+    sys.exit(f"autoglue: MLG_AUTO_THREADS={AUTO_THREADS!r} must be a whole number >= 1")
+os.environ["OMP_NUM_THREADS"] = AUTO_THREADS
 sys.path.insert(0, os.path.join(AUTO_DIR, "python"))
 if "bool" not in vars(numpy):  # hasattr() would warn on numpy 1.24
     numpy.bool = numpy.bool_  # AUTO 0.9.2's Points.py still uses numpy.bool
