@@ -16,18 +16,13 @@ holds the map ("region_map": V, Fstar, code per F* row, names) and the
 curves bounding it ("edge_curves") for the attractor atlas."""
 import os
 
-import matplotlib.pyplot as plt
-from matplotlib.colors import ListedColormap
-from matplotlib.patches import Patch
 import numpy
-from scipy.interpolate import PchipInterpolator
 
 import autoglue
 import branches
 import continuation as ct
 import liftoff
 import paths
-import plotting
 import regionmap
 import results
 import spectrum
@@ -100,25 +95,37 @@ def large_seed(rundir, parameter_set="figures"):
     return ct.periodic_from(rundir, "large_seed", point, stop={"V": [V_MIN, 300.0]})
 
 
-def large_orbits(rundir, parameter_set="figures"):
-    """{slice load: orbit diagram in V} of the large-amplitude shimmy family.
+def large_diagrams(rundir, loads, family_runs, orbit_runs, family_stop, parameter_set="figures",
+                   **options):
+    """{load: [orbit diagrams in V]} of the large-amplitude shimmy family.
     Away from F* = 1 it need not be connected to a Hopf point of straight
-    rolling inside V <= 600, so it is followed from the stable orbit at
-    F* = 1, V = 300 m/s: continued in F* to every slice load, then in V."""
+    rolling inside V <= 600, so it is followed from its stable orbit at
+    F* = 1, V = 300 m/s (large_seed): continued in F* (a run per {name:
+    sign of DS} of family_runs, within family_stop) to every load, then in
+    V (a run per {name: sign of DS} of orbit_runs(load)) within V_MIN-V_MAX.
+    options (allow_mx) go to every run."""
     seed = large_seed(rundir, parameter_set)
     out = {}
-    for sign in (1, -1):
-        family = ct.periodic_from(rundir, f"large_F{'+-'[sign < 0]}", seed("UZ1"), "Fstar",
-                                  stop={"Fstar": [F_MIN, F_MAX]}, UZR={"Fstar": list(SLICES)},
-                                  DS=0.02 * sign, DSMAX=0.1, allow_mx=True)
+    for family_name, sign in family_runs.items():
+        family = ct.periodic_from(rundir, family_name, seed("UZ1"), "Fstar",
+                                  stop={"Fstar": family_stop}, UZR={"Fstar": list(loads)},
+                                  DS=0.02 * sign, DSMAX=0.1, **options)
         for start in family("UZ"):
-            Fstar = min(SLICES, key=lambda f: abs(f - start["Fstar"]))
+            Fstar = min(loads, key=lambda f: abs(f - start["Fstar"]))
             if abs(Fstar - start["Fstar"]) > 1e-4 or Fstar in out:
                 continue
-            out[Fstar] = [ct.periodic_from(rundir, f"large_{Fstar:.3f}{'+-'[d < 0]}", start,
-                                           stop={"V": [V_MIN, V_MAX]}, DS=2.0 * d, DSMAX=5.0,
-                                           allow_mx=True) for d in (1, -1)]
+            out[Fstar] = [ct.periodic_from(rundir, name, start, stop={"V": [V_MIN, V_MAX]},
+                                           DS=2.0 * d, DSMAX=5.0, **options)
+                          for name, d in orbit_runs(Fstar).items()]
     return out
+
+
+def large_orbits(rundir, parameter_set="figures"):
+    """{slice load: orbit diagrams in V both ways} of the large-amplitude
+    family (large_diagrams, from both sides of F* = 1)."""
+    return large_diagrams(rundir, SLICES, {"large_F+": 1, "large_F-": -1},
+                          lambda f: {f"large_{f:.3f}+": 1, f"large_{f:.3f}-": -1},
+                          [F_MIN, F_MAX], parameter_set, allow_mx=True)
 
 
 # the torus curve bounding the quasi-periodic region, continued from its
@@ -136,22 +143,13 @@ TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/
 
 def large_crossings(rundir, loads, parameter_set="figures"):
     """{load: (orbit diagram in V, its torus crossings)}: the large-amplitude
-    family followed from large_seed in F* down to each load, then in V up
-    to V_MAX; its torus points are the crossings of a Floquet pair through
-    |mu| = 1 (floquet.torus_crossings)."""
-    seed = large_seed(rundir, parameter_set)
-    family = ct.periodic_from(rundir, "family", seed("UZ1"), "Fstar",
-                              stop={"Fstar": [min(loads) - 0.01, F_MAX]},
-                              UZR={"Fstar": list(loads)}, DS=-0.02, DSMAX=0.1)
-    found = {}
-    for start in family("UZ"):
-        Fstar = min(loads, key=lambda f: abs(f - start["Fstar"]))
-        if abs(Fstar - start["Fstar"]) < 1e-4:
-            name = f"po_{Fstar:.4f}"
-            orbits = ct.periodic_from(rundir, name, start, stop={"V": [V_MIN, V_MAX]}, DS=2.0,
-                                      DSMAX=5.0)
-            found[Fstar] = (orbits, torus.crossings(rundir, name))
-    return found
+    family followed down in F* to each load, then up in V (large_diagrams);
+    its torus points are the crossings of a Floquet pair through |mu| = 1
+    (floquet.torus_crossings)."""
+    found = large_diagrams(rundir, loads, {"family": -1}, lambda f: {f"po_{f:.4f}": 1},
+                           [min(loads) - 0.01, F_MAX], parameter_set)
+    return {Fstar: (orbits, torus.crossings(rundir, f"po_{Fstar:.4f}"))
+            for Fstar, (orbits,) in found.items()}
 
 
 def first_torus_curve(rundir, name, found, index=0):
@@ -349,26 +347,53 @@ def liftoff_speed(Fstar):
     return {"Fstar": float(Fstar), "V": V}
 
 
-def liftoff_edge(speeds):
-    """The lift-off edge from the parts' speeds [{"Fstar", "V" or None}]:
-    the points found, with its two ends on V = V_MAX bisected in F* between
-    the outermost loads with lift-off and their neighbours without
-    ({"points": [(V, F*)], "V", "Fstar": a smooth curve through them (PCHIP
-    in F*)}), or None if no load lifts a wheel off."""
+def liftoff_loads(speeds):
+    """The indices of the loads with lift-off in the parts' speeds [{"Fstar",
+    "V" or None}] (they must be contiguous)."""
     found = [k for k, s in enumerate(speeds) if s["V"] is not None]
-    if not found:
-        return None
-    if found != list(range(found[0], found[-1] + 1)):
+    if found != list(range(found[0], found[-1] + 1) if found else []):
         raise RuntimeError("fig11: the loads with lift-off are not contiguous: "
                            f"{[s['Fstar'] for s in speeds if s['V'] is not None]}")
-    csv = os.path.join(liftoff_rundir(), "ends.csv")
-    ends = []
-    for inside, outside in ((found[0], found[0] - 1), (found[-1], found[-1] + 1)):
-        if not 0 <= outside < len(speeds):
-            raise RuntimeError(f"fig11: a wheel lifts off at F* = {speeds[inside]['Fstar']}, "
-                               "the outermost lift-off load: extend LIFTOFF_LOADS")
-        ends.append(liftoff.edge_load(csv, V_MAX, speeds[outside]["Fstar"],
-                                      speeds[inside]["Fstar"], **FREEPLAY))
+    return found
+
+
+# the two ends of the lift-off edge on V = V_MAX: {part: the outermost load
+# with lift-off on that side (index into the loads with lift-off)}
+LIFTOFF_ENDS = {"liftoff_end_light": 0, "liftoff_end_heavy": -1}
+
+
+def liftoff_end(parts, part):
+    """A part: the load on V = V_MAX where lift-off starts beyond the
+    outermost load with lift-off (LIFTOFF_ENDS), bisected in F* towards
+    its neighbour without ({"Fstar": ..., or None if no load lifts a wheel
+    off}).  The bracket's ends are not run again: the liftoff_<F*> parts
+    ran both at V_MAX."""
+    speeds = [parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS]
+    found = liftoff_loads(speeds)
+    if not found:
+        return {"Fstar": None}
+    end = LIFTOFF_ENDS[part]
+    inside = found[end]
+    outside = inside + (-1 if end == 0 else 1)
+    if not 0 <= outside < len(speeds):
+        raise RuntimeError(f"fig11: a wheel lifts off at F* = {speeds[inside]['Fstar']}, "
+                           "the outermost lift-off load: extend LIFTOFF_LOADS")
+    csv = os.path.join(liftoff_rundir(), f"{part}.csv")
+    Fstar = liftoff.edge_load(csv, V_MAX, speeds[outside]["Fstar"], speeds[inside]["Fstar"],
+                              checked=True, **FREEPLAY)
+    print(f"fig11: lift-off on V = {V_MAX:g} from F* = {Fstar:.4f}", flush=True)
+    return {"Fstar": Fstar}
+
+
+def liftoff_edge(speeds, ends):
+    """The lift-off edge from the parts' speeds [{"Fstar", "V" or None}] and
+    its two ends' loads on V = V_MAX (liftoff_end): {"points": [(V, F*)],
+    "V", "Fstar": a smooth curve through them (PCHIP in F*)}, or None if no
+    load lifts a wheel off."""
+    from scipy.interpolate import PchipInterpolator   # 0.3 s to load: not in every part job
+    found = liftoff_loads(speeds)
+    if not found:
+        return None
     points = [(V_MAX, ends[0])] + [(speeds[k]["V"], speeds[k]["Fstar"]) for k in found] \
         + [(V_MAX, ends[1])]
     V, F = numpy.array(points).T
@@ -451,6 +476,8 @@ def region_name(value):
 def shade(ax, found):
     """Paint the map (regions by colour, the yaw band hatched); returns the
     legend patches of the regions present."""
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
     key = region_key(found)
     values = numpy.unique(key).tolist()
     colours = [COLOURS.get(v, "k") for v in values]
@@ -476,16 +503,33 @@ def stored_curves():
                for kind in ("hopf", "fold", "zero")}, "pitchfork": out["pitchfork"]}
 
 
+def upper_fold_curves(parts):
+    """A part: the upper fold curves (upper_folds) from the slices' folds,
+    stored: {"curves": [stored diagrams]}."""
+    upper = upper_folds(paths.rundir("fig11/upper_folds"), parts["curves"]["fold"],
+                        {Fstar: parts[f"slice_{Fstar:.4f}"]["folds"] for Fstar in SLICES})
+    return {"curves": [results.stored(d, ("V", "Fstar")) for d in upper]}
+
+
 def parts():
-    """The curves from F* = 1, the large-amplitude family, the eigenvalue
-    grid and one diagram in V per slice load: independent jobs."""
-    jobs = {"curves": stored_curves, "large": large_family, "grid": straight_rolling_stable,
-            "torus": torus_curves}
-    jobs.update({part: lambda part=part: tongue_curve(part) for part in TONGUE_EDGES})
-    jobs.update({f"slice_{Fstar:.4f}": lambda Fstar=Fstar: slice_diagram(Fstar)
-                 for Fstar in SLICES})
-    jobs.update({f"liftoff_{Fstar:.2f}": lambda Fstar=Fstar: liftoff_speed(Fstar)
-                 for Fstar in LIFTOFF_LOADS})
+    """The curves from F* = 1, the large-amplitude family, the torus curves,
+    the eigenvalue grid, one diagram in V per slice load and the lift-off
+    speeds: independent jobs, the longest first (so that the last jobs
+    under make -jN are short); then the upper fold curves (from the slices'
+    folds) and the lift-off edge's ends (from the speeds)."""
+    jobs = {"large": large_family, "tongue": lambda: tongue_curve("tongue"),
+            "torus": torus_curves, "tongue2": lambda: tongue_curve("tongue2"),
+            "curves": stored_curves}
+    liftoff_parts = [f"liftoff_{Fstar:.2f}" for Fstar in LIFTOFF_LOADS]
+    jobs.update({part: lambda Fstar=Fstar: liftoff_speed(Fstar)
+                 for part, Fstar in zip(liftoff_parts, LIFTOFF_LOADS)})
+    jobs["grid"] = straight_rolling_stable
+    slice_parts = [f"slice_{Fstar:.4f}" for Fstar in SLICES]
+    jobs.update({part: lambda Fstar=Fstar: slice_diagram(Fstar)
+                 for part, Fstar in zip(slice_parts, SLICES)})
+    jobs["upper_folds"] = results.Needs(["curves"] + slice_parts, upper_fold_curves)
+    jobs.update({part: results.Needs(liftoff_parts, lambda p, part=part: liftoff_end(p, part))
+                 for part in LIFTOFF_ENDS})
     return jobs
 
 
@@ -513,23 +557,21 @@ def mx_ends(drawn, tol=1e-3):
 
 
 def compute(parts):
-    """The parts assembled: the second fold curve (from a slice above the
-    fold S curve's top), the torus points on the slices, and the region map
-    bounded by the curves (region_map)."""
+    """The parts assembled: the curves, the torus points on the slices, the
+    lift-off edge, and the region map bounded by the curves (region_map)."""
     stored = parts["curves"]
     slices = {Fstar: parts[f"slice_{Fstar:.4f}"] for Fstar in SLICES}
     large = parts["large"]
-    upper = upper_folds(paths.rundir("fig11/upper_folds"), stored["fold"],
-                        {Fstar: part["folds"] for Fstar, part in slices.items()})
     orbits = [(Fstar, slice_codes(stable_orbits(part["branches"]
                                                 + large.get(f"{Fstar:.4f}", []))))
               for Fstar, part in slices.items()]
     drawn = {kind: stored[kind] for kind in ("hopf", "fold", "zero")}
-    drawn["fold"] += [results.stored(d, ("V", "Fstar")) for d in upper]
+    drawn["fold"] += parts["upper_folds"]["curves"]
     drawn["torus"] = parts["torus"]["curves"]
     drawn["tongue"] = [curve for part in TONGUE_EDGES for curve in parts[part]["curves"]]
     pitchforks = stored["pitchfork"][1]
-    lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS])
+    lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS],
+                        [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
     edges = curve_list(drawn, pitchforks, lift)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
                               pitchforks, lift)
@@ -563,6 +605,10 @@ STYLES = {"hopf": ("k-", "Hopf (y_fp = 1 mm)"), "fold": ("b--", "fold of periodi
 
 
 def plot(result):
+    # matplotlib is loaded here only: each of the ~40 part jobs would spend
+    # 0.5 s loading it
+    import matplotlib.pyplot as plt
+    import plotting
     region = result["region_map"]
     found = numpy.asarray(region["code"])
     fig, ax = plt.subplots(figsize=(8, 6.5))

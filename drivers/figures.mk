@@ -18,14 +18,13 @@ result = $(RUN_ROOT)/$(1)/result.json
 
 # $(call cached_figure,<fig>,<more inputs>[,<driver>,<driver options>]): the
 # driver is drivers/<fig>.py unless named (fig12_v1: fig12, --strut-variant 1).
-# A figure whose driver lists independent parts (`drivers/<fig>.py parts`)
-# gets them as make jobs first (drivers/parts.mk), so that `make -jN` runs
-# them side by side.
+# A figure whose driver lists parts (`drivers/<fig>.py parts`) gets them as
+# make jobs first (drivers/parts.mk, with the rules the driver writes), so
+# that `make -jN` runs them side by side.
 define cached_figure
 $(call result,$(1)): drivers/$(or $(3),$(1)).py $(COMPUTE_INPUTS) $(2) | auto
-	$$(if $$(filter $(1),$$(FIGURES_WITH_PARTS)),$$(MAKE) --no-print-directory \
-	    -f drivers/parts.mk FIGURE=$(1) INPUTS="$$^" \
-	    PARTS="$$$$($$(PYTHON) drivers/$(1).py parts)")
+	$$(if $$(filter $(1),$$(FIGURES_WITH_PARTS)),$$(PYTHON) drivers/$(1).py rules && \
+	    $$(MAKE) --no-print-directory -f drivers/parts.mk FIGURE=$(1) INPUTS="$$^")
 	$$(PYTHON) drivers/$(or $(3),$(1)).py $(4) --compute
 .PHONY: $(1) $(1)-plot
 $(1): $(call result,$(1))

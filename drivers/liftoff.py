@@ -47,15 +47,17 @@ def lifts_off(csv, V, Fstar, yfp=1.0, eps_rel=0.1, t_end=T_END):
     return True
 
 
-def bisected(test, lo, hi, tol, what):
+def bisected(test, lo, hi, tol, what, checked=False):
     """The value between lo and hi (either order) nearest lo where test()
     starts to hold, bisected to tol (test must fail at lo and hold at hi),
-    or None if it fails at hi."""
-    if not test(hi):
-        return None
-    if test(lo):
-        raise ValueError(f"liftoff: a wheel lifts off already at {what} = {lo:g} "
-                         "(move the bracket)")
+    or None if it fails at hi.  checked: the caller has run test at both
+    ends already, with that outcome (they are not run again)."""
+    if not checked:
+        if not test(hi):
+            return None
+        if test(lo):
+            raise ValueError(f"liftoff: a wheel lifts off already at {what} = {lo:g} "
+                             "(move the bracket)")
     sign = 1.0 if hi >= lo else -1.0   # spectrum.bisect wants lo < hi
     return sign * spectrum.bisect(lambda x: not test(sign * x), sign * lo, sign * hi, tol=tol)
 
@@ -67,7 +69,7 @@ def edge_speed(csv, Fstar, lo, hi, tol=TOL_V, **options):
     return bisected(lambda V: lifts_off(csv, V, Fstar, **options), lo, hi, tol, "V")
 
 
-def edge_load(csv, V, lo, hi, tol=TOL_F, **options):
+def edge_load(csv, V, lo, hi, tol=TOL_F, checked=False, **options):
     """The load between lo (no lift-off) and hi (lift-off) where lift-off
-    starts at speed V, or None if none at hi."""
-    return bisected(lambda f: lifts_off(csv, V, f, **options), lo, hi, tol, "F*")
+    starts at speed V, or None if none at hi (checked: as for bisected)."""
+    return bisected(lambda f: lifts_off(csv, V, f, **options), lo, hi, tol, "F*", checked)

@@ -158,33 +158,74 @@ def loaded(records):
     return [Branch(r) for r in records]
 
 
+class Needs:
+    """A part that reads other parts: function(parts), run once the parts
+    named in `names` are cached (make runs it after them)."""
+
+    def __init__(self, names, function):
+        self.names, self.function = tuple(names), function
+
+
 class Parts:
-    """The independent jobs of a figure's compute step, {name: function},
-    each cached as a part (path(figure, name)) by `<fig>.py --part <name>`,
-    so that make (drivers/parts.mk), GNU parallel or a Slurm array can run
-    them side by side.  parts[name] is the cached part, computed here if it
-    is missing."""
+    """The jobs of a figure's compute step, {name: function or Needs}, each
+    cached as a part (path(figure, name)) by `<fig>.py --part <name>`, so
+    that make (drivers/parts.mk), GNU parallel or a Slurm array can run
+    them side by side: a part of stage 1 needs no other, one of stage k + 1
+    needs parts of stage k at most.  parts[name] is the cached part,
+    computed here if it is missing, except in a single part's run
+    (`--part`): that one refuses to compute another part, which a parallel
+    job may be writing."""
 
     def __init__(self, figure, jobs, parameter_set):
         self.figure, self.jobs, self.parameter_set = figure, jobs, parameter_set
+        self.computing_one = False
+        for name in jobs:
+            self.stage(name)   # every needed part exists, no cycle
 
-    def compute(self, name):
+    def stage(self, name, seen=()):
         if name not in self.jobs:
             raise ValueError(f"{self.figure}: no part named {name!r} "
                              f"(parts: {' '.join(self.jobs)})")
+        if name in seen:
+            raise ValueError(f"{self.figure}: part {name} needs itself")
+        job = self.jobs[name]
+        if not isinstance(job, Needs):
+            return 1
+        return 1 + max(self.stage(n, seen + (name,)) for n in job.names)
+
+    def of_stage(self, stage):
+        return [name for name in self.jobs if self.stage(name) == stage]
+
+    def compute(self, name):
+        self.stage(name)   # a part of this figure (the error names the parts)
+        job = self.jobs[name]
         started = time.monotonic()
-        write(self.figure, self.jobs[name](), self.parameter_set, part=name)
+        data = job.function(self) if isinstance(job, Needs) else job()
+        write(self.figure, data, self.parameter_set, part=name)
         print(f"{self.figure}: part {name} computed in {time.monotonic() - started:.0f} s",
               flush=True)
 
     def __getitem__(self, name):
         if not os.path.exists(path(self.figure, name)):
+            if self.computing_one:
+                raise MissingResult(f"{self.figure}: part {name} is not cached yet; run the "
+                                    f"parts of stage {self.stage(name)} first")
             self.compute(name)
         return read(self.figure, name)
 
     def all(self):
         """{name: data} of every part, in order."""
         return {name: self[name] for name in self.jobs}
+
+    def make_rules(self):
+        """drivers/parts.mk's rules: PARTS, and each part's needs as the
+        prerequisites of its file."""
+        def file(name):
+            return path(self.figure, name)
+        lines = [f"PARTS := {' '.join(self.jobs)}"]
+        lines += [f"{file(name)}: {' '.join(file(n) for n in job.names)}"
+                  for name, job in self.jobs.items() if isinstance(job, Needs)]
+        return "\n".join(lines) + "\n"
 
 
 def variant_option(figure, doc):
@@ -205,17 +246,23 @@ def run_figure(figure, compute, plot, parts=None, parameter_set="figures", argv=
     non-zero naming the figure (RunError and the model's errors are
     RuntimeError or ValueError).
 
-    With parts (a function returning {name: function}, see Parts), compute
-    gets the Parts and: `parts` lists their names, `jobs` prints one shell
-    command per part (for GNU parallel or a Slurm array; then --compute
-    assembles), `--part NAME` computes one, --compute uses those cached."""
+    With parts (a function returning {name: function or Needs}, see
+    Parts), compute gets the Parts and: `parts` lists their names, `rules`
+    writes drivers/parts.mk's rules to $MLG_RUN_ROOT/<fig>/parts.mk, `jobs
+    [--stage K]` prints one shell command per part of stage K (default 1;
+    for GNU parallel or a Slurm array, one stage after the other; then
+    --compute assembles), `--part NAME` computes one, --compute uses those
+    cached."""
     parser = argparse.ArgumentParser(description=f"{figure}: compute and cache, and/or plot")
-    parser.add_argument("command", nargs="?", choices=["parts", "jobs"] if parts else [],
-                        help="list the parts, or one shell command per part")
+    parser.add_argument("command", nargs="?", choices=["parts", "rules", "jobs"] if parts else [],
+                        help="list the parts, write their make rules, or print one shell "
+                             "command per part of a stage")
     parser.add_argument("--compute", action="store_true", help="only compute and cache")
     parser.add_argument("--plot", action="store_true", help="only redraw from the cache")
     if parts:
         parser.add_argument("--part", help="compute and cache one part")
+        parser.add_argument("--stage", type=int, default=1,
+                            help="the stage whose parts `jobs` prints (default 1)")
     args = parser.parse_args(argv)
     both = not (args.compute or args.plot or getattr(args, "part", None))
     try:
@@ -223,13 +270,24 @@ def run_figure(figure, compute, plot, parts=None, parameter_set="figures", argv=
         if args.command == "parts":
             print(" ".join(jobs.jobs))
             return
+        if args.command == "rules":
+            target = os.path.join(paths.RUN_ROOT, figure, "parts.mk")
+            os.makedirs(os.path.dirname(target), exist_ok=True)
+            with open(f"{target}.{os.getpid()}.part", "w") as out:
+                out.write(jobs.make_rules())
+            os.replace(f"{target}.{os.getpid()}.part", target)
+            return
         if args.command == "jobs":
-            for name in jobs.jobs:
+            if args.stage < 1:
+                raise ValueError(f"--stage {args.stage}: stages count from 1")
+            for name in jobs.of_stage(args.stage):
                 print(f"cd {shlex.quote(paths.ROOT)} && {shlex.quote(sys.executable)} "
                       f"drivers/{figure}.py --part {name}")
             return
         if getattr(args, "part", None):
+            jobs.computing_one = True
             jobs.compute(args.part)
+            jobs.computing_one = False
         if args.compute or both:
             if both and jobs:   # from scratch: no part of an earlier run is reused
                 shutil.rmtree(os.path.dirname(path(figure, "x")), ignore_errors=True)

@@ -95,10 +95,75 @@ def cache_round_trip():
                   "make fig99" in str(exc), str(exc))
 
 
+def parts_in_stages():
+    """Parts that need others: their stage, the make rules that run them
+    after what they need (drivers/parts.mk, dry run), a single part's run
+    that refuses to compute a part it needs, a cycle refused by name."""
+    import results
+    with tempfile.TemporaryDirectory() as tmp:
+        os.environ["MLG_RUN_ROOT"] = tmp
+        import paths
+        paths.RUN_ROOT = tmp
+        jobs = {"a": lambda: 1, "b": lambda: 2,
+                "sum": results.Needs(["a", "b"], lambda p: p["a"] + p["b"]),
+                "twice": results.Needs(["sum"], lambda p: 2 * p["sum"])}
+        parts = results.Parts("toy", jobs, "figures")
+        check("parts: stages 1, 1, 2, 3", [parts.stage(n) for n in jobs] == [1, 1, 2, 3],
+              str([parts.stage(n) for n in jobs]))
+        check("parts: stage 2 lists the part that needs stage 1 only", parts.of_stage(2) == ["sum"])
+        rules = os.path.join(tmp, "toy", "parts.mk")
+        os.makedirs(os.path.dirname(rules))
+        with open(rules, "w") as out:
+            out.write(parts.make_rules())
+        proc = subprocess.run(["make", "-n", "-j1", "-f", "drivers/parts.mk", "FIGURE=toy",
+                               f"MLG_RUN_ROOT={tmp}", "INPUTS="], cwd=os.path.dirname(HERE),
+                              capture_output=True, text=True)
+        order = re.findall(r"--part (\w+)", proc.stdout)
+        check("parts.mk: every part, each after the parts it needs (make -n)",
+              order == ["a", "b", "sum", "twice"], proc.stdout + proc.stderr)
+        parts.computing_one = True
+        try:
+            parts.compute("sum")
+            check("parts: a single part's run refuses to compute a part it needs", False)
+        except results.MissingResult as exc:
+            check("parts: a single part's run refuses to compute a part it needs, naming it",
+                  "part a is not cached" in str(exc) and "stage 1" in str(exc), str(exc))
+        parts.computing_one = False
+        parts.compute("twice")   # the serial assembly computes what is missing
+        check("parts: computed in order when assembling", results.read("toy", "twice") == 6)
+        try:
+            results.Parts("toy", {"x": results.Needs(["x"], lambda p: 0)}, "figures")
+            check("parts: a part that needs itself is refused", False)
+        except ValueError as exc:
+            check("parts: a part that needs itself is refused", "needs itself" in str(exc),
+                  str(exc))
+
+
+def auto_threads():
+    """AUTO's thread count comes from MLG_AUTO_THREADS (1 unless set), never
+    from an inherited OMP_NUM_THREADS; a bad value is refused by name."""
+    def threads(**env):
+        code = (f"import sys, os; sys.path.insert(0, {DRIVERS!r}); import autoglue; "
+                "print(os.environ['OMP_NUM_THREADS'])")
+        base = {k: v for k, v in os.environ.items() if k != "MLG_AUTO_THREADS"}
+        proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                              env=dict(base, MPLBACKEND="Agg", **env))
+        return (proc.stdout + proc.stderr).strip()
+    out = threads(OMP_NUM_THREADS="4")
+    check("AUTO threads: an inherited OMP_NUM_THREADS=4 is not used (1)", out == "1", out)
+    out = threads(OMP_NUM_THREADS="4", MLG_AUTO_THREADS="2")
+    check("AUTO threads: MLG_AUTO_THREADS=2 is used", out == "2", out)
+    out = threads(MLG_AUTO_THREADS="two")
+    check("AUTO threads: MLG_AUTO_THREADS=two is refused by name",
+          "MLG_AUTO_THREADS='two'" in out, out)
+
+
 def main():
     no_figure_imports_a_figure()
     layer_without_auto()
     cache_round_trip()
+    parts_in_stages()
+    auto_threads()
 
 
 if __name__ == "__main__":
