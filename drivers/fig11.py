@@ -130,13 +130,17 @@ def large_orbits(rundir, parameter_set="figures"):
 
 # the torus curve bounding the quasi-periodic region, continued from its
 # point on this load; the loads whose other torus points (narrow tongues of
-# instability below the curve, F* ~ 0.65-1.1) are marked; the tongue whose
-# edges are continued from its torus points on TONGUE_START ({part: index
-# of the crossing}: the window's two ends, 471.1 and 483.3 m/s)
+# instability below the curve, F* ~ 0.65-1.1) are marked; the tongue edges
+# continued, {part: (load, index of the crossing on it, NTST of the curve
+# or None: the orbit's 80)}: the two ends of the window at F* = 0.8125
+# (471.1, 483.3 m/s) and at 0.9375 (540.24, 542.28 m/s).  The pair at
+# 540.24 (theta = 0.17) is ill-conditioned (eigenvalue condition number
+# ~550, against ~140 at 542.28): the seeded first Newton solve fails on the
+# orbit's mesh and converges on a finer one (docs/reproduction.md).
 TORUS_START = 0.5625
 TORUS_POINT_LOADS = (0.6875, 0.8125, 0.9375)
-TONGUE_START = 0.8125
-TONGUE_EDGES = {"tongue": 0, "tongue2": 1}
+TONGUE_EDGES = {"tongue": (0.8125, 0, None), "tongue2": (0.8125, 1, None),
+                "tongue3": (0.9375, 0, 120), "tongue4": (0.9375, 1, None)}
 TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
 TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/s in V)
 
@@ -152,14 +156,14 @@ def large_crossings(rundir, loads, parameter_set="figures"):
             for Fstar, (orbits,) in found.items()}
 
 
-def first_torus_curve(rundir, name, found, index=0):
+def first_torus_curve(rundir, name, found, index=0, ntst=None):
     """A torus point of an orbit diagram in V (found: (diagram, crossings);
     the first, or crossings[index]) continued both ways by AUTO
-    (torus.tr_point, torus.torus_curve)."""
+    (torus.tr_point, torus.torus_curve; ntst: the curve's mesh)."""
     orbits, crossings = found
     tr = torus.tr_point(rundir, "tr", orbits, crossings[index]["value"],
                         crossings[index]["slope_per_unit"])
-    return torus.torus_curve(rundir, name, tr)
+    return torus.torus_curve(rundir, name, tr, ntst=ntst)
 
 
 def torus_curves(parameter_set="figures"):
@@ -182,11 +186,12 @@ def torus_curves(parameter_set="figures"):
 def tongue_curve(part, parameter_set="figures"):
     """A part: the torus curve of another Floquet pair, an edge of the
     tongue of instability left of the torus curve, continued from the torus
-    point TONGUE_EDGES[part] on TONGUE_START (large_crossings,
-    first_torus_curve): {"curves": [[stored branches]]}."""
+    point TONGUE_EDGES[part] (large_crossings, first_torus_curve):
+    {"curves": [[stored branches]]}."""
+    Fstar, index, ntst = TONGUE_EDGES[part]
     rundir = paths.rundir(f"fig11/{part}")
-    found = large_crossings(rundir, (TONGUE_START,), parameter_set)
-    curve = first_torus_curve(rundir, "tongue", found[TONGUE_START], TONGUE_EDGES[part])
+    found = large_crossings(rundir, (Fstar,), parameter_set)
+    curve = first_torus_curve(rundir, "tongue", found[Fstar], index, ntst)
     return {"curves": [[branch for run in curve for branch in results.stored(run, TORUS_COLUMNS)]]}
 
 
@@ -533,13 +538,25 @@ def parts():
     return jobs
 
 
-def mx_ends(drawn, tol=1e-3):
-    """(joins, open): the MX ends of the drawn curves, those where two curves
-    meet (distance in V/V_MAX and F*/F_MAX below tol: the Hopf curves from
-    H1 and H2 reach their common turning point from both sides, inside the
-    oleo stage switch, and AUTO stops there) as [{"V", "Fstar", "curves"}],
-    and the others [{"V", "Fstar", "curve"}]."""
-    ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "curve": f"{kind}{n + 1}"}
+# MX ends of two curves of one kind closer than this (in V/V_MAX and
+# F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
+# reach their common turning point inside the oleo stage switch from both
+# sides (3e-4 m/s apart); a tongue's two edges stop short of its tip, where
+# the Floquet pair touches the unit circle and leaves it no more (2.1 m/s
+# apart at F* = 0.863)
+JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
+JOIN_LABELS = {"hopf": "Hopf curves from H1 and H2 meet: turning point\n"
+                       "inside the oleo stage switch (AUTO stops both)",
+               "tongue": "a tongue's two edges meet: its tip, where the pair\n"
+                         "only touches |mu| = 1 (AUTO stops both)"}
+
+
+def mx_ends(drawn):
+    """(joins, open): the MX ends of the drawn curves, those where two
+    curves of one kind meet (JOIN_TOL) as [{"V", "Fstar", "kind",
+    "curves"}], and the others [{"V", "Fstar", "curve"}]."""
+    ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "kind": kind,
+             "curve": f"{kind}{n + 1}"}
             for kind in ("hopf", "fold", "torus", "tongue")
             for n, diagram in enumerate(drawn.get(kind, []))
             for branch in results.loaded(diagram)
@@ -548,12 +565,14 @@ def mx_ends(drawn, tol=1e-3):
     for a, p in enumerate(ends):
         for b in range(a + 1, len(ends)):
             q = ends[b]
-            if a not in used and b not in used and numpy.hypot(
-                    (p["V"] - q["V"]) / V_MAX, (p["Fstar"] - q["Fstar"]) / F_MAX) < tol:
+            if a not in used and b not in used and p["kind"] == q["kind"] in JOIN_TOL \
+                    and numpy.hypot((p["V"] - q["V"]) / V_MAX,
+                                    (p["Fstar"] - q["Fstar"]) / F_MAX) < JOIN_TOL[p["kind"]]:
                 used |= {a, b}
                 joins.append({"V": 0.5 * (p["V"] + q["V"]), "Fstar": 0.5 * (p["Fstar"] + q["Fstar"]),
-                              "curves": [p["curve"], q["curve"]]})
-    return joins, [e for k, e in enumerate(ends) if k not in used]
+                              "kind": p["kind"], "curves": [p["curve"], q["curve"]]})
+    return joins, [{k: e[k] for k in ("V", "Fstar", "curve")}
+                   for n, e in enumerate(ends) if n not in used]
 
 
 def compute(parts):
@@ -648,12 +667,13 @@ def plot(result):
         handles.append(plt.Line2D([], [], color="navy", marker="o", ms=3, label=(
             f"wheel lift-off within {result['liftoff']['t_end']:g} s from straight\n"
             "rolling (bisection in V and on V = 600 in F*)")))
-    for join in result["mx_joins"]:
-        ax.plot(join["V"], join["Fstar"], "ko", ms=4)
-    if result["mx_joins"]:
-        handles.append(plt.Line2D([], [], color="k", marker="o", ms=4, ls="",
-                                  label="Hopf curves from H1 and H2 meet: turning point\n"
-                                        "inside the oleo stage switch (AUTO stops both)"))
+    for kind, colour in (("hopf", "k"), ("tongue", "m")):
+        joins = [j for j in result["mx_joins"] if j["kind"] == kind]
+        for join in joins:
+            ax.plot(join["V"], join["Fstar"], "o", color=colour, ms=4)
+        if joins:
+            handles.append(plt.Line2D([], [], color=colour, marker="o", ms=4, ls="",
+                                      label=JOIN_LABELS[kind]))
     for stop in result["mx_stops"]:
         ax.plot(stop["V"], stop["Fstar"], "rx", ms=8)
     if result["mx_stops"]:

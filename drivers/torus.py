@@ -237,9 +237,10 @@ def seeded(start, angle, parameter_set="figures"):
     return start
 
 
-def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS):
+def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS, ntst=None):
     """The TR point continued in (V, F*) both ways, within CURVE_FSTAR and
-    V <= V_MAX: the runs (<name>_up, <name>_down).  AUTO's first ISW = 2
+    V <= V_MAX: the runs (<name>_up, <name>_down); ntst: their mesh, if not
+    the orbit's (a finer one: see fig11.TONGUE_EDGES).  AUTO's first ISW = 2
     run from a TR label only builds the extended system's data (its last
     point, EP, or MX where its degenerate Newton solve fails: the orbit is
     kept, the eigenfunction is replaced); the curve is continued from there
@@ -250,9 +251,10 @@ def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS):
                    DS=0.001, DSMAX=0.01, NMX=2, allow_mx=True)
     seed = seeded(first()[-1], tr.PAR["PAR(12)"], parameter_set)
     stop = {"Fstar": list(CURVE_FSTAR), "V": [0.5, V_MAX]}
+    mesh = {"NTST": ntst} if ntst else {}
     return tuple(ct.run(rundir, f"{name}_{part}", "periodic", data=seed, ISW=2, ICP=TORUS_ICP,
                         DS=sign * 0.05, DSMAX=5.0, NMX=steps, UZSTOP=stop, allow_mx=True,
-                        time_limit=CURVE_TIME_LIMIT)
+                        time_limit=CURVE_TIME_LIMIT, **mesh)
                  for sign, part in ((1, "up"), (-1, "down")))
 
 

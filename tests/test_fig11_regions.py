@@ -1,6 +1,7 @@
 """Fig. 11's region helpers on synthetic input (no AUTO run): where a
-torus curve crosses a slice load, the pairing of MX ends where two Hopf curves meet,
-and the region map's codes around one curve (a tongue edge left out)."""
+torus curve crosses a slice load, the pairing of MX ends where two Hopf
+curves or two tongue edges meet, and the region map's codes around one
+curve (a tongue edge left out)."""
 import os
 import sys
 
@@ -56,6 +57,19 @@ def main():
           and joins[0]["curves"] == ["hopf1", "hopf2"], joins)
     check_close("the join lies half way", joins[0]["V"], 7.32385, abs=1e-9)
     check("a lone MX end stays a stop", len(stops) == 1 and stops[0]["curve"] == "hopf3", stops)
+    # a tongue's edges stop 2.1 m/s short of each other at its tip (fig11.JOIN_TOL):
+    # joined there; Hopf ends as far apart, or a Hopf end and a tongue end, are not
+    drawn = {"hopf": [[branch([400.0, 512.9], [0.8, 0.8629], True)],
+                      [branch([600.0, 515.0], [0.9, 0.8635], True)]],
+             "tongue": [[branch([470.0, 512.9], [0.8, 0.8629], True)],
+                        [branch([483.0, 515.0], [0.8, 0.8635], True)],
+                        [branch([480.0, 371.8], [0.8, 0.712], True)]]}
+    joins, stops = fig11.mx_ends(drawn)
+    check("two tongue edges' MX ends 2.1 m/s apart are one join (its tip)", len(joins) == 1
+          and joins[0]["curves"] == ["tongue1", "tongue2"] and joins[0]["kind"] == "tongue",
+          joins)
+    check("Hopf ends 2.1 m/s apart, and a Hopf end on a tongue end, stay stops",
+          sorted(s["curve"] for s in stops) == ["hopf1", "hopf2", "tongue3"], stops)
 
     # one vertical curve at 300 m/s; the slices find the high orbit right of it
     sr = np.zeros((len(fig11.F_GRID), len(V)), dtype=bool)
