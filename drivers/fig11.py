@@ -5,8 +5,9 @@ attractors that coexist there.
 
 The curves are AUTO continuations started from the Fig. 10 special points
 (F* = 1), the torus curve of the large-amplitude orbits (AUTO, from a
-torus point at F* = 0.5625) and the edges of a tongue of instability left
-of it (another Floquet pair, from F* = 0.8125; they bound no region).  The
+torus point at F* = 0.5625) and the edges of two tongues of instability
+left of it (other Floquet pairs, from F* = 0.8125 and 0.9375; they bound no
+region).  The
 regions are bounded by those curves and by the edges of the straight-rolling stability grid (exact Jacobian
 eigenvalues); they are labelled, not bounded, by the stable low- (< 8 Hz) and high-frequency orbits
 of one-parameter diagrams in V (continuation.speed_diagram and the
