@@ -523,9 +523,9 @@ def parts():
     speeds: independent jobs, the longest first (so that the last jobs
     under make -jN are short); then the upper fold curves (from the slices'
     folds) and the lift-off edge's ends (from the speeds)."""
-    jobs = {"large": large_family, "tongue": lambda: tongue_curve("tongue"),
-            "torus": torus_curves, "tongue2": lambda: tongue_curve("tongue2"),
-            "curves": stored_curves}
+    jobs = {"large": large_family, "torus": torus_curves}
+    jobs.update({part: lambda part=part: tongue_curve(part) for part in TONGUE_EDGES})
+    jobs["curves"] = stored_curves
     liftoff_parts = [f"liftoff_{Fstar:.2f}" for Fstar in LIFTOFF_LOADS]
     jobs.update({part: lambda Fstar=Fstar: liftoff_speed(Fstar)
                  for part, Fstar in zip(liftoff_parts, LIFTOFF_LOADS)})

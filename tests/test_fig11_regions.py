@@ -122,6 +122,8 @@ def main():
           and fig11.ATTRACTORS["liftoff"] == atlas_compare.CODES["domain"]
           and "lift-off" in fig11.NAMES[fig11.ATTRACTORS["liftoff"]],
           (fig11.ATTRACTORS, atlas_compare.CODES))
+    missing = set(fig11.TONGUE_EDGES) - set(fig11.parts())
+    check("every tongue edge that compute draws is a part make runs", not missing, missing)
 
 
 main()
