@@ -132,16 +132,17 @@ def large_orbits(rundir, parameter_set="figures"):
 # the torus curve bounding the quasi-periodic region, continued from its
 # point on this load; the loads whose other torus points (narrow tongues of
 # instability below the curve, F* ~ 0.65-1.1) are marked; the tongue edges
-# continued, {part: (load, index of the crossing on it, NTST of the curve
-# or None: the orbit's 80)}: the two ends of the window at F* = 0.8125
-# (471.1, 483.3 m/s) and at 0.9375 (540.24, 542.28 m/s).  The pair at
-# 540.24 (theta = 0.17) is ill-conditioned (eigenvalue condition number
-# ~550, against ~140 at 542.28): the seeded first Newton solve fails on the
-# orbit's mesh and converges on a finer one (docs/reproduction.md).
+# continued, {part: (load, index of the crossing on it, torus_curve's
+# options)}: the two ends of the window at F* = 0.8125 (471.1, 483.3 m/s)
+# and at 0.9375 (540.24, 542.28 m/s).  The first edge needs 300 steps down
+# to where it meets the second (docs/reproduction.md).  The pair at 540.24
+# (theta = 0.17) is ill-conditioned (eigenvalue condition number ~550,
+# against ~140 at 542.28): the seeded first Newton solve fails on the
+# orbit's mesh (NTST 80) and converges on a finer one.
 TORUS_START = 0.5625
 TORUS_POINT_LOADS = (0.6875, 0.8125, 0.9375)
-TONGUE_EDGES = {"tongue": (0.8125, 0, None), "tongue2": (0.8125, 1, None),
-                "tongue3": (0.9375, 0, 120), "tongue4": (0.9375, 1, None)}
+TONGUE_EDGES = {"tongue": (0.8125, 0, {"steps": 300}), "tongue2": (0.8125, 1, {}),
+                "tongue3": (0.9375, 0, {"ntst": 120}), "tongue4": (0.9375, 1, {})}
 TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
 TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/s in V)
 
@@ -157,14 +158,14 @@ def large_crossings(rundir, loads, parameter_set="figures"):
             for Fstar, (orbits,) in found.items()}
 
 
-def first_torus_curve(rundir, name, found, index=0, ntst=None):
+def first_torus_curve(rundir, name, found, index=0, **options):
     """A torus point of an orbit diagram in V (found: (diagram, crossings);
     the first, or crossings[index]) continued both ways by AUTO
-    (torus.tr_point, torus.torus_curve; ntst: the curve's mesh)."""
+    (torus.tr_point, torus.torus_curve with its options: steps, ntst)."""
     orbits, crossings = found
     tr = torus.tr_point(rundir, "tr", orbits, crossings[index]["value"],
                         crossings[index]["slope_per_unit"])
-    return torus.torus_curve(rundir, name, tr, ntst=ntst)
+    return torus.torus_curve(rundir, name, tr, **options)
 
 
 def torus_curves(parameter_set="figures"):
@@ -189,10 +190,10 @@ def tongue_curve(part, parameter_set="figures"):
     tongue of instability left of the torus curve, continued from the torus
     point TONGUE_EDGES[part] (large_crossings, first_torus_curve):
     {"curves": [[stored branches]]}."""
-    Fstar, index, ntst = TONGUE_EDGES[part]
+    Fstar, index, options = TONGUE_EDGES[part]
     rundir = paths.rundir(f"fig11/{part}")
     found = large_crossings(rundir, (Fstar,), parameter_set)
-    curve = first_torus_curve(rundir, "tongue", found[Fstar], index, ntst)
+    curve = first_torus_curve(rundir, "tongue", found[Fstar], index, **options)
     return {"curves": [[branch for run in curve for branch in results.stored(run, TORUS_COLUMNS)]]}
 
 
@@ -542,14 +543,13 @@ def parts():
 # MX ends of two curves of one kind closer than this (in V/V_MAX and
 # F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
 # reach their common turning point inside the oleo stage switch from both
-# sides (3e-4 m/s apart); a tongue's two edges stop short of its tip, where
-# the Floquet pair touches the unit circle and leaves it no more (2.1 m/s
-# apart at F* = 0.863)
+# sides (3e-4 m/s apart); a tongue's two edges stop short of where they
+# meet (2.1 m/s apart at F* = 0.863)
 JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
 JOIN_LABELS = {"hopf": "Hopf curves from H1 and H2 meet: turning point\n"
                        "inside the oleo stage switch (AUTO stops both)",
-               "tongue": "a tongue's two edges meet: its tip, where the pair\n"
-                         "only touches |mu| = 1 (AUTO stops both)"}
+               "tongue": "a tongue's two edges meet: its tip\n"
+                         "(AUTO stops both there)"}
 
 
 def mx_ends(drawn):
