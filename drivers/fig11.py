@@ -96,37 +96,47 @@ def large_seed(rundir, parameter_set="figures"):
     return ct.periodic_from(rundir, "large_seed", point, stop={"V": [V_MIN, 300.0]})
 
 
-def large_diagrams(rundir, loads, family_runs, orbit_runs, family_stop, parameter_set="figures",
-                   **options):
-    """{load: [orbit diagrams in V]} of the large-amplitude shimmy family.
+def large_orbits(rundir, parameter_set="figures"):
+    """{slice load: orbit diagrams in V} of the large-amplitude shimmy family.
     Away from F* = 1 it need not be connected to a Hopf point of straight
     rolling inside V <= 600, so it is followed from its stable orbit at
-    F* = 1, V = 300 m/s (large_seed): continued in F* (a run per {name:
-    sign of DS} of family_runs, within family_stop) to every load, then in
-    V (a run per {name: sign of DS} of orbit_runs(load)) within V_MIN-V_MAX.
-    options (allow_mx) go to every run."""
+    F* = 1, V = 300 m/s (large_seed): continued both ways in F* to every
+    slice load, then both ways in V (large_run)."""
     seed = large_seed(rundir, parameter_set)
     out = {}
-    for family_name, sign in family_runs.items():
-        family = ct.periodic_from(rundir, family_name, seed("UZ1"), "Fstar",
-                                  stop={"Fstar": family_stop}, UZR={"Fstar": list(loads)},
-                                  DS=0.02 * sign, DSMAX=0.1, **options)
+    for sign in (1, -1):
+        family = ct.periodic_from(rundir, f"large_F{'+-'[sign < 0]}", seed("UZ1"), "Fstar",
+                                  stop={"Fstar": [F_MIN, F_MAX]}, UZR={"Fstar": list(SLICES)},
+                                  DS=0.02 * sign, DSMAX=0.1, allow_mx=True)
         for start in family("UZ"):
-            Fstar = min(loads, key=lambda f: abs(f - start["Fstar"]))
+            Fstar = min(SLICES, key=lambda f: abs(f - start["Fstar"]))
             if abs(Fstar - start["Fstar"]) > 1e-4 or Fstar in out:
                 continue
-            out[Fstar] = [ct.periodic_from(rundir, name, start, stop={"V": [V_MIN, V_MAX]},
-                                           DS=2.0 * d, DSMAX=5.0, **options)
-                          for name, d in orbit_runs(Fstar).items()]
+            out[Fstar] = [ct.periodic_from(rundir, large_run(Fstar, d), start,
+                                           stop={"V": [V_MIN, V_MAX]}, DS=2.0 * d, DSMAX=5.0,
+                                           allow_mx=True) for d in (1, -1)]
     return out
 
 
-def large_orbits(rundir, parameter_set="figures"):
-    """{slice load: orbit diagrams in V both ways} of the large-amplitude
-    family (large_diagrams, from both sides of F* = 1)."""
-    return large_diagrams(rundir, SLICES, {"large_F+": 1, "large_F-": -1},
-                          lambda f: {f"large_{f:.3f}+": 1, f"large_{f:.3f}-": -1},
-                          [F_MIN, F_MAX], parameter_set, allow_mx=True)
+def large_run(Fstar, direction):
+    """The name of the large part's diagram in V at a slice load, upwards
+    (direction 1) or downwards (-1)."""
+    return f"large_{Fstar:.3f}{'+-'[direction < 0]}"
+
+
+def large_upwards(Fstar):
+    """(diagram, torus crossings) of the large part's diagram in V upwards
+    at a slice load (it must reach V_MAX); its torus points are the
+    crossings of a Floquet pair through |mu| = 1 (floquet.torus_crossings)."""
+    if Fstar not in SLICES:
+        raise ValueError(f"fig11: F* = {Fstar} is no slice load: the large part has no "
+                         "diagram in V there")
+    rundir, name = paths.rundir("fig11/large"), large_run(Fstar, 1)
+    orbits = ct.load(rundir, name)
+    if abs(orbits()[-1]["V"] - V_MAX) > 1e-3:   # AUTO's UZ stop: V_MAX to its tolerance
+        raise autoglue.RunError(f"run {name} in {rundir} stops at V = {orbits()[-1]['V']:.6g}, "
+                                f"not V = {V_MAX:g}: its torus points are not all found")
+    return orbits, torus.crossings(rundir, name)
 
 
 # the torus curve bounding the quasi-periodic region, continued from its
@@ -147,17 +157,6 @@ TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
 TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/s in V)
 
 
-def large_crossings(rundir, loads, parameter_set="figures"):
-    """{load: (orbit diagram in V, its torus crossings)}: the large-amplitude
-    family followed down in F* to each load, then up in V (large_diagrams);
-    its torus points are the crossings of a Floquet pair through |mu| = 1
-    (floquet.torus_crossings)."""
-    found = large_diagrams(rundir, loads, {"family": -1}, lambda f: {f"po_{f:.4f}": 1},
-                           [min(loads) - 0.01, F_MAX], parameter_set)
-    return {Fstar: (orbits, torus.crossings(rundir, f"po_{Fstar:.4f}"))
-            for Fstar, (orbits,) in found.items()}
-
-
 def first_torus_curve(rundir, name, found, index=0, **options):
     """A torus point of an orbit diagram in V (found: (diagram, crossings);
     the first, or crossings[index]) continued both ways by AUTO
@@ -168,15 +167,15 @@ def first_torus_curve(rundir, name, found, index=0, **options):
     return torus.torus_curve(rundir, name, tr, **options)
 
 
-def torus_curves(parameter_set="figures"):
-    """The torus (Neimark-Sacker) curve of the large-amplitude family in
-    (V, F*) and the torus points off it: {"curves": [[stored branches]],
-    "points": [{"V", "Fstar", "angle", "direction"}]}: the curve from the
-    first torus point on TORUS_START, the points of the TORUS_POINT_LOADS
-    that it does not pass through (large_crossings)."""
-    rundir = paths.rundir("fig11/torus")
-    found = large_crossings(rundir, (TORUS_START,) + TORUS_POINT_LOADS, parameter_set)
-    curve = first_torus_curve(rundir, "torus", found[TORUS_START])
+def torus_curves():
+    """A part, after the large part: the torus (Neimark-Sacker) curve of the
+    large-amplitude family in (V, F*) and the torus points off it:
+    {"curves": [[stored branches]], "points": [{"V", "Fstar", "angle",
+    "direction"}]}: the curve from the first torus point on TORUS_START,
+    the points of the TORUS_POINT_LOADS that it does not pass through (the
+    large part's diagrams in V, large_upwards)."""
+    found = {Fstar: large_upwards(Fstar) for Fstar in (TORUS_START,) + TORUS_POINT_LOADS}
+    curve = first_torus_curve(paths.rundir("fig11/torus"), "torus", found[TORUS_START])
     points = [{"V": c["value"], "Fstar": Fstar, "angle": c["angle"],
                "direction": c["direction"]}
               for Fstar in TORUS_POINT_LOADS for c in found[Fstar][1]
@@ -185,15 +184,15 @@ def torus_curves(parameter_set="figures"):
             "points": points}
 
 
-def tongue_curve(part, parameter_set="figures"):
-    """A part: the torus curve of another Floquet pair, an edge of the
-    tongue of instability left of the torus curve, continued from the torus
-    point TONGUE_EDGES[part] (large_crossings, first_torus_curve):
+def tongue_curve(part):
+    """A part, after the large part: the torus curve of another Floquet
+    pair, an edge of a tongue of instability left of the torus curve,
+    continued from the torus point TONGUE_EDGES[part] of the large part's
+    diagram in V on that load (large_upwards, first_torus_curve):
     {"curves": [[stored branches]]}."""
     Fstar, index, options = TONGUE_EDGES[part]
-    rundir = paths.rundir(f"fig11/{part}")
-    found = large_crossings(rundir, (Fstar,), parameter_set)
-    curve = first_torus_curve(rundir, "tongue", found[Fstar], index, **options)
+    curve = first_torus_curve(paths.rundir(f"fig11/{part}"), "tongue", large_upwards(Fstar),
+                              index, **options)
     return {"curves": [[branch for run in curve for branch in results.stored(run, TORUS_COLUMNS)]]}
 
 
@@ -519,13 +518,16 @@ def upper_fold_curves(parts):
 
 
 def parts():
-    """The curves from F* = 1, the large-amplitude family, the torus curves,
-    the eigenvalue grid, one diagram in V per slice load and the lift-off
-    speeds: independent jobs, the longest first (so that the last jobs
-    under make -jN are short); then the upper fold curves (from the slices'
-    folds) and the lift-off edge's ends (from the speeds)."""
-    jobs = {"large": large_family, "torus": torus_curves}
-    jobs.update({part: lambda part=part: tongue_curve(part) for part in TONGUE_EDGES})
+    """The large-amplitude family, the curves from F* = 1, the lift-off
+    speeds, the eigenvalue grid and one diagram in V per slice load:
+    independent jobs, about the longest first (so that the last jobs under
+    make -jN are short); the torus curve and the tongue edges after the
+    large part (from its diagrams in V), the upper fold curves after the
+    slices (from their folds) and the lift-off edge's ends after the
+    speeds."""
+    jobs = {"large": large_family, "torus": results.Needs(["large"], lambda _: torus_curves())}
+    jobs.update({part: results.Needs(["large"], lambda _, part=part: tongue_curve(part))
+                 for part in TONGUE_EDGES})
     jobs["curves"] = stored_curves
     liftoff_parts = [f"liftoff_{Fstar:.2f}" for Fstar in LIFTOFF_LOADS]
     jobs.update({part: lambda Fstar=Fstar: liftoff_speed(Fstar)
@@ -544,7 +546,7 @@ def parts():
 # F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
 # reach their common turning point inside the oleo stage switch from both
 # sides (3e-4 m/s apart); a tongue's two edges stop short of where they
-# meet (2.1 m/s apart at F* = 0.863)
+# meet (2.5 m/s apart at F* = 0.863)
 JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
 JOIN_LABELS = {"hopf": "Hopf curves from H1 and H2 meet: turning point\n"
                        "inside the oleo stage switch (AUTO stops both)",

@@ -60,6 +60,10 @@ WINDOW_RTOL = 1e-10    # CVODE rtol of the window simulations (atol 1e-2 of it):
 CURVE_FSTAR = (0.02, 3.5)
 CURVE_STEPS = 150      # AUTO steps of a torus curve each way
 CURVE_TIME_LIMIT = 120  # s of CPU per direction (the main curve of Fig. 11: ~25 s each)
+# least step of a torus curve: where a tongue's edges stop (MX), AUTO halves
+# the step down to it, each try a failed Newton solve on the 3 x 10-dimensional
+# system (~0.7 s); on Fig. 11's curves no step below 1e-3 ever converged
+CURVE_DSMIN = 5e-4
 
 
 def orbit_branch(rundir, name, values, mesh, dsmax):
@@ -253,7 +257,8 @@ def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS, nt
     stop = {"Fstar": list(CURVE_FSTAR), "V": [0.5, V_MAX]}
     mesh = {"NTST": ntst} if ntst else {}
     return tuple(ct.run(rundir, f"{name}_{part}", "periodic", data=seed, ISW=2, ICP=TORUS_ICP,
-                        DS=sign * 0.05, DSMAX=5.0, NMX=steps, UZSTOP=stop, allow_mx=True,
+                        DS=sign * 0.05, DSMIN=CURVE_DSMIN, DSMAX=5.0, NMX=steps, UZSTOP=stop,
+                        allow_mx=True,
                         time_limit=CURVE_TIME_LIMIT, **mesh)
                  for sign, part in ((1, "up"), (-1, "down")))
 
