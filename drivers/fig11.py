@@ -24,7 +24,6 @@ import branches
 import continuation as ct
 import liftoff
 import paths
-import regionmap
 import results
 import spectrum
 import torus
@@ -439,6 +438,7 @@ def region_map(sr_stable, orbits, edge_curves, pitchforks, lift=None):
     [(slice load, its orbit bits along V_GRID)].  Right of the lift-off
     edge (lift, liftoff_edge) the samples of the slices and of the edge's
     loads say lift-off: the shimmy there grows until a wheel lifts off."""
+    import regionmap   # loads scipy.ndimage (0.1-0.2 s): not in every part job
     samples = numpy.full(sr_stable.shape, -1, dtype=int)
     for Fstar, row in orbits:
         samples[slice_row(Fstar)] = numpy.where(
