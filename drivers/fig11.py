@@ -47,7 +47,7 @@ V_SCAN = numpy.linspace(V_MIN, V_MAX, 3000)
 # The lift-off edge: bisected in V on these loads (from a speed without
 # lift-off within liftoff.T_END up to V_MAX), its ends in F* on V = V_MAX.
 LIFTOFF_LOADS = numpy.round(numpy.arange(0.1, 0.71, 0.1), 2)
-LIFTOFF_FROM = 500.0   # m/s: the bisection's lower end (checked: no lift-off there)
+LIFTOFF_FROM = 500.0   # m/s: the bisection's lower end (no lift-off there; liftoff.bisected)
 
 
 def curves(rundir, parameter_set="figures"):

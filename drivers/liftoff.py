@@ -50,16 +50,20 @@ def lifts_off(csv, V, Fstar, yfp=1.0, eps_rel=0.1, t_end=T_END):
 def bisected(test, lo, hi, tol, what, checked=False):
     """The value between lo and hi (either order) nearest lo where test()
     starts to hold, bisected to tol (test must fail at lo and hold at hi),
-    or None if it fails at hi.  checked: the caller has run test at both
-    ends already, with that outcome (they are not run again)."""
-    if not checked:
-        if not test(hi):
-            return None
-        if test(lo):
-            raise ValueError(f"liftoff: a wheel lifts off already at {what} = {lo:g} "
-                             "(move the bracket)")
+    or None if it fails at hi.  lo is run only when the value comes out
+    within tol of it: were test to hold there, every step would have moved
+    towards lo (one full run saved per edge point; a test that holds at lo
+    and fails above it is not seen: the bisection finds one crossing).
+    checked: the caller has run test at both ends already, with that
+    outcome (they are not run again)."""
+    if not checked and not test(hi):
+        return None
     sign = 1.0 if hi >= lo else -1.0   # spectrum.bisect wants lo < hi
-    return sign * spectrum.bisect(lambda x: not test(sign * x), sign * lo, sign * hi, tol=tol)
+    found = sign * spectrum.bisect(lambda x: not test(sign * x), sign * lo, sign * hi, tol=tol)
+    if not checked and abs(found - lo) <= tol and test(lo):
+        raise ValueError(f"liftoff: a wheel lifts off already at {what} = {lo:g} "
+                         "(move the bracket)")
+    return found
 
 
 def edge_speed(csv, Fstar, lo, hi, tol=TOL_V, **options):

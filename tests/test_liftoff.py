@@ -39,6 +39,11 @@ def main():
     check("bracket checked by the caller: its ends are not run again, the step is found",
           450.0 not in tried and 600.0 not in tried and abs(found - 573.3) <= 1.0, tried)
     check("bracket checked: 7 halvings from 150 to 2 m/s, one run each", len(tried) == 7, tried)
+    tried = []
+    liftoff.bisected(lambda x: tried.append(x) or x >= 573.3, 450.0, 600.0, 2.0, "V")
+    check("bracket not checked: the top end and the halvings are run, not the bottom end "
+          "(the edge lies far from it)", tried[0] == 600.0 and 450.0 not in tried
+          and len(tried) == 8, tried)
     message = raises(ValueError, lambda: liftoff.bisected(step(400.0), 450.0, 600.0, 2.0, "V"))
     check("lift-off already at the bottom of the bracket is an error naming it",
           message is not None and "V = 450" in message, message)
