@@ -178,7 +178,7 @@ class Parts:
 
     def __init__(self, figure, jobs, parameter_set):
         self.figure, self.jobs, self.parameter_set = figure, jobs, parameter_set
-        self.computing_one = False
+        self.alone = False   # in compute(name, alone=True): no other part is computed
         for name in jobs:
             self.stage(name)   # every needed part exists, no cycle
 
@@ -196,18 +196,24 @@ class Parts:
     def of_stage(self, stage):
         return [name for name in self.jobs if self.stage(name) == stage]
 
-    def compute(self, name):
+    def compute(self, name, alone=False):
+        """Compute and cache one part; alone: a missing part it needs is an
+        error (a parallel job may be writing it), not computed here."""
         self.stage(name)   # a part of this figure (the error names the parts)
         job = self.jobs[name]
         started = time.monotonic()
-        data = job.function(self) if isinstance(job, Needs) else job()
+        self.alone = alone
+        try:
+            data = job.function(self) if isinstance(job, Needs) else job()
+        finally:
+            self.alone = False
         write(self.figure, data, self.parameter_set, part=name)
         print(f"{self.figure}: part {name} computed in {time.monotonic() - started:.0f} s",
               flush=True)
 
     def __getitem__(self, name):
         if not os.path.exists(path(self.figure, name)):
-            if self.computing_one:
+            if self.alone:
                 raise MissingResult(f"{self.figure}: part {name} is not cached yet; run the "
                                     f"parts of stage {self.stage(name)} first")
             self.compute(name)
@@ -285,9 +291,7 @@ def run_figure(figure, compute, plot, parts=None, parameter_set="figures", argv=
                       f"drivers/{figure}.py --part {name}")
             return
         if getattr(args, "part", None):
-            jobs.computing_one = True
-            jobs.compute(args.part)
-            jobs.computing_one = False
+            jobs.compute(args.part, alone=True)
         if args.compute or both:
             if both and jobs:   # from scratch: no part of an earlier run is reused
                 shutil.rmtree(os.path.dirname(path(figure, "x")), ignore_errors=True)
