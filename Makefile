@@ -9,10 +9,8 @@
 #   make clean     remove build/
 #
 # Variables other makefiles (c/c.mk, ...) append to:
-#   TEST_PROGRAMS   test programs run by `make test`: C executables (give the
-#                   build rule) or Python scripts tests/test_*.py. Each prints
-#                   `ok <name>` / `not ok <name> - <detail>` lines.
-#   TEST_DEPS       other files the tests need built first (e.g. model .exe)
+#   TEST_DEPS       files the tests need built first (C test programs, the
+#                   model .exe); the tests themselves are pytest's tests/test_*.py
 #   FIGURES         make targets (e.g. fig05) built by `make figures`
 #   BENCH_PROGRAMS  programs run by `make bench` (executables or .py scripts)
 #   BENCH_DEPS      other files the benchmarks need built first
@@ -26,28 +24,30 @@
 #   PYTHON          interpreter with numpy and matplotlib (/usr/bin/python3)
 #   AUTO_THREADS    OpenMP threads of each AUTO run (1; an OMP_NUM_THREADS in
 #                   the environment is not used: results depend on it)
-#   TEST_TIMEOUT    seconds per test program (600)
+#   PYTEST_ARGS     extra pytest options for `make test` (e.g. -k jacobian)
 #
 # Useful for rules in included makefiles: $(AUTO_DIR), $(PYTHON), `| auto`
 # (AUTO-07p is ready) and $(call auto_equations,...) from mk/auto.mk.
 
 SHELL := /bin/bash
 PYTHON ?= /usr/bin/python3
+# a recipe that fails leaves no target behind that looks done
+.DELETE_ON_ERROR:
+shell_quote = '$(subst ','\'',$(1))'
 AUTO_THREADS ?= 1
-ifeq ($(shell [[ "$(AUTO_THREADS)" =~ ^[1-9][0-9]*$$ ]] && echo ok),)
+ifeq ($(shell [[ $(call shell_quote,$(AUTO_THREADS)) =~ ^[1-9][0-9]*$$ ]] && echo ok),)
 $(error AUTO_THREADS=$(AUTO_THREADS) must be a whole number >= 1 (threads of each AUTO run))
 endif
-TEST_TIMEOUT ?= 600
+PYTEST_ARGS ?=
 export PYTHON
 export MLG_AUTO_THREADS := $(AUTO_THREADS)
 export MPLBACKEND := Agg
 export SOURCE_DATE_EPOCH := 0
 
 PACKAGES := gcc gfortran make liblapack-dev python3-numpy python3-matplotlib \
-            libsundials-dev dpkg-dev
+            python3-scipy python3-pytest libsundials-dev dpkg-dev
 PACKAGES_STAMP := build/.stamp-packages
 
-TEST_PROGRAMS :=
 TEST_DEPS :=
 FIGURES :=
 BENCH_PROGRAMS :=
@@ -58,16 +58,15 @@ REGRESS_QUICK :=
 .PHONY: all setup packages auto test figures bench clean
 all: test
 
+include mk/python.mk
 include mk/auto.mk
--include c/c.mk
--include c/simulate/simulate.mk
--include models/models.mk
--include drivers/jobs.mk
--include drivers/figures.mk
--include drivers/magnitude.mk
--include drivers/criterion.mk
--include drivers/atlas.mk
--include drivers/torus.mk
+include c/c.mk
+include c/simulate/simulate.mk
+include models/models.mk
+include mk/jobs.mk
+include mk/figures.mk
+include mk/magnitude.mk
+include mk/studies.mk
 -include tests/regression/regression.mk
 
 setup: packages auto
@@ -80,7 +79,7 @@ $(PACKAGES_STAMP): mk/install-packages.sh
 	touch $@
 
 # Smoke test of the chain: a C model linked with a static library, compiled
-# by our rules, run by AUTO from drivers/autoglue.py.
+# by our rules, run by AUTO from mlgshimmy.shared.autoglue.
 SMOKE := build/tests/smoke/smoke
 build/tests/smoke/libshift.a: tests/smoke/shift.c tests/smoke/shift.h | packages
 	@mkdir -p $(@D)
@@ -88,10 +87,11 @@ build/tests/smoke/libshift.a: tests/smoke/shift.c tests/smoke/shift.h | packages
 	ar rcs $@ $(@D)/shift.o
 $(eval $(call auto_equations,$(SMOKE),tests/smoke/smoke.c,build/tests/smoke/libshift.a,-Itests/smoke))
 TEST_DEPS += $(SMOKE).exe
-TEST_PROGRAMS += tests/test_smoke_auto.py
 
-test: setup $(TEST_DEPS) $(TEST_PROGRAMS)
-	$(PYTHON) tests/run_tests.py --timeout $(TEST_TIMEOUT) $(TEST_PROGRAMS)
+# Every test, Python and C (tests/test_c_programs.py runs the C programs),
+# on pytest: `make test PYTEST_ARGS='-k jacobian'` selects by name.
+test: setup $(TEST_DEPS)
+	$(PYTHON) -m pytest $(PYTEST_ARGS)
 
 figures: setup $(FIGURES)
 	@if [ -z "$(strip $(FIGURES))" ]; then \

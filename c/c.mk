@@ -41,7 +41,7 @@ $(MLG_TESTS): build/tests/%: tests/c/%.c tests/c/unit.h tests/c/near_equilibrium
 	@mkdir -p $(@D)
 	$(CC) $(MLG_CFLAGS) -Itests/c $< $(MLG_LIB) -llapack -lm -o $@
 
-TEST_PROGRAMS += $(MLG_TESTS)
+TEST_DEPS += $(MLG_TESTS)
 
 MLG_BENCH := build/bench/bench_vector_field
 $(MLG_BENCH): tests/bench/bench_vector_field.c $(MLG_LIB)
@@ -50,7 +50,7 @@ $(MLG_BENCH): tests/bench/bench_vector_field.c $(MLG_LIB)
 
 BENCH_PROGRAMS += $(MLG_BENCH)
 
-# Shared library for the Python drivers (drivers/mlgmodel.py, via ctypes).
+# Shared library for the Python drivers (mlgshimmy.shared.mlgmodel, via ctypes).
 MLG_SHARED := build/lib/libmlg.so
 $(MLG_SHARED): $(MLG_OBJECTS)
 	@mkdir -p $(@D)

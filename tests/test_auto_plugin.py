@@ -13,13 +13,13 @@ import textwrap
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
-import autoglue  # noqa: E402
-import branches  # noqa: E402
-import continuation as ct  # noqa: E402
-import mlgmodel  # noqa: E402
-import paths  # noqa: E402
-import simulator  # noqa: E402
-import spectrum  # noqa: E402
+from mlgshimmy.shared import autoglue  # noqa: E402
+from mlgshimmy.shared import branches  # noqa: E402
+from mlgshimmy.shared import continuation as ct  # noqa: E402
+from mlgshimmy.shared import mlgmodel  # noqa: E402
+from mlgshimmy.shared import paths  # noqa: E402
+from mlgshimmy.shared import simulator  # noqa: E402
+from mlgshimmy.shared import spectrum  # noqa: E402
 from check import check, check_close  # noqa: E402
 
 RUNDIR = os.path.join(autoglue.BUILD, "tests", "auto-plugin")
@@ -28,7 +28,7 @@ RUNDIR = os.path.join(autoglue.BUILD, "tests", "auto-plugin")
 def constants_agree():
     """constants/c.mlg names every PAR slot of the library, the period and the
     measures of MLG_MEASURES; its unames follow the library's states."""
-    c = autoglue.auto.parseC.parseC(ct.CONSTANTS)
+    c = autoglue.init().parseC.parseC(ct.CONSTANTS)
     parnames = {int(k): v for k, v in c["parnames"]}
     unames = {int(k): v for k, v in c["unames"]}
     ours = {k + 1: name for k, name in enumerate(mlgmodel.PARNAMES) if name is not None}
@@ -79,7 +79,7 @@ CLUI_RUN = textwrap.dedent("""
     import math, sys
     sys.path.insert(0, {drivers!r})
     import autoglue; from autoglue import auto
-    import mlgmodel
+    from mlgshimmy.shared import mlgmodel
     m = mlgmodel.Model("figures", Fstar=1.0, V=10.0)
     par = dict(m.par(), **{bad})
     auto.run(e={model!r}, c=auto.parseC.parseC({constants!r}), PAR=par, U=m.equilibrium(),

@@ -11,9 +11,9 @@ import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
-import criterion  # noqa: E402
-import magnitude as mg  # noqa: E402
-import mlgmodel  # noqa: E402
+from mlgshimmy.studies import criterion  # noqa: E402
+from mlgshimmy.shared import magnitude as mg  # noqa: E402
+from mlgshimmy.shared import mlgmodel  # noqa: E402
 from check import check, check_close  # noqa: E402
 
 # docs/reproduction.md, Fig. 18: kappa* = 0.3651 at F* = 0.295 (variant 0)
@@ -50,7 +50,7 @@ def kappa_variant0():
     check_close("criterion: kappa* of variant 0 (docs)", here["first"] / mg.EPSILON,
                 KAPPA_REPORTED, rel=2e-4)
     for F in (FSTAR_REPORTED - 0.005, FSTAR_REPORTED + 0.005):
-        other = mg.extreme_crossing(F, "any")[0]
+        other = mg.extreme_yfp_crossing(F, "any")[0]
         check(f"criterion: F* = {F:.3f} needs a larger y_fp/eps", other > here["first"],
               f"{other:.6g} <= {here['first']:.6g} mm")
 
@@ -73,8 +73,8 @@ def stage_family():
         printed = mlgmodel.Model(Fstar=F, strut_variant=1).equilibrium()["eta"]
         check_close(f"criterion: eta* at F* = {F}, eta_s = 0 against variant 1 [m]",
                     family, printed, abs=1e-4)
-    family = mg.extreme_crossing(0.3, "any", eta_stage=0.0)[0]
-    printed = mg.extreme_crossing(0.3, "any", strut_variant=1.0)[0]
+    family = mg.extreme_yfp_crossing(0.3, "any", eta_stage=0.0)[0]
+    printed = mg.extreme_yfp_crossing(0.3, "any", strut_variant=1.0)[0]
     check_close("criterion: first instability at F* = 0.3, eta_s = 0 against variant 1 [mm]",
                 family, printed, rel=1e-3)
 

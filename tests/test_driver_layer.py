@@ -63,20 +63,20 @@ def cache_round_trip():
     os.environ.setdefault("AUTO_DIR", os.path.join(os.path.dirname(HERE), "build", "auto", "07p"))
     with tempfile.TemporaryDirectory() as tmp:
         os.environ["MLG_RUN_ROOT"] = tmp
-        import autoglue
-        import branches
+        from mlgshimmy.shared import autoglue
+        from mlgshimmy.shared import branches
         import numpy
-        import results
+        from mlgshimmy.shared import jobs
         reference = os.path.join(os.path.dirname(HERE), "tests", "reference", "fig13", "y1_orbits",
                                  "b.y1_po0")
-        bd = autoglue.auto.parseB.parseBR(reference)
-        path = results.write("test", {"orbits": results.stored(bd, ("V", "psi_amp", "T")),
+        bd = autoglue.init().parseB.parseBR(reference)
+        path = jobs.write("test", {"orbits": jobs.stored(bd, ("V", "psi_amp", "T")),
                                       "inf": numpy.inf})
         check("cache: no partial file left beside the result",
               os.listdir(os.path.dirname(path)) == ["result.json"],
               str(os.listdir(os.path.dirname(path))))
-        data = results.read("test")
-        back = results.loaded(data["orbits"])
+        data = jobs.read("test")
+        back = jobs.loaded(data["orbits"])
         same = all(numpy.array_equal(numpy.asarray(a[c]), b[c]) for a, b in zip(bd, back)
                    for c in ("V", "psi_amp", "T"))
         check("cache: columns read back exactly", len(back) == len(bd) and same)
@@ -88,9 +88,9 @@ def cache_round_trip():
             str(branches.labelled_points(back[0])))
         check("cache: infinity kept", data["inf"] == numpy.inf, str(data["inf"]))
         try:
-            results.read("fig99")
+            jobs.read("fig99")
             check("cache: a missing result is an error naming `make fig99`", False, "no error")
-        except results.MissingResult as exc:
+        except jobs.MissingResult as exc:
             check("cache: a missing result is an error naming `make fig99`",
                   "make fig99" in str(exc), str(exc))
 
@@ -99,15 +99,15 @@ def parts_in_stages():
     """Parts that need others: their stage, the make rules that run them
     after what they need (drivers/parts.mk, dry run), a single part's run
     that refuses to compute a part it needs, a cycle refused by name."""
-    import results
+    from mlgshimmy.shared import jobs
     with tempfile.TemporaryDirectory() as tmp:
         os.environ["MLG_RUN_ROOT"] = tmp
-        import paths
+        from mlgshimmy.shared import paths
         paths.RUN_ROOT = tmp
         jobs = {"a": lambda: 1, "b": lambda: 2,
-                "sum": results.Needs(["a", "b"], lambda p: p["a"] + p["b"]),
-                "twice": results.Needs(["sum"], lambda p: 2 * p["sum"])}
-        parts = results.Parts("toy", jobs, "figures")
+                "sum": jobs.Needs(["a", "b"], lambda p: p["a"] + p["b"]),
+                "twice": jobs.Needs(["sum"], lambda p: 2 * p["sum"])}
+        parts = jobs.Parts("toy", jobs, "figures")
         check("parts: stages 1, 1, 2, 3", [parts.stage(n) for n in jobs] == [1, 1, 2, 3],
               str([parts.stage(n) for n in jobs]))
         check("parts: stage 2 lists the part that needs stage 1 only", parts.of_stage(2) == ["sum"])
@@ -124,13 +124,13 @@ def parts_in_stages():
         try:
             parts.compute("sum", alone=True)
             check("parts: a single part's run refuses to compute a part it needs", False)
-        except results.MissingResult as exc:
+        except jobs.MissingResult as exc:
             check("parts: a single part's run refuses to compute a part it needs, naming it",
                   "part a is not cached" in str(exc) and "stage 1" in str(exc), str(exc))
         parts.compute("twice")   # the serial assembly computes what is missing
-        check("parts: computed in order when assembling", results.read("toy", "twice") == 6)
+        check("parts: computed in order when assembling", jobs.read("toy", "twice") == 6)
         try:
-            results.Parts("toy", {"x": results.Needs(["x"], lambda p: 0)}, "figures")
+            jobs.Parts("toy", {"x": jobs.Needs(["x"], lambda p: 0)}, "figures")
             check("parts: a part that needs itself is refused", False)
         except ValueError as exc:
             check("parts: a part that needs itself is refused", "needs itself" in str(exc),

@@ -22,8 +22,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check  # noqa: E402
-import mlgmodel  # noqa: E402
-import simulator  # noqa: E402
+from mlgshimmy.shared import mlgmodel  # noqa: E402
+from mlgshimmy.shared import simulator  # noqa: E402
 
 CONSERVATIVE = {"tyre_forces": 0, "c_psi": 0, "c_beta": 0, "zeta_delta": 0,
                 "c_eta1": 0, "c_eta2a": 0, "c_eta2b": 0, "V": 0}

@@ -11,15 +11,15 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check, check_close  # noqa: E402
-import atlas_compare  # noqa: E402
-import fig11  # noqa: E402
+from mlgshimmy.studies.atlas import compare as atlas_compare  # noqa: E402
+from mlgshimmy.figures import fig11  # noqa: E402
 
 V = fig11.V_GRID
 HIGH, QUASI = fig11.ATTRACTORS["high"], fig11.ATTRACTORS["quasi"]
 
 
 def branch(Vs, Fs, mx_at_end):
-    """A stored branch of a curve (results.stored's record)."""
+    """A stored branch of a curve (jobs.stored's record)."""
     return {"columns": {"V": list(Vs), "Fstar": list(Fs)}, "stable": [True] * len(Vs),
             "labels": [[len(Vs) - 1, 9, "MX"]] if mx_at_end else []}
 

@@ -9,10 +9,10 @@ from check import check, check_close  # noqa: E402
 
 import numpy  # noqa: E402
 
-import autoglue  # noqa: E402
-import continuation as ct  # noqa: E402
-import paths  # noqa: E402
-import spectrum  # noqa: E402
+from mlgshimmy.shared import autoglue  # noqa: E402
+from mlgshimmy.shared import continuation as ct  # noqa: E402
+from mlgshimmy.shared import paths  # noqa: E402
+from mlgshimmy.shared import spectrum  # noqa: E402
 
 FREEPLAY = dict(yfp=1.0, eps_rel=0.1)
 

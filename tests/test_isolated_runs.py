@@ -15,8 +15,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "drivers"))
-import autoglue  # noqa: E402
-import continuation as ct  # noqa: E402
+from mlgshimmy.shared import autoglue  # noqa: E402
+from mlgshimmy.shared import continuation as ct  # noqa: E402
 from check import check, wait_until_claimed  # noqa: E402
 
 RUN_ROOT = os.path.join(ROOT, "build", "tests", "isolated")
@@ -32,7 +32,7 @@ rundir = paths.rundir("shared")
 start = ct.Start("figures", Fstar=1.0, V=0.0)
 ct.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
 time.sleep(2.0)
-branch = autoglue.auto.parseB.parseBR(os.path.join(rundir, "b.eq"))[0]
+branch = autoglue.init().parseB.parseBR(os.path.join(rundir, "b.eq"))[0]
 hb = [i for i in branch.labels.getIndices() if "HB" in branch.labels[i]][0]
 print(f"RESULT {len(branch)} {branch['V'][hb]:.10f} {branch['V'][-1]:.6f}")
 """
@@ -54,7 +54,7 @@ def concurrent():
         lines = [line.split()[1:] for line in out.splitlines() if line.startswith("RESULT ")]
         if check(f"process {n} of 2 on one run directory succeeds",
                  proc.returncode == 0 and lines, (out + err)[-600:]):
-            results.append(lines[0])
+            jobs.append(lines[0])
     err = outputs[1][1]
     check("the second process waits, naming the directory and the first process",
           f"in use by process {first.pid}" in err and "waiting" in err

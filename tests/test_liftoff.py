@@ -12,7 +12,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check, check_close  # noqa: E402
-import liftoff  # noqa: E402
+from mlgshimmy.shared import liftoff  # noqa: E402
 
 
 def raises(error, call):

@@ -12,12 +12,12 @@ import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
-import autoglue  # noqa: E402
-import continuation as ct  # noqa: E402
-import spectrum  # noqa: E402
-import fig15  # noqa: E402
-import magnitude as mg  # noqa: E402
-import mlgmodel  # noqa: E402
+from mlgshimmy.shared import autoglue  # noqa: E402
+from mlgshimmy.shared import continuation as ct  # noqa: E402
+from mlgshimmy.shared import spectrum  # noqa: E402
+from mlgshimmy.figures import fig15  # noqa: E402
+from mlgshimmy.shared import magnitude as mg  # noqa: E402
+from mlgshimmy.shared import mlgmodel  # noqa: E402
 from check import check, check_close  # noqa: E402
 
 RUNDIR = os.path.join(autoglue.BUILD, "tests", "magnitude")
@@ -48,7 +48,7 @@ def linear_scaling():
 
 
 def thresholds():
-    a, b = mg.crossings(mg.FSTAR, mg.V_LIMIT, "high")[:2]
+    a, b = mg.yfp_crossings(mg.FSTAR, mg.V_LIMIT, "high")[:2]
     check_close("eps = 0.1 mm: a (V = 120) as reported", a, A_REPORTED, rel=2e-5)
     check_close("eps = 0.1 mm: b (V = 120) as reported", b, B_REPORTED, rel=2e-5)
     vals = {"Fstar": mg.FSTAR, "V": mg.V_LIMIT, **mg.SCALINGS["fixed"]}

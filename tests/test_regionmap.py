@@ -1,4 +1,4 @@
-"""Tests of drivers/regionmap.py on a synthetic map whose edges are known
+"""Tests of drivers/regions.py on a synthetic map whose edges are known
 exactly: a circle of radius 0.3 about (0.5, 0.5) and the line y = 0.8 on a
 400 x 300 raster of the unit square; labels 1 inside the circle, 2 between
 circle and line, 3 above the line, sampled on 6 rows only (as the slices of
@@ -12,7 +12,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check, check_close  # noqa: E402
-import regionmap  # noqa: E402
+from mlgshimmy.shared import regions  # noqa: E402
 
 X = np.linspace(0.0, 1.0, 400)
 Y = np.geomspace(0.01, 1.0, 300)      # uneven rows: index_of must follow them
@@ -24,10 +24,10 @@ CURVES = [(0.5 + 0.3 * np.cos(ANGLE), 0.5 + 0.3 * np.sin(ANGLE)), ([-0.5, 1.5], 
 
 
 def main():
-    check_close("index_of on an uneven grid", regionmap.index_of(Y, [Y[7]])[0], 7.0, abs=1e-9)
+    check_close("index_of on an uneven grid", regions.index_of(Y, [Y[7]])[0], 7.0, abs=1e-9)
     check_close("index_of: extended beyond the grid's end",
-                regionmap.index_of(X, [1.0 + 2 * (X[1] - X[0])])[0], len(X) + 1.0, abs=1e-9)
-    edges = regionmap.curve_pixels(X, Y, CURVES)
+                regions.index_of(X, [1.0 + 2 * (X[1] - X[0])])[0], len(X) + 1.0, abs=1e-9)
+    edges = regions.curve_pixels(X, Y, CURVES)
     check("curve pixels lie within 1.5 pixels of a curve",
           np.all(np.abs(np.hypot(XX - 0.5, YY - 0.5)[edges & (YY < 0.79)] - 0.3) < 0.02))
     samples = np.full(TRUE.shape, -1)
@@ -35,7 +35,7 @@ def main():
     samples[rows] = TRUE[rows]
     wrong = np.random.default_rng(1).random(samples.shape) < 0.03
     samples[rows] = np.where(wrong[rows], 4, samples[rows])
-    painted, report = regionmap.paint(edges, samples)
+    painted, report = regions.paint(edges, samples)
     off = np.hypot(XX - 0.5, YY - 0.5)
     away = (np.abs(off - 0.3) > 0.02) & (np.abs(YY - 0.8) > 0.02)
     check("painted map equals the exact one away from the curves",
@@ -47,7 +47,7 @@ def main():
     field = np.zeros((5, 5), dtype=int)
     field[:, 3:] = 1
     check("boundary_pixels: both columns either side of a step",
-          regionmap.boundary_pixels(field).sum(axis=0).tolist() == [0, 0, 5, 5, 0])
+          regions.boundary_pixels(field).sum(axis=0).tolist() == [0, 0, 5, 5, 0])
 
 
 main()

@@ -68,7 +68,7 @@ def main():
 QUICK_SIDESTAY = """
 import os, sys, time
 sys.path.insert(0, os.path.join(sys.argv[1], "drivers"))
-import sidestay
+from mlgshimmy.studies import sidestay
 sidestay.hopf_points = lambda rundir, tag, values: []
 computed = sidestay.compute
 def paused(*args, **kw):

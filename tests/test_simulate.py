@@ -17,7 +17,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check  # noqa: E402
-import simulator  # noqa: E402
+from mlgshimmy.shared import simulator  # noqa: E402
 
 
 def simulate(tmp, name, *args):

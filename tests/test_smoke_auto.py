@@ -11,7 +11,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
-import autoglue  # noqa: E402
+from mlgshimmy.shared import autoglue  # noqa: E402
 from check import check, check_close  # noqa: E402
 
 MODEL = os.path.join(autoglue.BUILD, "tests", "smoke", "smoke")
@@ -46,7 +46,7 @@ def check_failure_detection(eq):
     doctored = os.path.join(RUNDIR, "b.eq-mx")
     with open(doctored, "w") as f:
         f.writelines(lines)
-    bd = autoglue.auto.bifDiag.bifDiag(doctored)
+    bd = autoglue.init().bifDiag.bifDiag(doctored)
     message = raises_run_error(lambda: autoglue.check_diagram(bd, "eq-mx"))
     check("autoglue: MX detected", message and "MX" in message and
           "label 3" in message, f"RunError message: {message!r}")

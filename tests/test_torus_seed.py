@@ -15,8 +15,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check, check_close  # noqa: E402
-import mlgmodel  # noqa: E402
-import torus  # noqa: E402
+from mlgshimmy.shared import mlgmodel  # noqa: E402
+from mlgshimmy.shared import torus  # noqa: E402
 
 VALUES = {"V": 200.0, "Fstar": 1.0, "yfp": 1.0, "eps_abs": 0.0, "eps_rel": 0.1}
 PERIOD = 0.025          # s, about the large orbits' period

@@ -12,12 +12,11 @@ $(MLG_SIMULATE): c/simulate/mlg_simulate.c $(MLG_HEADERS) $(MLG_LIB) | $(PACKAGE
 # fig08-plot redraws the last simulation (build/fig08/).
 .PHONY: fig08 fig08-plot
 fig08: $(MLG_SIMULATE)
-	$(PYTHON) drivers/fig08.py
+	$(PYTHON) -m mlgshimmy.figures.fig08
 fig08-plot:
-	$(PYTHON) drivers/fig08.py --plot
+	$(PYTHON) -m mlgshimmy.figures.fig08 --plot
 
 FIGURES += fig08
-TEST_PROGRAMS += tests/test_simulate.py tests/test_energy.py
 TEST_DEPS += $(MLG_SIMULATE)
 BENCH_PROGRAMS += tests/bench/bench_fig08.py
 # The bench script needs the simulator: build it when `make bench` lists it.

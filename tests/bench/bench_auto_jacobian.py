@@ -12,8 +12,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "drivers"))
-import autoglue  # noqa: E402
-import continuation as ct  # noqa: E402
+from mlgshimmy.shared import autoglue  # noqa: E402
+from mlgshimmy.shared import continuation as ct  # noqa: E402
 import perf_split  # noqa: E402
 
 RUNDIR = os.path.join(autoglue.BUILD, "bench", "auto-jacobian")

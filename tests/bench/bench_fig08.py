@@ -10,7 +10,7 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                 "drivers"))
-import simulator  # noqa: E402
+from mlgshimmy.shared import simulator  # noqa: E402
 
 REPEATS = 3
 

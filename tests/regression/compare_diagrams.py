@@ -52,7 +52,7 @@ import numpy
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "drivers"))
-import autoglue  # noqa: E402  (makes AUTO's python package importable)
+from mlgshimmy.shared import autoglue  # noqa: E402  (makes AUTO's python package importable)
 import reference_set  # noqa: E402
 
 REFERENCE_ROOT = os.path.join(ROOT, "tests", "reference")
@@ -73,7 +73,7 @@ def read_branches(path):
     if not os.path.isfile(path):
         raise DiagramFileError(f"{path}: no such file")
     try:
-        branches = autoglue.auto.parseB.parseBR(path)
+        branches = autoglue.init().parseB.parseBR(path)
         for branch in branches:  # AUTO parses lazily: force it here
             branch.coordarray  # noqa: B018
     except Exception as exc:  # any parser failure means an unreadable file

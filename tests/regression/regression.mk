@@ -15,7 +15,7 @@
 #                        interrupted run leaves the old set as it was
 #
 # A figure <fig> of REGRESS_FIGURES is a make target whose driver writes its
-# runs to $MLG_RUN_ROOT/<fig>/ (drivers/paths.py: rundir; default build/).
+# runs to $MLG_RUN_ROOT/<fig>/ (shared.paths.rundir; default build/).
 # REGRESS_QUICK lists the fast ones that `make test` also compares
 # (tests/test_regression_quick.py). REGRESS_WITH_<fig> names figures drawn
 # from <fig>'s cached result that run no AUTO of their own (fig16: fig17):
@@ -74,6 +74,3 @@ refs-%: setup
 	$(PYTHON) $(REFERENCE_SET) replace $* $$scratch/$* || \
 	    { echo "refs-$*: $(REFERENCE_ROOT)/$* left as it was; runs in $$scratch" >&2; exit 1; }; \
 	rm -rf $$scratch
-
-TEST_PROGRAMS += tests/test_compare_diagrams.py tests/test_regression_quick.py \
-                 tests/test_reference_sets.py

@@ -1,0 +1,10 @@
+"""mlgshimmy: the Python drivers of mlg-shimmy, in three rooms.
+
+  shared   the shared layer: AUTO recipes, spectra, the model, jobs, drawing
+  figures  one module (or package) per figure of the paper
+  studies  the studies beyond the paper's figures
+
+Figures and studies import the shared layer, never each other; the shared
+layer imports neither (tests/test_rooms.py).  drivers/README.md has the map.
+"""
+__version__ = "0.9.0"

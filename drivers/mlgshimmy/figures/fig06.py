@@ -1,0 +1,45 @@
+"""Fig. 6: torque-link force profiles M_kpsi / r_tlk against y_tlk, eq. (15)
+for epsilon = 2, 1, 0.5, 0.2, 0.1 y_fp and the non-smooth eq. (14) dashed;
+panel (b) zooms on one corner to show the smoothing region, whose half-width
+is about epsilon."""
+import matplotlib.pyplot as plt
+import numpy
+
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import mlgmodel
+
+RATIOS = (2.0, 1.0, 0.5, 0.2, 0.1)      # epsilon / y_fp
+
+
+def profile(yfp_m, eps_m, y):
+    k_tlk = mlgmodel.Model("figures")["k_tlk"]
+    return numpy.array([mlgmodel.torque_link_force(k_tlk, v, yfp_m, eps_m) for v in y])
+
+
+def main():
+    yfp = 1e-3
+    y = numpy.linspace(-3 * yfp, 3 * yfp, 1201)
+    fig, (full, zoom) = plt.subplots(1, 2, figsize=(10, 4.2))
+    for ratio in RATIOS:
+        for ax in (full, zoom):
+            ax.plot(y * 1e3, profile(yfp, ratio * yfp, y) / 1e3, lw=1.3,
+                    label=rf"$\epsilon$ = {ratio:g} $y_{{fp}}$")
+    for ax in (full, zoom):
+        ax.plot(y * 1e3, profile(yfp, 0.0, y) / 1e3, "k--", lw=1.2, label="eq. (14)")
+        ax.set_xlabel(r"$y_{tlk}$ [mm]")
+        ax.set_ylabel(r"$M_{k\psi} / r_{tlk}$ [kN]")
+    eps = 0.1 * yfp
+    zoom.set_xlim(0.5, 1.6)
+    zoom.set_ylim(-2, 25)
+    zoom.axvspan((yfp - eps) * 1e3, (yfp + eps) * 1e3, color="0.85", zorder=0)
+    zoom.annotate(r"$y_{fp} \pm \epsilon$ ($\epsilon$ = 0.1 $y_{fp}$)", (1.0, 20),
+                  ha="center", fontsize=8)
+    full.set_title(r"(a) eq. (15), $y_{fp}$ = 1 mm, $k_{tlk}$ = 3.9e7 N/m")
+    zoom.set_title("(b) the smoothing region at the contact corner")
+    full.legend(fontsize=8)
+    fig.tight_layout()
+    draw.save(fig, "fig06")
+
+
+if __name__ == "__main__":
+    main()

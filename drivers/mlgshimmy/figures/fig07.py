@@ -1,0 +1,53 @@
+"""Fig. 7: zero-freeplay diagrams in V for F* = 0.2 and F* = 1: straight
+rolling, its Hopf point H and the periodic orbits born there; torsional and
+lateral amplitudes."""
+import matplotlib.pyplot as plt
+
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
+
+LOADS = (0.2, 1.0)
+COLUMNS = ("V", "psi_amp", "delta_amp")
+
+
+def compute(parameter_set="figures", where="fig07"):
+    """{"F<F*>": {"eq", "po": stored branches, "hopf_V", "end_V", "end_psi_amp"}}."""
+    rundir = paths.rundir(where)
+    result = {}
+    for Fstar in LOADS:
+        tag = f"F{Fstar:g}"
+        start = ct.Start(parameter_set, Fstar=Fstar, V=0.0)
+        eq = ct.equilibria(rundir, f"eq_{tag}", start, stop={"V": 600.0}, expect=["HB"])
+        po = ct.periodic_from(rundir, f"po_{tag}", eq("HB1"), stop={"V": 600.0})
+        result[tag] = {"eq": jobs.stored(eq, COLUMNS), "po": jobs.stored(po, COLUMNS),
+                       "hopf_V": eq("HB1")["V"], "end_V": po[0]["V"][-1],
+                       "end_psi_amp": po[0]["psi_amp"][-1]}
+    return result
+
+
+def plot(result):
+    fig, axes = plt.subplots(2, 2, figsize=(9, 6), sharex=True)
+    for col, Fstar in enumerate(LOADS):
+        load = result[f"F{Fstar:g}"]
+        print(f"fig07: F* = {Fstar:g}: Hopf at V = {load['hopf_V']:.3f} m/s; orbit at "
+              f"V = {load['end_V']:.1f}: psi amplitude {load['end_psi_amp']:.4f} rad")
+        eq, po = jobs.loaded(load["eq"]), jobs.loaded(load["po"])
+        for row, (measure, name) in enumerate((("psi_amp", r"$\psi$"), ("delta_amp", r"$\delta$"))):
+            ax = axes[row][col]
+            draw.plot_branch(ax, eq, "V", measure, scale=draw.DEG)
+            draw.plot_branch(ax, po, "V", measure, scale=draw.DEG)
+            draw.mark_points(ax, eq, "HB", "V", measure, text="H")
+            ax.set_title(f"({'ab'[col]}{row + 1}) $F_z^*$ = {Fstar:g}")
+            ax.set_ylabel(f"{name} amplitude [deg]")
+            ax.set_xlim(0, 600)
+            ax.axvspan(0, 80, color="0.9", zorder=0)
+        axes[1][col].set_xlabel("V [m/s]")
+    fig.suptitle("Fig. 7: zero freeplay (grey: operating region V ≤ 80 m/s; "
+                 "solid stable, dashed unstable)")
+    draw.save(fig, "fig07")
+
+
+if __name__ == "__main__":
+    jobs.run_figure("fig07", compute, plot)

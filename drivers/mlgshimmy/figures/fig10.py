@@ -1,0 +1,110 @@
+"""Fig. 10: F* = 1 with +-1 mm of torque-link freeplay (epsilon = 0.1 y_fp),
+V in [0, 600]: straight rolling and its Hopf points, the low-frequency
+orbits between the two low-speed Hopf points, the high-frequency orbits from
+the third with their fold S, and the zero-freeplay orbits for reference.
+Panels: torsional amplitude (with a zoom on small amplitudes) and frequency."""
+import matplotlib.pyplot as plt
+
+from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
+
+DEG = draw.DEG
+V_MAX = ct.V_MAX
+V_GRID = ct.SPEED_SCAN
+COLUMNS = ("V", "psi_amp", "freq")
+
+
+def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
+    """Straight rolling in V from V = 0 (run eq) and
+    continuation.speed_diagram: (equilibria, Diagram)."""
+    start = ct.Start(parameter_set, V=0.0, **values)
+    eq = ct.equilibria(rundir, "eq", start, stop={"V": V_MAX})
+    return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID, allow_failed=allow_failed,
+                                figure="fig10", DS=0.05, DSMAX=1.0, NMX=2000)
+
+
+def numbers(diagram):
+    """The special points of Fig. 10 as {quantity: value}."""
+    folds = sorted(V for _, _, V, _ in diagram.folds())
+    out = {f"H{k + 1} [m/s]": v for k, (v, _) in enumerate(diagram.hopf)}
+    out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(folds)})
+    return out
+
+
+def stored(eq, diagram):
+    """A diagram's branches for the cache: the orbit runs with their Hopf
+    point (V, frequency 1/T)."""
+    return {"eq": jobs.stored(eq, COLUMNS),
+            "parts": [{"hopf": (point["V"], 1 / point["T"]), "orbits": jobs.stored(run, COLUMNS)}
+                      for point, run in diagram.parts],
+            "hopf": diagram.hopf}
+
+
+def compute():
+    """The figure (`figures` set, and zero freeplay for reference) and the
+    numbers of the `table` set (its failure leaves that column empty)."""
+    print("fig10: F* = 1, y_fp = 1 mm, eps = 0.1 mm (figures set)")
+    eq, freeplay = speed_diagram(paths.rundir("fig10"), "figures", Fstar=1.0, yfp=1.0,
+                                 eps_rel=0.1)
+    print("fig10: zero freeplay, for reference")
+    zero_eq, zero = speed_diagram(paths.rundir("fig10/zero"), "figures", Fstar=1.0, yfp=0.0)
+    print("fig10: the same with the `table` set, for its numbers")
+    try:
+        table = numbers(speed_diagram(paths.rundir("fig10/table"), "table", allow_failed=True,
+                                      Fstar=1.0, yfp=1.0, eps_rel=0.1)[1])
+    except (autoglue.RunError, RuntimeError) as exc:
+        print(f"fig10: the `table` set failed, its column stays empty: {exc.brief}")
+        table = {}
+    return {"freeplay": stored(eq, freeplay), "zero": stored(zero_eq, zero),
+            "numbers": numbers(freeplay), "numbers_table": table}
+
+
+def plot(result):
+    paper.report("fig10", result["numbers"], result["numbers_table"])
+    freeplay, zero = result["freeplay"], result["zero"]
+    parts = [(point, jobs.loaded(part["orbits"])) for part in freeplay["parts"]
+             for point in [part["hopf"]]]
+    zero_orbits = [jobs.loaded(part["orbits"]) for part in zero["parts"]]
+    fig = plt.figure(figsize=(10, 7))
+    grid = fig.add_gridspec(2, 2, width_ratios=(1.6, 1))
+    amp, zoom, freq = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), \
+        fig.add_subplot(grid[1, :])
+    for ax in (amp, zoom):
+        for orbits in zero_orbits:
+            draw.plot_branch(ax, orbits, "V", "psi_amp", scale=DEG, color="0.5")
+        draw.plot_branch(ax, jobs.loaded(freeplay["eq"]), "V", "psi_amp", scale=DEG)
+        for _, orbits in parts:
+            draw.plot_branch(ax, orbits, "V", "psi_amp", scale=DEG)
+            draw.mark_points(ax, orbits, "LP", "V", "psi_amp", scale=DEG, text="S")
+        for v, _ in freeplay["hopf"]:
+            ax.plot(v, 0.0, "ko", ms=3.5)
+            ax.annotate("H", (v, 0.0), textcoords="offset points", xytext=(2, 4))
+        ax.set_xlabel("V [m/s]")
+        ax.set_ylabel(r"$\psi$ amplitude [deg]")
+    amp.set_xlim(0, V_MAX)
+    amp.set_title("(a) torsional amplitude (grey: zero freeplay)")
+    zoom.set_xlim(0, 160)
+    zoom.set_ylim(-0.01, 0.3)
+    zoom.set_title("(a) zoom: small amplitudes")
+    for orbits in zero_orbits:
+        draw.plot_branch(freq, orbits, "V", "freq", color="0.5")
+    for (V, f), orbits in parts:
+        draw.plot_branch(freq, orbits, "V", "freq")
+        freq.plot(V, f, "ko", ms=3.5)
+        draw.mark_points(freq, orbits, "LP", "V", "freq", text="S")
+    freq.set_xlim(0, V_MAX)
+    freq.set_xlabel("V [m/s]")
+    freq.set_ylabel("frequency [Hz]")
+    freq.set_title("(b) frequency")
+    fig.suptitle(r"Fig. 10: $F_z^*$ = 1, $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm "
+                 "(solid stable, dashed unstable)")
+    fig.tight_layout()
+    draw.save(fig, "fig10")
+
+
+if __name__ == "__main__":
+    jobs.run_figure("fig10", compute, plot)

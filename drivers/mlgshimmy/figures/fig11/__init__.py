@@ -1,0 +1,97 @@
+"""Fig. 11: the (V, F*) plane with +-1 mm of freeplay (epsilon = 0.1 y_fp):
+the Hopf curves of straight rolling, the curves of folds of periodic orbits,
+the pitchfork lines, and the zero-freeplay Hopf curve; regions shaded by the
+attractors that coexist there.
+
+The curves are AUTO continuations started from the Fig. 10 special points
+(F* = 1), the torus curve of the large-amplitude orbits (AUTO, from a
+torus point at F* = 0.5625) and the edges of two tongues of instability
+left of it (other Floquet pairs, from F* = 0.8125 and 0.9375; they bound no
+region).  The
+regions are bounded by those curves and by the edges of the straight-rolling stability grid (exact Jacobian
+eigenvalues); they are labelled, not bounded, by the stable low- (< 8 Hz) and high-frequency orbits
+of one-parameter diagrams in V (continuation.speed_diagram and the
+large-amplitude family) on a set of loads (regionmap).  The wheel lift-off
+region is bounded by its edge located by simulation (liftoff).  result.json
+holds the map ("region_map": V, Fstar, code per F* row, names) and the
+curves bounding it ("edge_curves") for the attractor atlas."""
+import numpy
+
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import liftoff
+from mlgshimmy.figures.fig11.curves import mx_ends, on_curves, stored_curves, upper_fold_curves
+from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, liftoff_edge, liftoff_end, liftoff_speed)
+from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits, straight_rolling_stable)
+from mlgshimmy.figures.fig11.plane import F_GRID, SLICES, V_GRID
+from mlgshimmy.figures.fig11.region_map import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list, region_map,
+    region_name, slice_codes)
+from mlgshimmy.figures.fig11.tori import TONGUE_EDGES, TONGUE_TOL, tongue_curve, torus_curves
+
+
+def parts():
+    """The large-amplitude family, the curves from F* = 1, the lift-off
+    speeds, the eigenvalue grid and one diagram in V per slice load:
+    independent jobs, about the longest first (so that the last jobs under
+    make -jN are short); the torus curve and the tongue edges after the
+    large part (from its diagrams in V), the upper fold curves after the
+    slices (from their folds) and the lift-off edge's ends after the
+    speeds."""
+    work = {"large": large_family, "torus": jobs.Needs(["large"], lambda _: torus_curves())}
+    work.update({part: jobs.Needs(["large"], lambda _, part=part: tongue_curve(part))
+                 for part in TONGUE_EDGES})
+    work["curves"] = stored_curves
+    liftoff_parts = [f"liftoff_{Fstar:.2f}" for Fstar in LIFTOFF_LOADS]
+    work.update({part: lambda Fstar=Fstar: liftoff_speed(Fstar)
+                 for part, Fstar in zip(liftoff_parts, LIFTOFF_LOADS)})
+    work["grid"] = straight_rolling_stable
+    slice_parts = [f"slice_{Fstar:.4f}" for Fstar in SLICES]
+    work.update({part: lambda Fstar=Fstar: slice_diagram(Fstar)
+                 for part, Fstar in zip(slice_parts, SLICES)})
+    work["upper_folds"] = jobs.Needs(["curves"] + slice_parts, upper_fold_curves)
+    work.update({part: jobs.Needs(liftoff_parts, lambda p, part=part: liftoff_end(p, part))
+                 for part in LIFTOFF_ENDS})
+    return work
+
+
+def compute(parts):
+    """The parts assembled: the curves, the torus points on the slices, the
+    lift-off edge, and the region map bounded by the curves (region_map)."""
+    stored = parts["curves"]
+    slices = {Fstar: parts[f"slice_{Fstar:.4f}"] for Fstar in SLICES}
+    large = parts["large"]
+    orbits = [(Fstar, slice_codes(stable_orbits(part["branches"]
+                                                + large.get(f"{Fstar:.4f}", []))))
+              for Fstar, part in slices.items()]
+    drawn = {kind: stored[kind] for kind in ("hopf", "fold", "zero")}
+    drawn["fold"] += parts["upper_folds"]["curves"]
+    drawn["torus"] = parts["torus"]["curves"]
+    drawn["tongue"] = [curve for part in TONGUE_EDGES for curve in parts[part]["curves"]]
+    pitchforks = stored["pitchfork"][1]
+    lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS],
+                        [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
+    edges = curve_list(drawn, pitchforks, lift)
+    found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
+                              pitchforks, lift)
+    for row, col, n, votes in check["pieces"]:
+        if n - max(votes.values()) > PIECE_DISAGREEMENT * n:
+            print(f"REPORTED: fig11 region near V = {V_GRID[col]:.1f}, F* = {F_GRID[row]:.2f}: "
+                  f"slice samples {votes} (labelled by the majority)")
+    print(f"fig11: {check['disagree']} of {check['samples']} slice samples disagree with "
+          "their region's label")
+    joins, stops = mx_ends(drawn)
+    for stop in stops:
+        print(f"REPORTED: fig11 {stop['curve']} stops (MX) at V = {stop['V']:.4g}, "
+              f"F* = {stop['Fstar']:.4g}")
+    names = {str(v): ((region_name(v & ~ATTRACTORS["yaw"]) if v & ~ATTRACTORS["yaw"] else "")
+                      + (BAND if v & ATTRACTORS["yaw"] else "")).lstrip("; ")
+             for v in numpy.unique(found).tolist()}
+    # the tongue points that its continued edge passes through are drawn by
+    # it (a tighter tolerance: the edge is nearly flat, dV/dF* ~ 850 m/s)
+    tongue = [jobs.loaded(d) for d in drawn["tongue"]]
+    points = [p for p in parts["torus"]["points"] if not on_curves(p, tongue, TONGUE_TOL)]
+    return {"curves": drawn, "torus_points": points,
+            "pitchfork": stored["pitchfork"], "mx_joins": joins,
+            "mx_stops": stops, "edge_curves": edges, "region_check": check,
+            "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
+                                 "psi0": liftoff.PSI0},
+            "region_map": {"V": V_GRID, "Fstar": F_GRID, "code": found, "names": names}}

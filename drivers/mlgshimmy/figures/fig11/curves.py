@@ -1,0 +1,148 @@
+"""Fig. 11's curves from the Fig. 10 special points at F* = 1: Hopf curves,
+folds of periodic orbits (and the upper fold curves started from the
+slices' folds), the pitchforks and the zero-freeplay Hopf curve; where two
+curves stop in MX at one point (mx_ends)."""
+import numpy
+
+from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import branches
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import spectrum
+from mlgshimmy.figures.fig11.orbits import slice_rundir
+from mlgshimmy.figures.fig11.plane import FREEPLAY, F_MAX, F_MIN, SLICES, STOP, V_MAX, V_SCAN
+
+FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
+
+
+def curves(rundir, parameter_set="figures"):
+    """Hopf and fold curves continued from the F* = 1 points of Fig. 10, the
+    pitchfork loads (at three speeds: they do not depend on V) and the
+    zero-freeplay Hopf curve."""
+    out = {"hopf": [], "fold": [], "zero": []}
+    points = ct.hopf_points(rundir, "hb", parameter_set, "V", V_SCAN, Fstar=1.0, **FREEPLAY)
+    for k, point in enumerate(points):
+        for sign in (1, -1):
+            out["hopf"].append(ct.hopf_curve(
+                rundir, f"hopf{k + 1}{'+-'[sign < 0]}", point, ("Fstar", "V"), stop=STOP,
+                overlay="stage_switch", DS=0.002 * sign, DSMAX=0.02, NMX=5000, allow_mx=True))
+    # the fold S, located on an orbit run with the base step sizes (the fold
+    # located on Fig. 10's finer-stepped run does not start the fold curve)
+    high = ct.periodic_from(rundir, "po_fold", points[-1], stop={"V": [30.0, 200.0]},
+                            NMX=400, expect=["LP"])
+    for k, point in enumerate(high("LP")):
+        for sign in (1, -1):
+            out["fold"].append(ct.fold_curve(
+                rundir, f"fold{k + 1}{'+-'[sign < 0]}", point, ("V", "Fstar"), stop=STOP,
+                DS=0.05 * sign, DSMAX=1.0, NMX=400, allow_mx=True))
+    zero, = ct.hopf_points(rundir, "hb_zero", parameter_set, "V", V_SCAN, Fstar=1.0, yfp=0.0)
+    for sign in (1, -1):
+        out["zero"].append(ct.hopf_curve(rundir, f"hopf_zero{'+-'[sign < 0]}", zero,
+                                         ("Fstar", "V"), stop=STOP, DS=0.02 * sign,
+                                         allow_mx=True))
+    out["pitchfork"] = []
+    for V in (5.0, 50.0, 300.0):
+        loads = [f for f, kind, _ in spectrum.stability_changes(
+            parameter_set, "Fstar", numpy.linspace(F_MIN, F_MAX, 800), V=V, **FREEPLAY)
+            if kind == "BP"]
+        print(f"fig11: pitchforks at V = {V:g}: F* = " + ", ".join(f"{f:.6f}" for f in loads))
+        out["pitchfork"].append(loads)
+    return out
+
+
+def on_curves(point, curves, tol=0.01):
+    """Whether the fold `point` lies on one of the computed fold curves
+    (distance in V/V_MAX and F*/F_MAX below tol)."""
+    return any(numpy.min(numpy.hypot((numpy.asarray(branch["V"]) - point["V"]) / V_MAX,
+                                     (numpy.asarray(branch["Fstar"]) - point["Fstar"]) / F_MAX))
+               < tol for curve in curves for branch in curve)
+
+
+def upper_folds(rundir, first, folds):
+    """Curves of folds of high-frequency orbits that the fold S curve
+    (`first`, stored) does not reach: continued both ways from each fold on
+    the lowest slice above its top load (folds: {slice load: [(run name,
+    label)]}) that no curve computed so far passes through.  A direction
+    that fails (or stalls: FOLD_TIME_LIMIT) is reported and left out.  The
+    folds of the higher slices that no curve passes through start curves
+    too (a curve can stop in MX before it reaches them)."""
+    top = max(numpy.max(branch["Fstar"]) for diagram in first
+              for branch in jobs.loaded(diagram))
+    above = [f for f in SLICES if f > top and folds[f]]
+    if not above:
+        return []
+    out, k = [], 0
+    points = [ct.load(slice_rundir(Fstar), name)(lab) for Fstar in above
+              for name, lab in folds[Fstar]]
+    for point in points:
+        if on_curves(point, out):
+            continue
+        k += 1
+        for sign in (1, -1):
+            name = f"fold_upper{k}{'+-'[sign < 0]}"
+            try:
+                out.append(ct.fold_curve(rundir, name, point, ("V", "Fstar"), stop=STOP,
+                                         DS=0.05 * sign, DSMAX=1.0, NMX=400, allow_mx=True,
+                                         time_limit=FOLD_TIME_LIMIT))
+            except autoglue.RunError as exc:
+                print(f"REPORTED: {name} left out: {exc.brief}")
+    # every fold of the slices above must lie on a curve (a curve started
+    # from a spurious point, or stopped short, shows here)
+    missed = [p for p in points if not on_curves(p, out)]
+    for p in missed:
+        print(f"REPORTED: fig11 slice fold at V = {p['V']:.4g}, F* = {p['Fstar']:.4g} "
+              "lies on no upper fold curve")
+    print(f"fig11: {len(points) - len(missed)} of {len(points)} slice folds above "
+          f"F* = {top:.4g} lie on the upper fold curves")
+    return out
+
+
+def stored_curves():
+    out = curves(paths.rundir("fig11/curves"))
+    return {**{kind: [jobs.stored(d, ("V", "Fstar")) for d in out[kind]]
+               for kind in ("hopf", "fold", "zero")}, "pitchfork": out["pitchfork"]}
+
+
+def upper_fold_curves(parts):
+    """A part: the upper fold curves (upper_folds) from the slices' folds,
+    stored: {"curves": [stored diagrams]}."""
+    upper = upper_folds(paths.rundir("fig11/upper_folds"), parts["curves"]["fold"],
+                        {Fstar: parts[f"slice_{Fstar:.4f}"]["folds"] for Fstar in SLICES})
+    return {"curves": [jobs.stored(d, ("V", "Fstar")) for d in upper]}
+
+
+# MX ends of two curves of one kind closer than this (in V/V_MAX and
+# F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
+# reach their common turning point inside the oleo stage switch from both
+# sides (3e-4 m/s apart); a tongue's two edges stop short of where they
+# meet (2.5 m/s apart at F* = 0.863)
+JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
+JOIN_LABELS = {"hopf": "Hopf curves from H1 and H2 meet: turning point\n"
+                       "inside the oleo stage switch (AUTO stops both)",
+               "tongue": "a tongue's two edges meet: its tip\n"
+                         "(AUTO stops both there)"}
+
+
+def mx_ends(drawn):
+    """(joins, open): the MX ends of the drawn curves, those where two
+    curves of one kind meet (JOIN_TOL) as [{"V", "Fstar", "kind",
+    "curves"}], and the others [{"V", "Fstar", "curve"}]."""
+    ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "kind": kind,
+             "curve": f"{kind}{n + 1}"}
+            for kind in ("hopf", "fold", "torus", "tongue")
+            for n, diagram in enumerate(drawn.get(kind, []))
+            for branch in jobs.loaded(diagram)
+            for i, _, _ in branches.labelled_points(branch, "MX")]
+    joins, used = [], set()
+    for a, p in enumerate(ends):
+        for b in range(a + 1, len(ends)):
+            q = ends[b]
+            if a not in used and b not in used and p["kind"] == q["kind"] in JOIN_TOL \
+                    and numpy.hypot((p["V"] - q["V"]) / V_MAX,
+                                    (p["Fstar"] - q["Fstar"]) / F_MAX) < JOIN_TOL[p["kind"]]:
+                used |= {a, b}
+                joins.append({"V": 0.5 * (p["V"] + q["V"]), "Fstar": 0.5 * (p["Fstar"] + q["Fstar"]),
+                              "kind": p["kind"], "curves": [p["curve"], q["curve"]]})
+    return joins, [{k: e[k] for k in ("V", "Fstar", "curve")}
+                   for n, e in enumerate(ends) if n not in used]

@@ -1,0 +1,121 @@
+"""Fig. 11's region map: the plane cut by the curves, each piece labelled
+by the attractors the slices' samples find there (shared.regions)."""
+import numpy
+
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import regions
+from mlgshimmy.figures.fig11.plane import F_GRID, V_GRID, V_MAX, V_MIN
+from mlgshimmy.figures.fig11.tori import torus_speed
+
+ATTRACTORS, NAMES = regions.ATTRACTORS, regions.ATTRACTOR_NAMES
+BAND = "; between the pitchforks: off-centre yaw equilibria (their stability not computed)"
+PIECE_DISAGREEMENT = 0.05   # a piece whose samples disagree more than this is reported
+
+
+def slice_codes(orbits):
+    """The orbit bits ("low", "high") along V_GRID on one slice, from its
+    stable V-intervals (stable_orbits)."""
+    out = numpy.zeros(len(V_GRID), dtype=int)
+    for kind, intervals in orbits.items():
+        for lo, hi in intervals:
+            out[(V_GRID >= lo) & (V_GRID <= hi)] |= ATTRACTORS[kind]
+    return out
+
+
+def slice_row(Fstar):
+    return int(numpy.argmin(numpy.abs(F_GRID - Fstar)))
+
+
+def curve_list(drawn, pitchforks, lift=None):
+    """Every curve that bounds a region: [{"name", "kind", "V", "Fstar"}]
+    (the pitchfork lines as two points each; the lift-off edge if any), and
+    the tongue's torus curve (kind "tongue": it bounds no region of the map,
+    region_map leaves it out; the tongue is a few m/s wide)."""
+    out = []
+    for kind in ("hopf", "fold", "torus", "tongue"):
+        for n, diagram in enumerate(drawn.get(kind, [])):
+            for m, branch in enumerate(jobs.loaded(diagram)):
+                out.append({"name": f"{kind}{n + 1}.{m + 1}", "kind": kind,
+                            "V": branch["V"], "Fstar": branch["Fstar"]})
+    out += [{"name": f"pitchfork{n + 1}", "kind": "pitchfork", "V": [V_MIN, V_MAX],
+             "Fstar": [f, f]} for n, f in enumerate(pitchforks)]
+    if lift:
+        out.append({"name": "liftoff", "kind": "liftoff", "V": lift["V"],
+                    "Fstar": lift["Fstar"]})
+    return out
+
+
+def region_map(sr_stable, orbits, edge_curves, pitchforks, lift=None):
+    """(code [F*, V] on F_GRID x V_GRID, check): the regions bounded by the
+    edge curves (and by the edges of the straight-rolling stability grid,
+    which are the Hopf curves and pitchforks again, closing them where AUTO
+    stopped), each labelled by the attractors the slices find inside it
+    (regions.paint).  Straight rolling and the yaw band are exact (grid,
+    pitchfork loads); where a slice finds no stable orbit nor straight
+    rolling beyond its first torus curve (torus_speed), the attractor is
+    quasi-periodic shimmy (simulations, docs/reproduction.md).  orbits:
+    [(slice load, its orbit bits along V_GRID)].  Right of the lift-off
+    edge (lift, liftoff_edge) the samples of the slices and of the edge's
+    loads say lift-off: the shimmy there grows until a wheel lifts off."""
+    samples = numpy.full(sr_stable.shape, -1, dtype=int)
+    for Fstar, row in orbits:
+        samples[slice_row(Fstar)] = numpy.where(
+            (V_GRID >= torus_speed(edge_curves, Fstar)) & (row == 0), ATTRACTORS["quasi"], row)
+    if lift:
+        F_edge = [f for _, f in lift["points"]]
+        for Fstar in [f for f, _ in orbits] + list(F_edge[1:-1]):
+            if F_edge[0] <= Fstar <= F_edge[-1]:
+                beyond = V_GRID >= numpy.interp(Fstar, lift["Fstar"], lift["V"])
+                samples[slice_row(Fstar), beyond] = ATTRACTORS["liftoff"]
+    edges = regions.curve_pixels(V_GRID, F_GRID, [(c["V"], c["Fstar"]) for c in edge_curves
+                                                    if c["kind"] != "tongue"])
+    edges |= regions.boundary_pixels(sr_stable.astype(int))
+    painted, check = regions.paint(edges, samples)
+    lo, hi = min(pitchforks), max(pitchforks)
+    yaw = ((F_GRID >= lo) & (F_GRID <= hi))[:, None] & numpy.ones(len(V_GRID), dtype=bool)
+    found = painted | numpy.where(sr_stable, ATTRACTORS["straight"], 0) \
+        | numpy.where(yaw, ATTRACTORS["yaw"], 0)
+    return found, check
+
+
+COLOURS = {  # by region_key; white: straight rolling only
+    1: "white", 5: "tab:orange", 3: "tab:olive", 6: "tab:purple", 7: "tab:brown",
+    2: "tab:cyan", 4: "tab:red", 16: "tab:gray", 32: "tab:blue", 8: "0.85", 0: "k"}
+
+
+def region_key(found):
+    """The code without the yaw bit (hatched on top), except where off-centre
+    yaw is all there is."""
+    return numpy.where(found == ATTRACTORS["yaw"], found, found & ~ATTRACTORS["yaw"])
+
+
+def region_name(value):
+    """The legend text of a region_key."""
+    names = [NAMES[bit] for bit in sorted(NAMES) if value & bit]
+    if not names:
+        return "no stable state found"
+    return ("" if len(names) == 1 else "coexisting: ") + " / ".join(names)
+
+
+def shade(ax, found):
+    """Paint the map (regions by colour, the yaw band hatched); returns the
+    legend patches of the regions present."""
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+    key = region_key(found)
+    values = numpy.unique(key).tolist()
+    colours = [COLOURS.get(v, "k") for v in values]
+    half_V, half_F = 0.5 * (V_GRID[1] - V_GRID[0]), 0.5 * (F_GRID[1] - F_GRID[0])
+    ax.imshow(numpy.searchsorted(values, key), cmap=ListedColormap(colours), vmin=-0.5,
+              vmax=len(values) - 0.5, alpha=0.45, origin="lower", aspect="auto",
+              interpolation="nearest", extent=(V_GRID[0] - half_V, V_GRID[-1] + half_V,
+                                               F_GRID[0] - half_F, F_GRID[-1] + half_F))
+    band = F_GRID[((found & ATTRACTORS["yaw"]) != 0).any(axis=1)]
+    ax.fill_between([0, V_MAX], band.min(), band.max(), facecolor="none", edgecolor="0.3",
+                    hatch="///", lw=0)
+    handles = [Patch(facecolor=c, edgecolor="0.4", alpha=0.45, label=region_name(v))
+               for v, c in zip(values, colours)]
+    return handles + [Patch(facecolor="none", edgecolor="0.3", hatch="///",
+                            label="between the pitchforks: off-centre yaw equilibria\n"
+                                  "(straight rolling unstable; their stability\n"
+                                  "in V not computed)")]

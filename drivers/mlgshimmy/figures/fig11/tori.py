@@ -1,0 +1,85 @@
+"""Fig. 11's torus curve (the edge of the quasi-periodic region) and the
+edges of the tongues of instability left of it, continued by AUTO from
+torus points of the large family (shared.torus)."""
+import numpy
+
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import torus
+from mlgshimmy.figures.fig11.curves import on_curves
+from mlgshimmy.figures.fig11.orbits import large_upwards
+from mlgshimmy.figures.fig11.plane import V_MAX
+
+# the torus curve bounding the quasi-periodic region, continued from its
+# point on this load; the loads whose other torus points (narrow tongues of
+# instability below the curve, F* ~ 0.65-1.1) are marked; the tongue edges
+# continued, {part: (load, index of the crossing on it, torus_curve's
+# options)}: the two ends of the window at F* = 0.8125 (471.1, 483.3 m/s)
+# and at 0.9375 (540.24, 542.28 m/s).  The first edge needs 300 steps down
+# to where it meets the second (docs/reproduction.md).  The pair at 540.24
+# (theta = 0.17) is ill-conditioned (eigenvalue condition number ~550,
+# against ~140 at 542.28): the seeded first Newton solve fails on the
+# orbit's mesh (NTST 80) and converges on a finer one.
+TORUS_START = 0.5625
+TORUS_POINT_LOADS = (0.6875, 0.8125, 0.9375)
+TONGUE_EDGES = {"tongue": (0.8125, 0, {"steps": 300}), "tongue2": (0.8125, 1, {}),
+                "tongue3": (0.9375, 0, {"ntst": 120}), "tongue4": (0.9375, 1, {})}
+TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
+TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/s in V)
+
+
+def first_torus_curve(rundir, name, found, index=0, **options):
+    """A torus point of an orbit diagram in V (found: (diagram, crossings);
+    the first, or torus_points[index]) continued both ways by AUTO
+    (torus.tr_point, torus.torus_curve with its options: steps, ntst)."""
+    orbits, torus_points = found
+    tr = torus.tr_point(rundir, "tr", orbits, torus_points[index]["value"],
+                        torus_points[index]["slope_per_unit"])
+    return torus.torus_curve(rundir, name, tr, **options)
+
+
+def torus_curves():
+    """A part, after the large part: the torus (Neimark-Sacker) curve of the
+    large-amplitude family in (V, F*) and the torus points off it:
+    {"curves": [[stored branches]], "points": [{"V", "Fstar", "angle",
+    "direction"}]}: the curve from the first torus point on TORUS_START,
+    the points of the TORUS_POINT_LOADS that it does not pass through (the
+    large part's diagrams in V, large_upwards)."""
+    found = {Fstar: large_upwards(Fstar) for Fstar in (TORUS_START,) + TORUS_POINT_LOADS}
+    curve = first_torus_curve(paths.rundir("fig11/torus"), "torus", found[TORUS_START])
+    points = [{"V": c["value"], "Fstar": Fstar, "angle": c["angle"],
+               "direction": c["direction"]}
+              for Fstar in TORUS_POINT_LOADS for c in found[Fstar][1]
+              if not on_curves({"V": c["value"], "Fstar": Fstar}, curve)]
+    return {"curves": [[branch for run in curve for branch in jobs.stored(run, TORUS_COLUMNS)]],
+            "points": points}
+
+
+def tongue_curve(part):
+    """A part, after the large part: the torus curve of another Floquet
+    pair, an edge of a tongue of instability left of the torus curve,
+    continued from the torus point TONGUE_EDGES[part] of the large part's
+    diagram in V on that load (large_upwards, first_torus_curve):
+    {"curves": [[stored branches]]}."""
+    Fstar, index, options = TONGUE_EDGES[part]
+    curve = first_torus_curve(paths.rundir(f"fig11/{part}"), "tongue", large_upwards(Fstar),
+                              index, **options)
+    return {"curves": [[branch for run in curve for branch in jobs.stored(run, TORUS_COLUMNS)]]}
+
+
+BEYOND = 1.1 * V_MAX   # a slice that no torus curve crosses below V_MAX
+
+
+def torus_speed(edge_curves, Fstar):
+    """The lowest speed at which a torus curve crosses the load Fstar (where
+    the last stable large-amplitude orbit is lost, at the lightest loads),
+    BEYOND if none does."""
+    speeds = [BEYOND]
+    for curve in edge_curves:
+        if curve["kind"] != "torus":
+            continue
+        V, F = numpy.asarray(curve["V"]), numpy.asarray(curve["Fstar"])
+        for k in numpy.flatnonzero((F[:-1] - Fstar) * (F[1:] - Fstar) <= 0):
+            if F[k + 1] != F[k]:
+                speeds.append(V[k] + (Fstar - F[k]) / (F[k + 1] - F[k]) * (V[k + 1] - V[k]))
+    return min(speeds)

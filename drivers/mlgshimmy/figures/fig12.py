@@ -1,0 +1,156 @@
+"""Fig. 12: V = 50 m/s, +-1 mm of freeplay (epsilon = 0.1 y_fp), F* in
+[0, 3.5]: straight rolling with its two pitchforks, the stationary non-zero
+yaw branches between them, the Hopf point and the periodic orbits born
+there; panels torsional amplitude (with the freeplay boundary
+psi_fp = y_fp / r_tlk(eta*) in grey) and frequency.  Also a_12 and b_12: the
+loads at V = 50 between which stable straight rolling coexists with stable
+torsional shimmy, separated by the unstable orbits.
+`fig12.py --strut-variant 1` does the same with the printed strut spring
+(build/fig12_v1/, build/figures/fig12_v1.*)."""
+import matplotlib.pyplot as plt
+import numpy
+
+from mlgshimmy.shared import branches
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import spectrum
+
+DEG = draw.DEG
+COLUMNS = ("Fstar", "psi_amp", "psi_mean", "freq")
+F_MIN, F_MAX = 0.02, 3.5
+VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
+
+
+def runs(parameter_set="figures", where="fig12", variant=0):
+    """(straight rolling, pitchfork loads, yaw branches, Hopf loads, orbit runs)."""
+    rundir = paths.rundir(where)
+    values = {**VALUES, "strut_variant": float(variant)}
+    # The printed strut (variant 1) folds straight rolling twice in F* while
+    # eta crosses its 1e-5 m stage switch (F* 0.63-0.70): steps must shrink
+    # below AUTO's default DSMIN of 1e-5 there (constants/runs/c.stage_switch).
+    steps = {"overlay": "stage_switch"} if variant else {}
+    start = ct.Start(parameter_set, Fstar=F_MIN, **values)
+    # MXBF = 0: the stationary yaw branches are computed explicitly below
+    eq = ct.equilibria(rundir, "eq", start, "Fstar", stop={"Fstar": F_MAX}, DS=0.002,
+                       DSMAX=0.01, MXBF=0, NMX=5000, expect=["BP"], **steps)
+    changes = spectrum.stability_changes(parameter_set, "Fstar",
+                                         numpy.linspace(F_MIN, F_MAX, 1000), **values)
+    pitchforks = [p["Fstar"] for p in eq("BP")]
+    yaw = []
+    for k, point in enumerate(eq("BP")[:1]):
+        # from the first pitchfork to the second, both signs of psi
+        for sign in (1, -1):
+            yaw.append(ct.run(rundir, f"yaw{'pm'[sign < 0]}", "equilibria", data=point, ISW=-1,
+                              ICP=["Fstar"] + mlgmodel.MEASURES, DS=0.001 * sign, DSMAX=0.005,
+                              NMX=3000, MXBF=0,
+                              UZSTOP={"Fstar": [F_MIN, F_MAX, pitchforks[-1] + 1e-3]}))
+    hopf = [v for v, kind, _ in changes if kind == "HB"]
+    orbits = []
+    for k, v in enumerate(hopf):
+        point = ct.hopf_point(rundir, f"hb{k + 1}", parameter_set, "Fstar", v, **values)
+        orbits.append(ct.periodic_from(rundir, f"po{k + 1}", point, "Fstar",
+                                       stop={"Fstar": [F_MIN, F_MAX]}, DS=0.002, DSMAX=0.02,
+                                       NMX=3000, **steps))
+    return eq, pitchforks, yaw, hopf, orbits
+
+
+def bistable_interval(pitchforks, hopf, orbits):
+    """(a_12, b_12): the loads where straight rolling is stable (between the
+    last pitchfork and the Hopf point) and a stable orbit coexists with it,
+    separated from it by unstable orbits.  The orbit branch leaves the Hopf
+    point stable (low frequency); the stable orbits that coexist with stable
+    straight rolling are on its later stable segments."""
+    lower, upper = pitchforks[-1], hopf[0]
+    pieces = [piece for diagram in orbits for branch in diagram
+              for piece in branches.segments(branch, "Fstar", "psi_amp")]
+    coexisting = [min(xs) for xs, _, stable in pieces[1:] if stable]
+    separating = [max(xs) for xs, _, stable in pieces if not stable]
+    if not coexisting or not separating:
+        return None, None
+    return max(lower, min(coexisting)), min(upper, max(separating))
+
+
+def numbers(eq, pitchforks, yaw, hopf, orbits):
+    out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(pitchforks)}
+    out.update({f"H{k + 1} F*": f for k, f in enumerate(hopf)})
+    for diagram in orbits:
+        out.update({f"fold {k + 1} F*": p["Fstar"] for k, p in enumerate(diagram("LP"))})
+        out["orbits: lowest F* (turning point)"] = min(min(b["Fstar"]) for b in diagram)
+    a12, b12 = bistable_interval(pitchforks, hopf, orbits)
+    out.update({"a_12": a12, "b_12": b12})
+    return out
+
+
+def freeplay_boundary(parameter_set, loads, variant=0):
+    """psi_fp = y_fp / r_tlk(eta*) [rad] along straight rolling."""
+    out = []
+    for F in loads:
+        model = mlgmodel.Model(parameter_set, Fstar=F, strut_variant=variant, **VALUES)
+        out.append(1e-3 * VALUES["yfp"] / model.r_tlk(model.equilibrium()["eta"]))
+    return numpy.array(out)
+
+
+def compute(name="fig12", variant=0, parameter_set="figures"):
+    found = runs(parameter_set, name, variant)
+    eq, pitchforks, yaw, hopf, orbits = found
+    loads = numpy.linspace(F_MIN, F_MAX, 200)
+    return {"name": name, "variant": variant, "numbers": numbers(*found),
+            "eq": jobs.stored(eq, COLUMNS),
+            "pitchforks": pitchforks, "hopf": hopf,
+            "yaw": [jobs.stored(d, COLUMNS) for d in yaw],
+            "orbits": [jobs.stored(d, COLUMNS) for d in orbits],
+            "boundary": (loads, freeplay_boundary(parameter_set, loads, variant))}
+
+
+def plot(result):
+    paper.report(result["name"], result["numbers"])
+    eq, pitchforks, hopf = jobs.loaded(result["eq"]), result["pitchforks"], result["hopf"]
+    yaw = [jobs.loaded(d) for d in result["yaw"]]
+    orbits = [jobs.loaded(d) for d in result["orbits"]]
+    fig, (amp, freq) = plt.subplots(2, 1, figsize=(8, 8), sharex=True)
+    loads, boundary = (numpy.asarray(a) for a in result["boundary"])
+    boundary = boundary * DEG
+    amp.plot(loads, boundary, color="0.6", lw=3, label=r"$\psi_{fp}$")
+    amp.plot(loads, -boundary, color="0.6", lw=3)
+    draw.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
+    for diagram in yaw:
+        for branch in diagram:
+            for xs, ys, stable in branches.segments(branch, "Fstar", "psi_mean"):
+                amp.plot(xs, ys * DEG, "-." if stable else ":",
+                         color=draw.STABLE if stable else draw.UNSTABLE, lw=1.4)
+    for diagram in orbits:
+        draw.plot_branch(amp, diagram, "Fstar", "psi_amp", scale=DEG)
+        draw.plot_branch(freq, diagram, "Fstar", "freq")
+        draw.mark_points(amp, diagram, "LP", "Fstar", "psi_amp", scale=DEG, text="S")
+        draw.mark_points(freq, diagram, "LP", "Fstar", "freq", text="S")
+    for f in pitchforks:
+        amp.plot(f, 0, "ks", ms=4)
+        amp.annotate("P", (f, 0), textcoords="offset points", xytext=(2, -10))
+    for f in hopf:
+        amp.plot(f, 0, "ko", ms=3.5)
+        amp.annotate("H", (f, 0), textcoords="offset points", xytext=(2, 4))
+    amp.set_ylabel(r"$\psi$ amplitude; yaw of stationary branches [deg]")
+    amp.set_title("(a) torsional amplitude (dash-dot: stationary non-zero yaw; grey: "
+                  r"freeplay boundary $\pm\psi_{fp}$)")
+    amp.set_ylim(-0.3, 2.0)
+    freq.set_ylabel("frequency [Hz]")
+    freq.set_xlabel(r"$F_z^*$")
+    freq.set_title("(b) frequency")
+    freq.set_xlim(0, F_MAX)
+    fig.suptitle(rf"Fig. 12, strut variant {result['variant']}: V = 50 m/s, "
+                 r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm (solid stable, dashed unstable)")
+    fig.tight_layout()
+    draw.save(fig, result["name"])
+
+
+def main():
+    variant, name, rest = jobs.variant_option("fig12", __doc__.splitlines()[0])
+    jobs.run_figure(name, lambda: compute(name, variant), plot, argv=rest)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,80 @@
+"""Fig. 13: freeplay magnitude at a fixed scaled profile, eps = 0.1 y_fp
+(section IV.D.1), F* = 1: (a) diagrams in V for y_fp = 0.2, 0.5, 1, 2 mm,
+(b) their stiffness profiles, (c, d) amplitude and frequency of the stable
+orbits at V = 15, 50, 80, 110 m/s continued in y_fp."""
+import matplotlib.pyplot as plt
+import numpy
+
+from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import freeplay
+from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import draw
+from mlgshimmy.shared.draw import magnitude as draw_magnitude
+from mlgshimmy.shared import jobs
+
+FREEPLAYS = freeplay.FIG13_FREEPLAYS
+COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red")
+FIT_RANGE = (0.05, 2.0)   # y_fp range of the linear fits [mm]
+
+
+def parts():
+    """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one),
+    each in its own run directory build/fig13/<part>/."""
+    return mg.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=1.0)
+
+
+def compute(parts):
+    diagrams, orbits = mg.diagrams_of(parts.all())
+    return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits}
+
+
+def numbers(diagrams, orbits):
+    """{quantity: value}: Hopf and fold speeds per y_fp, and per orbit speed
+    the slope of psi_amp against y_fp (fit through 0), its largest relative
+    residual, the intercept of a free linear fit, and the frequency range."""
+    out = mg.diagram_numbers(diagrams)
+    for V, curve in orbits:
+        ys, amp, freq, stable = (numpy.asarray(curve[c]) for c in ("yfp", "psi_amp", "freq",
+                                                                    "stable"))
+        inside = (ys >= FIT_RANGE[0]) & (ys <= FIT_RANGE[1])
+        if not stable[inside].all():
+            raise autoglue.RunError(f"fig13: orbit at V = {V:g} loses stability in y_fp")
+        s0, residual, _, c = mg.linear_fit(ys[inside], amp[inside])
+        out[f"V = {V:g}: psi_amp/y_fp [rad/mm]"] = s0
+        out[f"V = {V:g}: largest rel. residual"] = residual
+        out[f"V = {V:g}: intercept of free fit [rad]"] = c
+        out[f"V = {V:g}: freq min [Hz]"] = freq[inside].min()
+        out[f"V = {V:g}: freq max [Hz]"] = freq[inside].max()
+    return out
+
+
+def plot(result):
+    paper.report("fig13", result["numbers"])
+    fig, axes = plt.subplots(2, 2, figsize=(10, 7.5))
+    k_tlk = mlgmodel.Model("figures")["k_tlk"]
+    for d, colour in zip(result["diagrams"], COLOURS):
+        y = d["yfp"]
+        draw_magnitude.diagram_in_V(axes[0][0], d, colour, f"$y_{{fp}}$ = {y:g} mm")
+        ys, force = freeplay.profile(y, "ratio", k_tlk, span=1.0 / y * 3.0)
+        axes[0][1].plot(ys, force, color=colour, label=f"$y_{{fp}}$ = {y:g} mm")
+    axes[0][0].set(xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]", xlim=(0, mg.V_MAX),
+                   title="(a) diagrams in V (circles H, squares S)")
+    axes[0][0].legend(fontsize=7)
+    axes[0][1].set(xlabel="$y_{tlk}$ [mm]", ylabel=r"$M_{k\psi}/r_{tlk}$ [N]", xlim=(-3, 3),
+                   title=r"(b) stiffness profiles, $\epsilon$ = 0.1 $y_{fp}$")
+    axes[0][1].legend(fontsize=7)
+    draw_magnitude.orbits_in_yfp(axes[1][0], axes[1][1], result["orbits"])
+    axes[1][0].set_title("(c) orbits at fixed V continued in $y_{fp}$")
+    axes[1][1].set_title("(d) their frequency")
+    axes[1][1].set_ylim(0, None)
+    for ax in axes[1]:
+        ax.set_xlim(0, mg.YFP_MAX)
+    fig.suptitle(r"Fig. 13: $F^*$ = 1, $\epsilon/y_{fp}$ = 0.1 (solid stable, dashed unstable)")
+    fig.tight_layout()
+    draw.save(fig, "fig13")
+
+
+if __name__ == "__main__":
+    jobs.run_figure("fig13", compute, plot, parts)

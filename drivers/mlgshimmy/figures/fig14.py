@@ -1,0 +1,99 @@
+"""Fig. 14: freeplay magnitude at a fixed smoothing width eps = 0.1 mm
+(section IV.D.2), F* = 1: (a-f) diagrams in V for y_fp = 0.05, 0.098, 0.11,
+0.15, 0.35, 1.0 mm beside their stiffness profiles, (g, h) amplitude and
+frequency of the stable orbits at V = 15, 50, 80, 110 m/s continued in y_fp,
+with the Hopf curves in (y_fp, V) dot-dashed in (h)."""
+import matplotlib.pyplot as plt
+
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import draw
+from mlgshimmy.shared.draw import magnitude as draw_magnitude
+from mlgshimmy.shared import freeplay
+from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import jobs
+
+FREEPLAYS = freeplay.FIG14_FREEPLAYS
+
+
+def hopf_curves():
+    curves = mg.hopf_curves(paths.rundir("fig14/hopf_curves"), "hopf", "fixed",
+                            figure="fig14")
+    return mg.stored_curves(curves, ("yfp", "V", "freq"))
+
+
+def parts():
+    """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one)
+    and the Hopf curves in (y_fp, V)."""
+    return {**mg.diagram_jobs("fig14", "fixed", FREEPLAYS, orbits_at=1.0),
+            "hopf_curves": hopf_curves}
+
+
+def compute(parts):
+    diagrams, orbits = mg.diagrams_of(parts.all())
+    return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits,
+            "hopf_curves": parts["hopf_curves"]}
+
+
+def lowest_orbit(curve, V):
+    """(y_fp, kind): the smallest y_fp the orbits of speed V reach, and
+    whether that is a Hopf point of straight rolling in y_fp ('Hopf'; AUTO
+    may label the collapse there LP) or a fold in y_fp ('fold')."""
+    y_min = float(min(curve["yfp"]))
+    hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V) if k == "HB"]
+    return y_min, "Hopf" if any(abs(y_min - y) < 2e-3 * y for y in hopf) else "fold"
+
+
+def numbers(diagrams, orbits):
+    """{quantity: value}: Hopf and fold speeds per y_fp; per orbit speed the
+    smallest y_fp the orbits reach and the Hopf points in y_fp there."""
+    out = mg.diagram_numbers(diagrams)
+    for d in diagrams:
+        for first, smallest in d["turns"]:   # whether or not AUTO labels the turn LP
+            if smallest < first - 0.5:
+                out[f"y_fp = {d['yfp']:g}: smallest V of the orbits from H at {first:.1f} "
+                    "[m/s]"] = smallest
+    for V, curve in orbits:
+        y_min, kind = lowest_orbit(curve, V)
+        out[f"V = {V:g}: orbits down to y_fp [mm] ({kind})"] = y_min
+        hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V) if k == "HB"]
+        for k, y in enumerate(hopf):
+            out[f"V = {V:g}: Hopf point {k + 1} in y_fp [mm]"] = y
+    return out
+
+
+def plot(result):
+    paper.report("fig14", result["numbers"])
+    fig = plt.figure(figsize=(12, 12))
+    grid = fig.add_gridspec(4, 6)
+    k_tlk = mlgmodel.Model("figures")["k_tlk"]
+    for n, d in enumerate(result["diagrams"]):
+        y = d["yfp"]
+        row, col = divmod(n, 2)
+        ax = fig.add_subplot(grid[row, 3 * col:3 * col + 2])
+        draw_magnitude.diagram_in_V(ax, d, None, None)
+        ax.set(xlim=(0, mg.V_MAX), xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]",
+               title=f"({'abcdef'[n]}) $y_{{fp}}$ = {y:g} mm")
+        inset = fig.add_subplot(grid[row, 3 * col + 2])
+        ys, force = freeplay.profile(y, "fixed", k_tlk, span=max(3.0, 0.6 / y))
+        inset.plot(ys, force / 1e3, color="k", lw=1)
+        inset.set(xlabel="$y_{tlk}$ [mm]", ylabel=r"$M_{k\psi}/r_{tlk}$ [kN]")
+    ax_amp = fig.add_subplot(grid[3, 0:3])
+    ax_freq = fig.add_subplot(grid[3, 3:6])
+    draw_magnitude.orbits_in_yfp(ax_amp, ax_freq, result["orbits"])
+    label = "Hopf curves"
+    for curve in result["hopf_curves"]:
+        ax_freq.plot(curve["yfp"], curve["freq"], "k-.", lw=0.9, label=label)
+        label = None
+    ax_freq.legend(fontsize=7)
+    ax_amp.set(xscale="log", title="(g) orbits at fixed V continued in $y_{fp}$")
+    ax_freq.set(xscale="log", ylim=(0, 45), title="(h) their frequency; Hopf curves dot-dashed")
+    fig.suptitle(r"Fig. 14: $F^*$ = 1, $\epsilon$ = 0.1 mm (solid stable, dashed unstable; "
+                 "circles H, squares S)")
+    fig.tight_layout()
+    draw.save(fig, "fig14")
+
+
+if __name__ == "__main__":
+    jobs.run_figure("fig14", compute, plot, parts)

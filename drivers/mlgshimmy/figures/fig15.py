@@ -1,0 +1,50 @@
+"""Fig. 15: the stiffness profiles of Figs. 13 and 14 rescaled,
+x* = y_tlk / y_fp and y* = M_kpsi / (r_tlk k_tlk y_fp): (a) eps = 0.1 y_fp,
+where all coincide, (b) eps = 0.1 mm, where they do not.  Eq. (15) only:
+no continuation, no AUTO import and nothing to cache (it draws in seconds)."""
+import matplotlib.pyplot as plt
+import numpy
+
+from mlgshimmy.shared import freeplay as fp
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paper
+
+SPAN = 3.0   # x* range: |x*| <= SPAN
+
+
+def rescaled(yfp, scaling, k_tlk):
+    y, force = fp.profile(yfp, scaling, k_tlk, span=SPAN)
+    return y / yfp, force / (k_tlk * 1e-3 * yfp)
+
+
+def spread(scaling, freeplays, k_tlk):
+    """Largest difference between the rescaled profiles on a common x* grid."""
+    curves = [rescaled(y, scaling, k_tlk)[1] for y in freeplays]
+    return float(numpy.max(numpy.ptp(numpy.array(curves), axis=0)))
+
+
+def main():
+    k_tlk = mlgmodel.Model("figures")["k_tlk"]
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
+    ours = {}
+    for ax, scaling, freeplays, title in (
+            (axes[0], "ratio", fp.FIG13_FREEPLAYS, r"(a) $\epsilon$ = 0.1 $y_{fp}$ (Fig. 13)"),
+            (axes[1], "fixed", fp.FIG14_FREEPLAYS, r"(b) $\epsilon$ = 0.1 mm (Fig. 14)")):
+        for y in freeplays:
+            ax.plot(*rescaled(y, scaling, k_tlk), lw=1.2, label=f"$y_{{fp}}$ = {y:g} mm")
+        ax.plot([-SPAN, -1, 1, SPAN], [1 - SPAN, 0, 0, SPAN - 1], "k--", lw=0.8,
+                label=r"$\epsilon$ = 0 (eq. 14)")
+        ax.set(title=title, xlabel=r"$x^* = y_{tlk}/y_{fp}$", xlim=(-SPAN, SPAN))
+        ax.legend(fontsize=7)
+        ours[f"{title[:3]} largest spread of the rescaled profiles"] = \
+            spread(scaling, freeplays, k_tlk)
+    paper.report("fig15", ours)
+    axes[0].set_ylabel(r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$")
+    fig.suptitle("Fig. 15: rescaled torque-link stiffness profiles")
+    fig.tight_layout()
+    draw.save(fig, "fig15")
+
+
+if __name__ == "__main__":
+    main()

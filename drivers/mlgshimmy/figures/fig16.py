@@ -1,0 +1,202 @@
+"""Fig. 16: the periodic orbits over (V, y_fp) at F* = 1 as surfaces
+lofted through diagrams in V (surfaces.py), (a) eps = 0.1 y_fp, (b) eps =
+0.1 mm, shaded by stability, with the curves of Hopf points and folds of
+cycles; in (b) the rectangles R1 = (0, r1) and R2 = (r2, r3) of y_fp where
+straight rolling is stable up to V = 120 m/s."""
+import matplotlib.pyplot as plt
+import numpy
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+from mlgshimmy.shared import branches
+from mlgshimmy.shared import freeplay
+from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import surfaces
+
+FAMILY = {
+    "ratio": (0.5, 1.0, 1.5, 2.0),   # a pure scaling (Fig. 13): few slices suffice
+    "fixed": (0.04, 0.05, 0.06, 0.07, 0.08, 0.098, 0.11, 0.13, 0.15, 0.2, 0.25, 0.35, 0.6, 0.7,
+              0.8, 1.0),
+}
+HIGHLIGHT = {"ratio": (0.5, 1.0, 2.0), "fixed": freeplay.FIG14_FREEPLAYS}
+DEG = numpy.degrees(1.0)
+Y_MAX = 1.0   # y_fp range [mm] of panel (b)
+SLICE = "0.15"   # colour of the highlighted slices
+HOPF, FOLD = {"color": "b", "ls": "-.", "lw": 1.3}, {"color": "k", "ls": "-.", "lw": 1.5}
+
+
+FOLD_SEED = 0.15   # y_fp [mm] of the "fixed" diagram whose fold starts the fold curve
+
+
+def fold_seed():
+    """The "fixed" diagram at FOLD_SEED and the fold curves through its folds."""
+    rundir = paths.rundir(f"fig16/fixed_y{FOLD_SEED:g}_folds")
+    d = mg.diagram_in_V(rundir, f"fixed_y{FOLD_SEED:g}", "fixed", FOLD_SEED, uzr=(),
+                        figure="fig16")
+    return {"diagram": mg.stored_diagram(d),
+            "fold_curves": mg.stored_curves(mg.fold_curves(rundir, "fold", [d], figure="fig16"),
+                                            ("yfp", "V", "psi_amp"))}
+
+
+def hopf_curves():
+    curves = mg.hopf_curves(paths.rundir("fig16/hopf_curves"), "hopf", "fixed",
+                            figure="fig16")
+    return mg.stored_curves(curves, ("yfp", "V", "freq"))
+
+
+def parts():
+    """One diagram in V per slice (the FOLD_SEED one with the fold curves),
+    the Hopf curves in (y_fp, V) and the window points a, b, c."""
+    work = {}
+    for scaling, freeplays in FAMILY.items():
+        for name, job in mg.diagram_jobs("fig16", scaling, freeplays, f"{scaling}_",
+                                         uzr=()).items():
+            seed = scaling == "fixed" and name == f"fixed_y{FOLD_SEED:g}"
+            work[name + "_folds" if seed else name] = fold_seed if seed else job
+    return {**work, "hopf_curves": hopf_curves, "window": lambda: mg.window_points(mg.FSTAR)}
+
+
+def compute(parts):
+    done = parts.all()
+    family = {scaling: mg.diagrams_of(done, f"{scaling}_")[0] for scaling in FAMILY}
+    window = parts["window"]
+    fold_curves = parts[f"fixed_y{FOLD_SEED:g}_folds"]["fold_curves"]
+    return {"numbers": numbers(family, parts["hopf_curves"], window), "window": window,
+            "family": family, "hopf_curves": parts["hopf_curves"], "fold_curves": fold_curves}
+
+
+def crossing(curves, V):
+    """y_fp values where the stored AUTO curves cross speed V (linear
+    interpolation)."""
+    found = []
+    for curve in curves:
+        ys, Vs = numpy.asarray(curve["yfp"]), numpy.asarray(curve["V"])
+        for i in numpy.nonzero(numpy.diff(numpy.sign(Vs - V)))[0]:
+            t = (V - Vs[i]) / (Vs[i + 1] - Vs[i])
+            found.append(ys[i] + t * (ys[i + 1] - ys[i]))
+    return sorted(found)
+
+
+def numbers(family, hopf_curves, window):
+    """{quantity: value}: r1, r2, r3 (= a, b, c of magnitude.window_points)
+    with AUTO's Hopf curves as a check, and the Hopf and fold speeds of
+    every slice."""
+    out = {f"r{k + 1} = {name} [mm]": window[name] for k, name in enumerate("abc")}
+    out.update({f"V at {name} [m/s]": window["V_" + name] for name in "abc"})
+    for k, y in enumerate(crossing(hopf_curves, mg.V_LIMIT)):
+        out[f"check: AUTO Hopf curves at V = 120, y_fp {k + 1} [mm]"] = y
+    out["check: smallest y_fp of AUTO's low-frequency Hopf curve [mm]"] = min(
+        min(c["yfp"]) for c in hopf_curves if max(c["freq"]) < mg.BANDS["low"][1])
+    for scaling, diagrams in family.items():
+        out.update(mg.diagram_numbers(diagrams, f"{scaling} "))
+    return out
+
+
+def clipped(ys, Vs):
+    """A curve with the points outside the plotted box (y_fp <= Y_MAX,
+    V <= V_MAX) set to NaN: mplot3d does not clip."""
+    outside = (ys > Y_MAX) | (Vs > mg.V_MAX)
+    return numpy.where(outside, numpy.nan, ys), numpy.where(outside, numpy.nan, Vs)
+
+
+def band(freq):
+    """The frequency band (magnitude.BANDS) of an orbit family: "low" or "high"."""
+    return next(name for name, (lo, hi) in mg.BANDS.items() if lo <= freq < hi)
+
+
+def sheets(diagram):
+    """{band: {"V", "amp", "stable"}}: the orbit family of each frequency
+    band in a stored diagram (by the frequency at its Hopf point)."""
+    out = {}
+    for branch in diagram["branches"]:
+        columns = branch["columns"]
+        key = band(columns["freq"][0])
+        if key in out:
+            raise ValueError(f"fig16: two {key}-frequency orbit families at y_fp = "
+                             f"{diagram['yfp']:g} mm; a surface takes one per slice")
+        out[key] = {"V": columns["V"], "amp": columns["psi_amp"], "stable": branch["stable"]}
+    return out
+
+
+def apexes(hopf_curves):
+    """{band: [(V, y_fp)]}: the point of least y_fp of each Hopf curve, where
+    its orbit sheet shrinks to a point (c for the low-frequency sheet)."""
+    out = {}
+    for curve in hopf_curves:
+        k = int(numpy.argmin(curve["yfp"]))
+        out.setdefault(band(curve["freq"][k]), []).append((curve["V"][k], curve["yfp"][k]))
+    return out
+
+
+def orbit_surface(ax, diagrams, hopf_curves):
+    """The orbit sheets lofted through the slices (surfaces.loft; psi
+    amplitude in degrees), shaded by stability, and the slices of Figs. 13
+    and 14 on them (solid stable, dashed unstable) with their folds."""
+    slices = [(d["yfp"], sheets(d)) for d in diagrams]
+    largest = max(numpy.max(c["amp"]) for _, s in slices for c in s.values())
+    quads, stable = surfaces.loft(slices, apexes(hopf_curves), scale=(mg.V_MAX, largest))
+    quads[..., 2] *= DEG
+    ax.set_zlim(0.0, 1.05 * quads[..., 2].max())
+    draw.surface(ax, quads, stable)
+    for d in diagrams:
+        if d["yfp"] not in HIGHLIGHT[d["scaling"]]:
+            continue
+        for branch in jobs.loaded(d["branches"]):
+            for xs, zs, ok in branches.segments(branch, "V", "psi_amp"):
+                ax.plot(xs, numpy.full_like(xs, d["yfp"]), zs * DEG, color=SLICE,
+                        ls="-" if ok else "--", lw=1.3, zorder=3)
+    for d in diagrams:
+        for V, amp in d["folds"]:
+            ax.scatter([V], [d["yfp"]], [amp * DEG], color="k", s=5, zorder=4)
+
+
+def plot(result):
+    paper.report("fig16", result["numbers"])
+    family, window = result["family"], result["window"]
+    fig = plt.figure(figsize=(13, 5.4))
+    for n, scaling in enumerate(("ratio", "fixed")):
+        ax = fig.add_subplot(1, 2, n + 1, projection="3d", computed_zorder=False)
+        diagrams = family[scaling]
+        ys = [d["yfp"] for d in diagrams]
+        ax.set(xlim=(0, mg.V_MAX), ylim=(0, Y_MAX) if scaling == "fixed" else (0, max(ys)))
+        orbit_surface(ax, diagrams, result["hopf_curves"] if scaling == "fixed" else [])
+        if scaling == "ratio":
+            for k in range(3):   # the Hopf speeds do not move with y_fp
+                ax.plot([d["hopf"][k][0] for d in diagrams], ys, 0.0, zorder=3, **HOPF)
+            folds = [(d["folds"][0][0], d["yfp"], d["folds"][0][1] * DEG) for d in diagrams]
+            ax.plot(*zip(*folds), zorder=4, **FOLD)
+            ax.set_title(r"(a) $\epsilon$ = 0.1 $y_{fp}$", y=0.95)
+        else:
+            for curve in result["hopf_curves"]:
+                ys, Vs = clipped(numpy.asarray(curve["yfp"]), numpy.asarray(curve["V"]))
+                ax.plot(Vs, ys, 0.0 * Vs, zorder=3, **HOPF)
+            for curve in result["fold_curves"]:
+                ys, Vs = clipped(numpy.asarray(curve["yfp"]), numpy.asarray(curve["V"]))
+                ax.plot(Vs, ys, numpy.asarray(curve["psi_amp"]) * DEG, zorder=4, **FOLD)
+            for lo, hi, name in ((0.0, window["a"], "R1"), (window["b"], window["c"], "R2")):
+                ax.add_collection3d(Poly3DCollection(
+                    [[(0, lo, 0), (mg.V_LIMIT, lo, 0), (mg.V_LIMIT, hi, 0), (0, hi, 0)]],
+                    facecolor="tab:cyan", alpha=0.5, zorder=0))
+                ax.text(60, 0.5 * (lo + hi), 0, name, fontsize=8, zorder=5)
+            ax.set_title(r"(b) $\epsilon$ = 0.1 mm (R1, R2: stable up to 120 m/s)", y=0.95)
+        ax.set(xlabel="V [m/s]", ylabel="$y_{fp}$ [mm]", zlabel=r"$\psi$ amplitude [deg]")
+        ax.view_init(elev=22, azim=-55)
+        ax.set_box_aspect(None, zoom=0.88)   # room for the axis labels inside the canvas
+    handles = [Patch(color=draw.STABLE, label="stable orbits"),
+               Patch(color=draw.UNSTABLE, label="unstable orbits (brown under a stable sheet)"),
+               Line2D([], [], label="Hopf curves", **HOPF),
+               Line2D([], [], label="fold-of-cycles curves (dots: folds of the slices)", **FOLD),
+               Line2D([], [], color=SLICE, label="slices of Figs. 13 and 14 (dashed unstable)")]
+    fig.legend(handles=handles, loc="lower center", ncol=5, fontsize=8, frameon=False)
+    fig.suptitle("Fig. 16: periodic orbits over (V, $y_{fp}$), $F^*$ = 1", y=0.98)
+    fig.subplots_adjust(left=0.0, right=0.97, bottom=0.02, top=1.0, wspace=0.02)
+    draw.save(fig, "fig16")
+
+
+if __name__ == "__main__":
+    jobs.run_figure("fig16", compute, plot, parts)

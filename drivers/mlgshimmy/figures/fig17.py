@@ -1,0 +1,52 @@
+"""Fig. 17: the Hopf and fold-of-cycles curves of Fig. 16(b) (eps = 0.1 mm,
+F* = 1) in the plane (V, y_fp/eps), with R1 and R2 and the points a, b, c
+that bound them (defined in magnitude.window_points).  Drawn from Fig. 16's
+cached result: no computation of its own."""
+import matplotlib.pyplot as plt
+import numpy
+
+from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
+
+
+def compute():
+    """Fig. 16's curves and window, and the numbers of a, b, c."""
+    fig16 = jobs.read("fig16")
+    window = fig16["window"]
+    numbers = {}
+    for name in "abc":
+        numbers[f"{name}: V [m/s]"] = window["V_" + name]
+        numbers[f"{name}: y_fp/eps"] = window[name] / mg.EPSILON
+    return {"numbers": numbers, "window": window, "hopf_curves": fig16["hopf_curves"],
+            "fold_curves": fig16["fold_curves"]}
+
+
+def plot(result):
+    paper.report("fig17", result["numbers"])
+    window = result["window"]
+    fig, ax = plt.subplots(figsize=(7, 5))
+    eps = mg.EPSILON
+    for kind, style, label in (("hopf_curves", "b-.", "Hopf"),
+                               ("fold_curves", "k-.", "fold of cycles")):
+        for curve in result[kind]:
+            ax.plot(curve["V"], numpy.asarray(curve["yfp"]) / eps, style, lw=1.2, label=label)
+            label = None
+    for lo, hi, name in ((0.0, window["a"], "R1"), (window["b"], window["c"], "R2")):
+        ax.fill_between([0, mg.V_LIMIT], lo / eps, hi / eps, color="tab:cyan", alpha=0.35)
+        ax.text(60, 0.5 * (lo + hi) / eps, name, ha="center", va="center")
+    for name in "abc":
+        V, y = window[f"V_{name}"], window[name] / eps
+        ax.plot(V, y, "ko", ms=4)
+        ax.annotate(name, (V, y), textcoords="offset points", xytext=(4, 4))
+    ax.axvline(mg.V_LIMIT, color="0.4", ls=":", lw=1)
+    ax.set(xlim=(0, mg.V_MAX), ylim=(0, 6), xlabel="V [m/s]", ylabel=r"$y_{fp}/\epsilon$",
+           title=r"Fig. 17: bifurcation curves in (V, $y_{fp}/\epsilon$), $F^*$ = 1, "
+                 r"$\epsilon$ = 0.1 mm")
+    ax.legend(fontsize=8, loc="upper right")
+    draw.save(fig, "fig17")
+
+
+if __name__ == "__main__":
+    jobs.run_figure("fig17", compute, plot)

@@ -1,0 +1,181 @@
+"""Fig. 18: the points a, b, c of Fig. 17 continued in F* (eps = 0.1 mm), the
+regions of the (y_fp/eps, F*) plane by what straight rolling does for V up to
+120 m/s, and the largest envelope 0 < y_fp/eps < kappa*, F* in [0.1, 2],
+inside R1.  Fig. 19 reads kappa* from its cached result.
+`fig18.py --strut-variant 1` does the same with the printed strut spring
+(build/fig18_v1/, build/figures/fig18_v1.*).
+
+a, b, c and the region map come from the eigenvalues of straight rolling
+(magnitude.window_points, magnitude.growth) on an F* grid; a and b are also
+continued by AUTO as curves of Hopf points at V = 120 m/s in (y_fp, F*) as a
+check.  The regions drawn are bounded by the curves a, b, c and the
+pitchfork; the cells of the eigenvalue grid only label them (regionmap)."""
+import matplotlib.pyplot as plt
+import numpy
+from matplotlib.colors import ListedColormap
+from matplotlib.patches import Patch
+
+from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import regions
+from mlgshimmy.shared import jobs
+
+FSTARS = mg.ENVELOPE_LOADS
+MAP_KAPPA = numpy.geomspace(0.05, 8.0, 50)
+MAP_SPEEDS = numpy.linspace(mg.V_MIN, mg.V_LIMIT, 30)
+REGIONS = ("R1", "R2", "gentle oscillations", "high-frequency shimmy", "static yaw")
+COLOURS = ("white", "tab:cyan", "khaki", "salmon", "0.7")
+
+
+def region(Fstar, kappa, b, **model):
+    """Index in REGIONS of what straight rolling does for V <= 120 m/s."""
+    worst = {band: max(mg.growth(Fstar, kappa * mg.EPSILON, V, **model)[band]
+                       for V in MAP_SPEEDS)
+             for band in mg.BANDS}
+    if worst["high"] > 0:
+        return 3
+    if worst["real"] > 0:
+        return 4
+    if worst["low"] > 0:
+        return 2
+    return 0 if b is None or kappa * mg.EPSILON < b else 1
+
+
+def auto_check(rundir, **model):
+    """a and b continued by AUTO in (y_fp, F*) at V = 120 from F* = 1:
+    {name: [runs]}; a run that fails is reported and left out."""
+    window = mg.window_points(mg.FSTAR, **model)
+    out = {}
+    for name in ("a", "b"):
+        curve = mg.window_point_curve(rundir, name, window[name], mg.FSTAR,
+                                      (FSTARS[0], FSTARS[-1]), **model)
+        out[name] = []
+        for d, run in curve.items():
+            if isinstance(run, autoglue.RunError):
+                mg.progress("fig18", f"AUTO: {name} continued {d} in F* FAILED: {run.brief}")
+            else:
+                out[name].append(run)
+                mg.progress("fig18", f"AUTO: {name} continued {d} in F*")
+    return out
+
+
+def runs(where="fig18", **model):
+    """(window points per F*, region map, AUTO's check runs)."""
+    rundir = paths.rundir(where)
+    points = []
+    for Fstar in FSTARS:
+        points.append(mg.window_points(Fstar, **model))
+        p = points[-1]
+        mg.progress(where, f"F* = {Fstar:.2f}: a {p['a']}, b {p['b']}, c {p['c']:.5g} "
+                           f"(V {p['V_c']:.3g}), pitchfork {p['p']:.5g}")
+    grid = numpy.array([[region(p["Fstar"], k, p["b"], **model) for k in MAP_KAPPA]
+                        for p in points])
+    mg.progress(where, "region map done")
+    return points, grid, auto_check(rundir, **model)
+
+
+def kappa_star(points, **model):
+    """min over F* of the smallest y_fp/eps with unstable straight rolling:
+    the grid minimum, refined on a grid 10 times finer around it."""
+    return mg.kappa_star(lambda F: mg.window_points(F, **model), FSTARS, points)
+
+
+def numbers(points, auto, kappa, best):
+    out = {"kappa*": kappa, "kappa*: at F*": best["Fstar"], "kappa*: at V [m/s]": best["first_V"]}
+    for p in points:
+        if round(p["Fstar"] * 10, 6) % 2 == 0:
+            for k in "abcp":
+                if p[k] is not None and numpy.isfinite(p[k]):
+                    out[f"F* = {p['Fstar']:.1f}: {k} [y_fp/eps]"] = p[k] / mg.EPSILON
+    for name, runs in auto.items():
+        # where the scan's point lies on V = 120 (b may lie at lower V)
+        at_limit = [p for p in points if p["V_" + name] == mg.V_LIMIT]
+        for run in runs:
+            Fs, ys = numpy.asarray(run[0]["Fstar"]), numpy.asarray(run[0]["yfp"])
+            order = numpy.argsort(Fs)
+            grid = [p for p in at_limit if Fs.min() <= p["Fstar"] <= Fs.max()]
+            diff = [abs(numpy.interp(p["Fstar"], Fs[order], ys[order]) - p[name]) for p in grid]
+            out[f"check: AUTO {name}, F* {Fs.min():.2f}-{Fs.max():.2f} ({len(grid)} grid "
+                "points at V = 120), largest |AUTO - scan| [mm]"] = max(diff, default=None)
+    return out
+
+
+def compute(name="fig18", variant=0):
+    model = {"strut_variant": float(variant)} if variant else {}
+    points, grid, auto = runs(name, **model)
+    kappa, best = kappa_star(points, **model)
+    mg.progress(name, "kappa* refined")
+    return {"name": name, "variant": variant, "numbers": numbers(points, auto, kappa, best),
+            "kappa_star": kappa,
+            "kappa_star_Fstar": best["Fstar"], "points": points, "grid": grid,
+            "auto": [{"yfp": run[0]["yfp"], "Fstar": run[0]["Fstar"]}
+                     for name_runs in auto.values() for run in name_runs]}
+
+
+RASTER_KAPPA = numpy.geomspace(MAP_KAPPA[0], MAP_KAPPA[-1], 600)
+EDGES = ("a", "b", "c", "p")   # the curves bounding the regions
+BEYOND = 10.0                  # a point at infinity is drawn this far beyond the plot
+
+
+def edge_curves(points):
+    """The curves a, b, c, p as (y_fp/eps, F*) polylines; a point that does
+    not exist (None: no crossing for y_fp up to YFP_MAX, beyond the plot) is
+    placed beyond the plot's right edge, so the curve leaves through it."""
+    Fs = [p["Fstar"] for p in points]
+    return {name: ([BEYOND * MAP_KAPPA[-1] if p[name] is None or not numpy.isfinite(p[name])
+                    else p[name] / mg.EPSILON for p in points], Fs) for name in EDGES}
+
+
+def painted_regions(points, grid, raster_F):
+    """[F*, y_fp/eps] on raster_F x RASTER_KAPPA: the region index of each
+    piece between the curves a, b, c, p, labelled by the eigenvalue grid's
+    cells inside it (regions.paint); and the check of the labels."""
+    samples = numpy.full((len(raster_F), len(RASTER_KAPPA)), -1, dtype=int)
+    rows = numpy.rint(regions.index_of(raster_F, FSTARS)).astype(int)
+    cols = numpy.rint(regions.index_of(RASTER_KAPPA, MAP_KAPPA)).astype(int)
+    samples[numpy.ix_(rows, cols)] = grid
+    edges = regions.curve_pixels(RASTER_KAPPA, raster_F, edge_curves(points).values())
+    return regions.paint(edges, samples)
+
+
+def plot(result):
+    paper.report(result["name"], result["numbers"])
+    points, auto, kappa = result["points"], result["auto"], result["kappa_star"]
+    raster_F = numpy.linspace(FSTARS[0], FSTARS[-1], 400)   # where the curves are known
+    painted, check = painted_regions(points, numpy.asarray(result["grid"]), raster_F)
+    print(f"{result['name']}: {check['disagree']} of {check['samples']} grid cells disagree "
+          "with the region between the curves that holds them")
+    fig, ax = plt.subplots(figsize=(7.5, 5.5))
+    ax.grid(False)
+    ax.pcolormesh(RASTER_KAPPA, raster_F, painted, cmap=ListedColormap(COLOURS), vmin=-0.5,
+                  vmax=len(REGIONS) - 0.5, alpha=0.8, shading="nearest", rasterized=True)
+    Fs = [p["Fstar"] for p in points]
+    for name, style in (("a", "b-"), ("b", "b--"), ("c", "g-"), ("p", "k:")):
+        ys = [numpy.nan if p[name] is None else p[name] / mg.EPSILON for p in points]
+        ax.plot(ys, Fs, style, lw=1.6, label=name if name != "p" else "pitchfork")
+    for run in auto:
+        ax.plot(numpy.asarray(run["yfp"]) / mg.EPSILON, run["Fstar"], "w:", lw=1)
+    ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
+                               FSTARS[-1] - FSTARS[0], fill=False, hatch="//", lw=1.2))
+    handles = ax.get_legend_handles_labels()[0] + [
+        Patch(facecolor=colour, edgecolor="0.4", alpha=0.8, label=name)
+        for colour, name in zip(COLOURS, REGIONS)]   # edged: R1 is white
+    ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0], FSTARS[-1]),
+           xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$",
+           title=rf"Fig. 18, strut variant {result['variant']}: straight rolling for "
+                 rf"V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm (hatched: $y_{{fp}}/\epsilon < "
+                 rf"\kappa^*$ = {kappa:.3f})")
+    ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    draw.save(fig, result["name"])
+
+
+def main():
+    variant, name, rest = jobs.variant_option("fig18", __doc__.splitlines()[0])
+    jobs.run_figure(name, lambda: compute(name, variant), plot, argv=rest)
+
+
+if __name__ == "__main__":
+    main()

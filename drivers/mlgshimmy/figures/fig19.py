@@ -1,0 +1,62 @@
+"""Fig. 19: the rescaled stiffness profiles allowed by y_fp/eps < kappa*
+(kappa* of both strut variants from Fig. 18's cached results, fig18 and
+fig18_v1): every allowed profile lies
+between the kappa* profile and the eps -> infinity limit y* = x* (no
+freeplay felt).  The two readings of the strut spring bound a band: the
+profiles between their kappa* profiles are allowed by one only."""
+import matplotlib.pyplot as plt
+import numpy
+
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
+
+SPAN = 3.0
+
+
+def rescaled(kappa, x):
+    """Eq. (15) rescaled (x* = y_tlk/y_fp, y* = M_kpsi/(r_tlk k_tlk y_fp)) for
+    y_fp/eps = kappa: the profile of y_fp = 1 mm, eps = 1/kappa mm."""
+    return numpy.array([mlgmodel.torque_link_force(1.0, 1e-3 * v, 1e-3, 1e-3 / kappa) / 1e-3
+                        for v in x])
+
+
+def read_kappa(name):
+    try:
+        return jobs.read(name)["kappa_star"]
+    except jobs.MissingResult as exc:
+        raise SystemExit(f"fig19: {exc}")
+
+
+def main():
+    kappa, kappa_printed = read_kappa("fig18"), read_kappa("fig18_v1")
+    x = numpy.linspace(-SPAN, SPAN, 601)
+    limit, printed = rescaled(kappa, x), rescaled(kappa_printed, x)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    ax.fill_between(x, printed, x, color="tab:cyan", alpha=0.4,
+                    label=rf"allowed by both: $y_{{fp}}/\epsilon < {kappa_printed:.3f}$")
+    ax.fill_between(x, limit, printed, color="khaki", alpha=0.6,
+                    label=rf"allowed by variant 0 only: ${kappa_printed:.3f} \leq "
+                          rf"y_{{fp}}/\epsilon < {kappa:.3f}$")
+    ax.plot(x, limit, color="tab:blue", lw=1.4,
+            label=rf"$\kappa^*$ = {kappa:.3f} (strut variant 0, default)")
+    ax.plot(x, printed, color="tab:orange", lw=1.4,
+            label=rf"$\kappa^*$ = {kappa_printed:.3f} (strut variant 1, as printed)")
+    ax.plot(x, x, "k--", lw=1, label=r"$\epsilon \to \infty$")
+    ax.plot(x, rescaled(10.0, x), color="tab:red", lw=1,
+            label=r"$y_{fp}/\epsilon$ = 10 (section IV.B)")
+    ax.set(xlim=(-SPAN, SPAN), xlabel=r"$x^* = y_{tlk}/y_{fp}$",
+           ylabel=r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$",
+           title="Fig. 19: allowed rescaled freeplay profiles, both strut readings")
+    ax.legend(fontsize=7)
+    paper.report("fig19", {
+        "kappa*, strut variant 0": kappa, "kappa*, strut variant 1": kappa_printed,
+        "slope of the kappa* profile at x* = 0": numpy.gradient(limit, x)[len(x) // 2],
+        "slope of the variant-1 kappa* profile at x* = 0":
+            numpy.gradient(printed, x)[len(x) // 2]})
+    draw.save(fig, "fig19")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,402 @@
+"""The interface to AUTO-07p's Python package (python/auto of AUTO_DIR).
+
+    from mlgshimmy.shared import autoglue
+    bd = autoglue.run(rundir, "eq", constants=path_to_c_file, e=model,
+                      expect=["HB"], ICP=["p"])
+    auto = autoglue.init()          # AUTO's CLUI module, for interactive use
+
+Importing this module does nothing to the process: init() (called by every
+function here that needs AUTO) finds AUTO through AUTO_DIR (default: the
+tree the Makefile builds, build/auto/07p), puts its python/ on sys.path,
+gives numpy >= 1.24 the `numpy.bool` AUTO 0.9.2 still uses, and sets the
+OpenMP thread count of the AUTO runs this process starts to
+MLG_AUTO_THREADS (1 unless set: more threads change AUTO's rounding, and a
+fold curve of Fig. 11 then stops at a run-dependent point; an inherited
+OMP_NUM_THREADS is not used).  A missing AUTO raises AutoMissing.
+
+Run directories are owned (claim): the first process to use one locks it
+for its lifetime and empties it; another process that wants the same
+directory waits for it and says so, so two runs never write one directory.
+AUTO's own output goes to <rundir>/<name>.log; the console gets one line per
+run, and a failed run's RunError carries the tail of its log.
+"""
+import atexit
+import fcntl
+import os
+import shutil
+import signal
+import sys
+import time
+
+import numpy
+
+from mlgshimmy.shared import branches, paths
+
+
+class AutoMissing(RuntimeError):
+    """No usable AUTO-07p tree at AUTO_DIR, or a bad thread count."""
+
+
+_auto = None
+
+
+def auto_dir() -> str:
+    return os.environ.get("AUTO_DIR", os.path.join(paths.BUILD, "auto", "07p"))
+
+
+def threads() -> str:
+    """MLG_AUTO_THREADS, checked: the OpenMP threads of each AUTO run."""
+    value = os.environ.get("MLG_AUTO_THREADS", "1")
+    if not (value.isdigit() and int(value) >= 1):
+        raise AutoMissing(f"MLG_AUTO_THREADS={value!r} must be a whole number >= 1")
+    return value
+
+
+def init():
+    """AUTO's Python package, imported once (see the module's text)."""
+    global _auto
+    if _auto is None:
+        where = auto_dir()
+        if not os.path.isdir(os.path.join(where, "python", "auto")):
+            raise AutoMissing(f"no AUTO-07p at AUTO_DIR={where} (run `make setup`, or set "
+                              "AUTO_DIR to a built AUTO-07p tree)")
+        os.environ["AUTO_DIR"] = where    # AUTO's own modules read it
+        os.environ["OMP_NUM_THREADS"] = threads()
+        if os.path.join(where, "python") not in sys.path:
+            sys.path.insert(0, os.path.join(where, "python"))
+        if "bool" not in vars(numpy):  # hasattr() would warn on numpy 1.24
+            numpy.bool = numpy.bool_  # AUTO 0.9.2's Points.py still uses numpy.bool
+        import auto
+        _auto = auto
+    return _auto
+
+
+class RunError(RuntimeError):
+    """An AUTO run that failed, did not converge or missed a special point.
+    str() ends with the tail of the run's log; .brief is the first line."""
+
+    def __init__(self, message, log=None):
+        self.brief = message
+        if log:
+            message += f"\n  log {log}, last lines:\n" + "".join(
+                f"    | {line}" for line in tail(log))
+        super().__init__(message)
+
+
+def tail(path, lines=15):
+    """The last `lines` lines of a text file ([] if it cannot be read)."""
+    try:
+        with open(path, errors="replace") as f:
+            return f.readlines()[-lines:]
+    except OSError:
+        return []
+
+
+# Directories this process owns (path -> open lock file, held until exit).
+# Child processes inherit the list through the environment: a job started by
+# a driver may use a directory under one its parent claimed without waiting
+# for its own parent.
+_claimed = {}
+CLAIMED_ENV = "MLG_RUN_CLAIMED"
+
+
+def _owned(path):
+    inherited = [p for p in os.environ.get(CLAIMED_ENV, "").split(os.pathsep) if p]
+    return any(path == p or path.startswith(p + os.sep) for p in list(_claimed) + inherited)
+
+
+def claim(path, keep=None):
+    """Make the run directory `path` this process's own and return it.
+
+    The first claim takes an exclusive lock (flock on .<dir>.lock beside it,
+    released when the process ends) and empties the directory, so that every
+    file in it comes from this process (unless keep(path), called under the
+    lock, says its contents are a valid cached result).  If another live
+    process holds the lock, this waits until it ends, saying so on stderr.
+    Claims of the same directory, or of one below an owned one, return at
+    once."""
+    path = os.path.abspath(path)
+    if _owned(path):
+        os.makedirs(path, exist_ok=True)
+        return path
+    parent, base = os.path.split(path)
+    os.makedirs(parent, exist_ok=True)
+    lock = open(os.path.join(parent, f".{base}.lock"), "a+")
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        lock.seek(0)
+        holder = lock.read().strip() or "another process"
+        print(f"{_label(path)}: {os.path.relpath(path)} is in use by {holder}; "
+              "waiting for it to finish", file=sys.stderr, flush=True)
+        waited = time.monotonic()
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        print(f"{_label(path)}: {os.path.relpath(path)} free after "
+              f"{time.monotonic() - waited:.0f} s; computing it afresh",
+              file=sys.stderr, flush=True)
+    lock.seek(0)
+    lock.truncate()
+    lock.write(f"process {os.getpid()} ({' '.join(sys.argv)[:200]})\n")
+    lock.flush()
+    if not (keep and os.path.isdir(path) and keep(path)):
+        shutil.rmtree(path, ignore_errors=True)
+    os.makedirs(path, exist_ok=True)
+    _claimed[path] = lock
+    os.environ[CLAIMED_ENV] = os.pathsep.join(
+        [p for p in os.environ.get(CLAIMED_ENV, "").split(os.pathsep) if p] + [path])
+    return path
+
+
+def _label(rundir):
+    """The figure a run directory belongs to: its first component below
+    RUN_ROOT (its own name elsewhere)."""
+    rel = os.path.relpath(os.path.abspath(rundir), paths.run_root())
+    return os.path.basename(rundir) if rel.startswith("..") else rel.split(os.sep)[0]
+
+
+class _Progress:
+    """One console line per AUTO run: figure, run, done/total, elapsed.
+    The total is the number of runs the same figure made last time, under
+    any run root (build/.runs/<figure>.count), "?" the first time."""
+
+    def __init__(self):
+        self.started = time.monotonic()
+        self.done = {}
+
+    def count_file(self, figure):
+        return os.path.join(paths.BUILD, ".runs", f"{figure}.count")
+
+    def previous(self, figure):
+        try:
+            with open(self.count_file(figure)) as f:
+                return int(f.read())
+        except (OSError, ValueError):
+            return None
+
+    def step(self, rundir, name, seconds, status="done"):
+        figure = _label(rundir)
+        if figure not in self.done:
+            self.done[figure] = [0, self.previous(figure)]
+        self.done[figure][0] += 1
+        done, total = self.done[figure]
+        total = "?" if total is None or total < done else total
+        where = os.path.relpath(os.path.join(os.path.abspath(rundir), name),
+                                os.path.join(paths.run_root(), figure))
+        print(f"{figure}: {where} {status} ({done}/{total}) in {seconds:.1f} s, "
+              f"{time.monotonic() - self.started:.0f} s elapsed", flush=True)
+
+    def save(self):
+        """At exit: remember each figure's run count as next time's total."""
+        for figure, (done, _) in self.done.items():
+            try:
+                os.makedirs(os.path.dirname(self.count_file(figure)), exist_ok=True)
+                with open(self.count_file(figure), "w") as f:
+                    f.write(f"{done}\n")
+            except OSError:
+                pass
+
+
+PROGRESS = _Progress()
+atexit.register(PROGRESS.save)
+
+
+class _LogTo:
+    """Send this process's stdout and stderr (its own and AUTO's child
+    processes') to a file, at the descriptor level."""
+
+    def __init__(self, path):
+        self.path = path
+
+    def __enter__(self):
+        sys.stdout.flush()
+        sys.stderr.flush()
+        self.saved = [os.dup(1), os.dup(2)]
+        log = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
+        os.dup2(log, 1)
+        os.dup2(log, 2)
+        os.close(log)
+
+    def __exit__(self, *exc):
+        sys.stdout.flush()
+        sys.stderr.flush()
+        for fd, saved in zip((1, 2), self.saved):
+            os.dup2(saved, fd)
+            os.close(saved)
+
+
+def check_prebuilt(model):
+    """Fail unless AUTO's run() would use <model>.exe as it is.
+
+    run() recompiles <model>.o if <model>.c is newer and relinks <model>.exe
+    if <model>.o or $AUTO_DIR/lib/*.o is newer; its link line has no room for
+    our libraries, so executables built by the Makefile must be up to date.
+    """
+    def mtime(path):
+        if not os.path.exists(path):
+            raise RunError(f"{path} is missing: build it with make")
+        return os.stat(path).st_mtime
+
+    libdir = os.path.join(auto_dir(), "lib")
+    auto_objects = [os.path.join(libdir, f) for f in os.listdir(libdir)
+                    if f.endswith(".o")]
+    exe = mtime(model + ".exe")
+    obj = mtime(model + ".o")
+    if mtime(model + ".c") > obj or max(map(mtime, auto_objects + [model + ".o"])) > exe:
+        raise RunError(f"{model}.exe is out of date: rebuild it with make")
+
+
+def special_points(bd):
+    """List (branch number, label, type) of every labelled point."""
+    return [(branch.BR, label, ty) for branch in bd
+            for _, label, ty in branches.labelled_points(branch)]
+
+
+def read_constants(paths):
+    """A constants file, or a list of them: each later file overrides the
+    constants it sets (read with AUTO's parseC; unset ones stay as they are)."""
+    if isinstance(paths, str):
+        paths = [paths]
+    auto = init()
+    merged = auto.parseC.parseC(os.path.abspath(paths[0]))
+    for path in paths[1:]:
+        override = auto.parseC.parseC(os.path.abspath(path))
+        for key in override:
+            if key != "new" and override[key] is not None:
+                merged[key] = override[key]
+    return merged
+
+
+def _cpu_seconds(pid):
+    """CPU time (user + system) a process has used, from /proc/<pid>/stat."""
+    with open(f"/proc/{pid}/stat") as stat:
+        fields = stat.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+class _CPULimit:
+    """While active, kills this process's children (the AUTO executable) once
+    one has used `seconds` of CPU time (None: no limit).  A stall guard on
+    CPU, not wall, time: a loaded machine must not cut short a run that an
+    idle one finishes, or the figure would depend on the load."""
+
+    def __init__(self, seconds):
+        self.seconds, self.fired = seconds, False
+
+    def __enter__(self):
+        if self.seconds:
+            signal.signal(signal.SIGALRM, self._check)
+            signal.setitimer(signal.ITIMER_REAL, 1.0, 1.0)
+        return self
+
+    def __exit__(self, *exc):
+        if self.seconds:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+
+    def _check(self, signum, frame):
+        for entry in os.listdir("/proc"):
+            try:
+                with open(f"/proc/{entry}/stat") as stat:
+                    parent = int(stat.read().rsplit(")", 1)[1].split()[1])
+                if parent == os.getpid() and _cpu_seconds(entry) > self.seconds:
+                    os.kill(int(entry), signal.SIGKILL)
+                    self.fired = True
+            except (OSError, ValueError, IndexError):
+                continue
+
+
+def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time_limit=None,
+        **kw):
+    """Run AUTO in rundir, save to b./s./d.<name> there, and check the result.
+
+    constants: path of a constants file, or a list of files merged in order
+    (read_constants), read afresh for this run (every constant they do not
+    set takes AUTO's default); kw overrides single
+    constants and may give e= (equations name; with a directory part it must
+    name an executable prebuilt by the Makefile, see check_prebuilt).
+    Raises RunError naming the run if any branch ends in MX or a special point
+    type listed in expect (e.g. "HB", "LP", "BP") does not occur.  With
+    allow_mx, an MX is no error: the diagram is returned
+    (for curves known to end at a hard spot; the caller marks the end);
+    its progress line says so.
+    time_limit: CPU seconds of the AUTO executable after which it is killed
+    and RunError raised (for runs known to stall in AUTO's iterations).
+    rundir is claimed (claim); AUTO's messages go to <rundir>/<name>.log.
+    """
+    auto = init()
+    rundir = claim(rundir)
+    if constants is not None:
+        kw["c"] = read_constants(constants)
+    if os.sep in kw.get("e", ""):
+        kw["e"] = os.path.abspath(kw["e"])
+        check_prebuilt(kw["e"])
+
+    outputs = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
+    log = os.path.join(rundir, f"{name}.log")
+    started = time.monotonic()
+    limit = _CPULimit(time_limit)
+    cwd = os.getcwd()
+    os.chdir(rundir)
+    try:
+        for stale in ["fort.7", "fort.8", "fort.9"] + outputs:
+            if os.path.exists(stale):
+                os.remove(stale)
+        with limit, _LogTo(log):
+            auto.run(data, sv=name, **kw)
+    except auto.AUTOExceptions.AUTORuntimeError as exc:
+        why = f"killed after the limit of {time_limit} s of CPU time" if limit.fired else exc
+        PROGRESS.step(rundir, name, time.monotonic() - started, "FAILED")
+        raise RunError(f"run {name} in {rundir}: AUTO stopped ({why})", log) from exc
+    finally:
+        os.chdir(cwd)
+    missing = [path for path in outputs if not os.path.exists(path)]
+    if missing:
+        raise RunError(f"run {name} in {rundir}: AUTO wrote no {', '.join(missing)}", log)
+    bd = read_diagram(outputs, f"run {name} in {rundir}", log)
+
+    status = "done"
+    try:
+        check_diagram(bd, f"run {name} in {rundir}", expect)
+    except RunError as exc:
+        if not (allow_mx and "(MX)" in str(exc)):
+            PROGRESS.step(rundir, name, time.monotonic() - started, "FAILED")
+            raise RunError(str(exc), log) from None
+        status = "done, ends in MX (kept up to there, as allowed)"
+    PROGRESS.step(rundir, name, time.monotonic() - started, status)
+    return bd
+
+
+def read_diagram(outputs, what, log=None):
+    """The diagram of a run's b-, s- and d-files, its b-file parsed now (AUTO
+    reads lazily): RunError if it is empty, unreadable, or its last line
+    was cut short."""
+    auto = init()
+    try:
+        with open(outputs[0], "rb") as f:
+            text = f.read()
+        bd = auto.bifDiag.bifDiag(*outputs)
+        lengths = [len(branch) for branch in bd]
+    except Exception as exc:  # any parser failure means an unreadable file
+        raise RunError(f"{what}: {outputs[0]} unreadable ({type(exc).__name__}: {exc})",
+                       log) from exc
+    if not text.endswith(b"\n") or not lengths or min(lengths) == 0:
+        raise RunError(f"{what}: {outputs[0]} is empty or cut short", log)
+    return bd
+
+
+def check_diagram(bd, what, expect=()):
+    """Raise RunError about `what` if a branch of bd holds non-finite values,
+    ends in MX, or a special point type listed in expect does not occur."""
+    for branch in bd:
+        if not numpy.all(numpy.isfinite(branch.coordarray)):
+            raise RunError(f"{what}: non-finite values on branch {branch.BR} "
+                           "(AUTO continued past a rejected step)")
+    points = special_points(bd)
+    mx = [(br, lab) for br, lab, ty in points if ty == "MX"]
+    if mx:
+        raise RunError(f"{what}: no convergence (MX) at "
+                       + ", ".join(f"branch {br} label {lab}" for br, lab in mx))
+    found = {ty for _, _, ty in points}
+    missing = [ty for ty in expect if ty not in found]
+    if missing:
+        raise RunError(f"{what}: expected special points {missing} missing"
+                       f" (found {sorted(found)})")

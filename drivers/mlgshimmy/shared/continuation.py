@@ -1,0 +1,269 @@
+"""AUTO recipes on the MLG model: runs started at given parameters,
+straight rolling, Hopf points (scanned by `spectrum`, located by AUTO),
+periodic orbits followed across Hopf points with one collapse rule, and
+curves of Hopf points and folds of cycles.
+
+    start = Start("figures", Fstar=1.0)              # parameters + equilibrium
+    eq = equilibria(rundir, "eq_F1", start)          # straight rolling in V
+    po = periodic_from(rundir, "po_F1", eq("HB1"), stop={"V": 600})
+    d = speed_diagram(rundir, "figures", {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1})
+"""
+import os
+
+import numpy
+
+from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import branches
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import spectrum
+
+MODEL = os.path.join(paths.BUILD, "models", "mlg")
+CONSTANTS = os.path.join(paths.ROOT, "constants", "c.mlg")
+RUN_CONSTANTS = os.path.join(paths.ROOT, "constants", "runs")
+V_MIN, V_MAX = 0.5, 600.0   # m/s: the paper's speeds (V = 0 is degenerate: tyre states undetermined)
+SPEED_SCAN = numpy.linspace(V_MIN, V_MAX, 3000)   # the eigenvalue scan of straight rolling in V
+COLLAPSED = 1e-8      # rad: an orbit with a smaller psi amplitude is straight rolling
+SHRUNK = 0.3          # an orbit below this part of its branch's largest amplitude has shrunk
+SAME_FREQUENCY = 0.05  # relative: an orbit this close to a Hopf frequency may collapse there
+
+
+class Start:
+    """Parameters of a run and the straight-rolling equilibrium there,
+    validated by the c/ library before AUTO starts."""
+
+    def __init__(self, parameter_set="figures", **values):
+        self.model = mlgmodel.Model(parameter_set, **values)
+        self.model.check()
+        self.U = self.model.equilibrium()
+        self.PAR = self.model.par()
+
+
+def run(rundir, name, kind=None, overlay=None, **kw):
+    """autoglue.run on the MLG model: the base constants, then the run-type
+    file constants/runs/c.<kind> if given, then the overlay file
+    constants/runs/c.<overlay> if given, then the keyword overrides."""
+    files = [CONSTANTS] + [os.path.join(RUN_CONSTANTS, f"c.{k}") for k in (kind, overlay) if k]
+    rundir = autoglue.claim(rundir)           # emptied on first use: claim, then write
+    mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
+    return autoglue.run(rundir, name, constants=files, e=MODEL, **kw)
+
+
+def load(rundir, name):
+    """A run saved by run() (b./s./d.<name> in rundir) read back as a
+    diagram, checked as run() checks it (MX allowed: such runs are kept)."""
+    files = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
+    missing = [f for f in files if not os.path.exists(f)]
+    if missing:
+        raise autoglue.RunError(f"run {name} in {rundir}: missing {', '.join(missing)}")
+    bd = autoglue.init().bifDiag.bifDiag(*files)
+    try:
+        autoglue.check_diagram(bd, f"run {name} in {rundir}")
+    except autoglue.RunError as exc:
+        if "(MX)" not in str(exc):
+            raise
+    return bd
+
+
+def equilibria(rundir, name, start, parameter="V", stop=None, overlay=None, **kw):
+    """Straight rolling continued in `parameter` from `start` (overlay: a
+    constants/runs/c.<overlay> on top of c.equilibria)."""
+    return run(rundir, name, "equilibria", overlay, PAR=start.PAR, U=start.U,
+               ICP=[parameter] + mlgmodel.MEASURES, UZSTOP=stop or {}, **kw)
+
+
+def periodic_from(rundir, name, point, parameter="V", stop=None, overlay=None, **kw):
+    """The periodic orbits born at the Hopf point `point` (or through the
+    orbit `point`), continued in `parameter` (overlay as for equilibria)."""
+    return run(rundir, name, "periodic", overlay, data=point, ICP=[parameter, 11] + mlgmodel.MEASURES,
+               UZSTOP=stop or {}, **kw)
+
+
+def hopf_point(rundir, name, parameter_set, parameter, value, width=None, **values):
+    """AUTO's HB solution at the Hopf point near `value` (from a spectrum
+    scan): straight rolling continued through a narrow window around it with
+    steps small enough for AUTO's Hopf test."""
+    width = width or 0.01 * max(abs(value), 1.0)
+    start = Start(parameter_set, **{**values, parameter: value - width})
+    bd = equilibria(rundir, name, start, parameter, stop={parameter: value + width},
+                    DS=width / 100, DSMAX=width / 100, NMX=1000, expect=["HB"])
+    point = bd("HB1")
+    if abs(point[parameter] - value) > 1e-4 * max(abs(value), 1.0):
+        raise autoglue.RunError(f"run {name}: AUTO's HB at {parameter} = {point[parameter]:.6g}, "
+                                f"the eigenvalue scan's at {value:.6g}")
+    return point
+
+
+def hopf_points(rundir, name, parameter_set, parameter, grid, limit=None, **values):
+    """Every Hopf point of straight rolling along `grid` (at most `limit`,
+    from the lowest): scanned by spectrum.hopf_scan, each located by AUTO in
+    run <name><k>, k = 1, 2, ..."""
+    found = spectrum.hopf_scan(parameter_set, parameter, grid, **values)[:limit]
+    return [hopf_point(rundir, f"{name}{k}", parameter_set, parameter, v, **values)
+            for k, (v, _) in enumerate(found, 1)]
+
+
+def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_failed=False,
+                  figure="orbits", **kw):
+    """The periodic orbits from `start` (an HB point or an orbit) continued
+    in `parameter` within `bounds`, across the Hopf points of straight
+    rolling on the way, `hopf` = {value: frequency in Hz}.
+
+    Each run stops gap(h) either side of every Hopf value h not yet passed.
+    The one collapse rule: where a run stops next to h, the branch has
+    collapsed onto straight rolling there if its last orbit of non-zero
+    amplitude has shrunk (below SHRUNK of the branch's largest amplitude)
+    and has h's frequency (within SAME_FREQUENCY); it ends there.  Otherwise
+    it only passes h and is continued past it from the stop, as a further
+    run.  names(n) names the n-th run.  With allow_failed a run ending in MX
+    is kept up to the MX and a run that fails is reported and the branch
+    ends; else RunError.  A step longer than 2 DSMAX in the parameter raises
+    RunError (AUTO switched to another branch).
+    Returns (runs, {h: True if the branch collapsed there})."""
+    runs, left, ends, origin = [], dict(hopf), {}, start
+    while origin is not None:
+        name = names(len(runs))
+        stops = list(bounds) + [h + s * gap(h) for h in left for s in (-1, 1)]
+        try:
+            orbits = periodic_from(rundir, name, origin, parameter, stop={parameter: stops},
+                                   allow_mx=allow_failed, **kw)
+        except autoglue.RunError as exc:
+            if not allow_failed:
+                raise
+            print(f"{figure}: orbits {name} left out: {exc.brief}", flush=True)
+            break
+        runs.append(orbits)
+        last = orbits[0]
+        values = numpy.asarray(last[parameter])
+        if "DSMAX" in kw and len(values) > 1 and \
+                numpy.max(numpy.abs(numpy.diff(values))) > 2 * kw["DSMAX"]:
+            raise autoglue.RunError(f"run {name}: a step jumped by more than {2 * kw['DSMAX']} "
+                                    f"in {parameter} (switched to another branch)")
+        # the last orbit of non-zero amplitude (an MX run may go on along
+        # straight rolling after collapsing onto it)
+        amp = numpy.asarray(last["psi_amp"])
+        alive = numpy.flatnonzero(amp > COLLAPSED)
+        i = alive[-1] if len(alive) else len(amp) - 1
+        end, freq = values[i], last["freq"][i]
+        largest = max(numpy.max(r[0]["psi_amp"]) for r in runs)
+        origin = None
+        folds = ", ".join(f"{p[parameter]:.5g}" for p in orbits("LP")) or "none"
+        print(f"{figure}: orbits {name} from {parameter} = {last[parameter][0]:.5g}: "
+              f"{len(values)} points, ends at {end:.5g}, folds at {folds}", flush=True)
+        for h in [h for h in left if abs(end - h) < 2 * gap(h)]:
+            del left[h]
+            ends[h] = bool(amp[i] < SHRUNK * largest
+                           and abs(freq - hopf[h]) <= SAME_FREQUENCY * hopf[h])
+            if not ends[h]:
+                print(f"{figure}: orbits {name} pass the Hopf point {parameter} = {h:.5g} "
+                      f"(amplitude {amp[i]:.3g} rad, {freq:.4g} Hz there)", flush=True)
+                origin = orbits("UZ")[-1]
+    return runs, ends
+
+
+class Diagram:
+    """Straight rolling along one parameter: its Hopf points hopf =
+    [(value, frequency in Hz)] and real-eigenvalue crossings bp (spectrum
+    scan), parts = [(AUTO's HB point, periodic run)] of the branches born
+    there and names = the names of those runs (for load()).  Keywords (e.g.
+    yfp, scaling) are kept as attributes."""
+
+    def __init__(self, parameter, hopf, bp, parts, names, **about):
+        self.parameter, self.hopf, self.bp, self.parts = parameter, hopf, bp, parts
+        self.names = names
+        self.__dict__.update(about)
+
+    def name_of(self, run):
+        """The name of one of the diagram's runs."""
+        return next(name for (_, r), name in zip(self.parts, self.names) if r is run)
+
+    @property
+    def branches(self):
+        return [run for _, run in self.parts]
+
+    def folds(self):
+        """[(run, label, value, psi_amp)] of every fold of cycles, except LP
+        labels within 0.1% of a Hopf value: AUTO's fold test fires spuriously
+        on the first steps from a Hopf point (seen at y_fp = 0.35, 0.5 and
+        1 mm)."""
+        p = self.parameter
+        return [(run, lab, run(lab)[p], run(lab)["psi_amp"])
+                for run in self.branches for branch in run
+                for _, lab, _ in branches.labelled_points(branch, "LP")
+                if all(abs(run(lab)[p] - h) > 1e-3 * abs(h) for h, _ in self.hopf)]
+
+
+def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
+                  parameter="V", tag="", first=1, gap=0.01, allow_failed=False,
+                  figure="orbits", about=None, **steps):
+    """The Hopf points of straight rolling along `grid` of `parameter` and
+    the periodic orbits born at each, followed across the others
+    (follow_orbits) within the grid's range; a Hopf point where an earlier
+    branch collapsed starts none (AUTO still locates it).  Runs <tag>hb<k>, <tag>po<k>[_<n>], k from
+    `first`; steps: AUTO constants of the orbit runs."""
+    changes = spectrum.stability_changes(parameter_set, parameter, grid, **values)
+    hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]
+    bp = [v for v, kind, _ in changes if kind == "BP"]
+    parts, names, reached = [], [], set()
+    for k, (v, _) in enumerate(hopf, first):
+        if v in reached:
+            # no branch starts here, but it is stored as a labelled HB (run
+            # <tag>hb<k>) like every Hopf point the diagram's numbers give
+            try:
+                hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, **values)
+            except autoglue.RunError as exc:
+                print(f"{figure}: Hopf point {k} left unstored: {exc.brief}", flush=True)
+            continue
+        point = hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, **values)
+
+        def name(n, k=k):
+            return f"{tag}po{k}" + (f"_{n}" if n else "")
+        runs, ends = follow_orbits(rundir, name, point, parameter,
+                                   {h: f for h, f in hopf if h != v}, lambda h: gap,
+                                   (grid[0], grid[-1]), allow_failed=allow_failed,
+                                   figure=figure, **steps)
+        reached |= {h for h, collapsed in ends.items() if collapsed}
+        parts += [(point, orbits) for orbits in runs]
+        names += [name(n) for n in range(len(runs))]
+    return Diagram(parameter, hopf, bp, parts, names, **(about or {}))
+
+
+def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, with_period=False,
+               overlay=None, **kw):
+    """Continue the Hopf point `point` in two parameters (with_period: the
+    period PAR(11) printed too; overlay: constants/runs/c.<overlay> on top
+    of c.hopf_curve)."""
+    icp = list(parameters) + mlgmodel.MEASURES + ([11] if with_period else [])
+    return run(rundir, name, "hopf_curve", overlay, data=point, ICP=icp, UZSTOP=stop or {},
+               **kw)
+
+
+def fold_icp(parameters):
+    """ICP of a fold-of-cycles continuation in two parameters: the period
+    PAR(11) must come third, or AUTO keeps it fixed (periodic.f90, INITPS:
+    the period is free only if ICP(3) = 11 or exactly two parameters are
+    listed), and the curve found is one of folds at constant period."""
+    return list(parameters) + [11] + mlgmodel.MEASURES
+
+
+FOLD_START = {"DS": 0.01, "DSMAX": 0.05}
+
+
+def fold_curve(rundir, name, point, parameters=("V", "Fstar"), stop=None, start=FOLD_START,
+               both_ways=False, **kw):
+    """Continue the fold of periodic orbits `point` (an LP label of an orbit
+    run) in two parameters.  AUTO 0.9.2 first only generates the extended
+    system's starting data (5 steps, ending in EP; run <name>_start with the
+    constants `start`, and THU if given); the curve is continued from there.
+    both_ways: a pair of runs <name>_a, <name>_b, DS as given and reversed."""
+    icp = fold_icp(parameters)
+    thu = {"THU": kw["THU"]} if "THU" in kw else {}
+    first = run(rundir, f"{name}_start", "periodic", data=point, ISW=2, ICP=icp,
+                **{**start, **thu})
+    if not both_ways:
+        return run(rundir, name, "periodic", data=first("EP1"), ISW=2, ICP=icp,
+                   UZSTOP=stop or {}, **kw)
+    ds = kw.pop("DS")
+    return tuple(run(rundir, f"{name}_{d}", "periodic", data=first("EP1"), ISW=2, ICP=icp,
+                     DS=sign * ds, UZSTOP=stop or {}, **kw)
+                 for d, sign in (("a", 1), ("b", -1)))

@@ -1,0 +1,47 @@
+"""Drawing the freeplay-magnitude results of Figs. 13-19 (section IV.D):
+orbits continued in y_fp and diagrams in V, from their cached records
+(magnitude.stored_orbits, magnitude.stored_diagram)."""
+import numpy
+
+from mlgshimmy.shared import draw, jobs
+from mlgshimmy.shared.magnitude import V_ORBITS
+
+ORBIT_COLOURS = dict(zip(V_ORBITS, ("tab:blue", "tab:orange", "tab:green", "tab:purple")))
+
+
+def orbits_in_yfp(ax_amp, ax_freq, orbits):
+    """Torsional amplitude [deg] and frequency [Hz] against y_fp of stored
+    orbits (stored_orbits; solid stable, dashed unstable)."""
+    for V, curve in orbits:
+        for ax, measure, scale in ((ax_amp, "psi_amp", draw.DEG), (ax_freq, "freq", 1.0)):
+            draw.plot_stability(ax, curve["yfp"], numpy.asarray(curve[measure]) * scale,
+                                    curve["stable"], label=f"V = {V:g} m/s",
+                                    color=ORBIT_COLOURS[V], lw=1.5)
+    ax_amp.set_ylabel(r"$\psi$ amplitude [deg]")
+    ax_freq.set_ylabel("frequency [Hz]")
+    for ax in (ax_amp, ax_freq):
+        ax.set_xlabel("$y_{fp}$ [mm]")
+    ax_amp.legend(fontsize=7)
+
+
+def diagram_in_V(ax_amp, diagram, colour, label):
+    """psi amplitude [deg] against V of a stored Diagram (stored_diagram):
+    its Hopf points on the axis, the periodic branches (solid stable, dashed
+    unstable; in `colour`, else green/red) and their folds."""
+    deg = draw.DEG
+    style = {"color": colour} if colour else {}
+    draw.plot_branch(ax_amp, jobs.loaded(diagram["branches"]), "V", "psi_amp", scale=deg,
+                         **style)
+    if label:
+        ax_amp.plot([], [], color=colour, label=label)
+    for V, _ in diagram["hopf"]:
+        ax_amp.plot(V, 0.0, "o", color=colour or "k", ms=3)
+    for V, amp in diagram["folds"]:
+        ax_amp.plot(V, amp * deg, "s", color=colour or "k", ms=3)
+
+
+# Section IV.E: where straight rolling is stable for all V up to V_LIMIT.
+# The modes are told apart by frequency: the low-frequency torsional mode
+# ('gentle' oscillations, 1.5-5 Hz at F* = 1), the high-frequency torsional
+# mode (13-30 Hz) and real eigenvalues (pitchforks, static yaw).  The
+# lightly damped axial pair (1.6 Hz, Re ~ -0.016) never crosses.

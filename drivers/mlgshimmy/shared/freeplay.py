@@ -1,0 +1,27 @@
+"""The torque-link stiffness profile of eq. (15) under the two ways of
+varying the freeplay y_fp (section III), with no AUTO import: Fig. 15 draws
+from it alone, the magnitude figures (drivers/magnitude.py) run AUTO on it.
+
+Scalings: "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1, eps_abs = 0),
+"fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).
+"""
+import numpy
+
+from mlgshimmy.shared import mlgmodel
+
+SCALINGS = {"ratio": {"eps_abs": 0.0, "eps_rel": 0.1},
+            "fixed": {"eps_abs": 0.1, "eps_rel": 0.0}}
+EPSILON = 0.1        # eps/y_fp ("ratio") or eps in mm ("fixed")
+# The freeplay of Figs. 10-12, the lift-off edge and the atlas (section IV.B):
+# y_fp = 1 mm, eps = 0.1 mm.
+NOMINAL = {"yfp": 1.0, "eps_abs": 0.0, "eps_rel": 0.1}
+FIG13_FREEPLAYS = (0.2, 0.5, 1.0, 2.0)                 # y_fp [mm], "ratio"
+FIG14_FREEPLAYS = (0.05, 0.098, 0.11, 0.15, 0.35, 1.0)  # y_fp [mm], "fixed"
+
+
+def profile(yfp, scaling, k_tlk, span=3.0, n=801):
+    """Eq. (15): (y_tlk [mm], M_kpsi/r_tlk [N]) over |y_tlk| <= span*y_fp."""
+    eps = SCALINGS[scaling]["eps_abs"] + SCALINGS[scaling]["eps_rel"] * yfp
+    y = numpy.linspace(-span * yfp, span * yfp, n)
+    force = [mlgmodel.torque_link_force(k_tlk, 1e-3 * v, 1e-3 * yfp, 1e-3 * eps) for v in y]
+    return y, numpy.array(force)

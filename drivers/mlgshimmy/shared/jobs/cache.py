@@ -1,0 +1,151 @@
+"""The cached result of a figure's compute step: one JSON file per figure,
+$MLG_RUN_ROOT/<fig>/result.json (beside its runs, so `make regress`
+starting a figure afresh starts its result afresh too), holding its
+numbers, the curve arrays its plot needs and where they came from
+(parameter set, git commit, AUTO version).  The plot step, the tables and
+the reproduction numbers read it; no AUTO import, so a redraw needs none.
+
+    cache.write("fig10", {"numbers": {...}, "eq": stored(eq, COLUMNS)}, "figures")
+    result = cache.read("fig10")      # raises MissingResult naming `make fig10`
+"""
+import datetime
+import json
+import os
+import subprocess
+from typing import Any, Optional
+
+import numpy
+
+from mlgshimmy.shared import branches, paths
+from mlgshimmy.shared.jobs.atomic import write_json
+
+
+class MissingResult(RuntimeError):
+    """No cached result for a figure (its compute step has not run)."""
+
+
+def path(figure: str, part: Optional[str] = None) -> str:
+    """$MLG_RUN_ROOT/<fig>/result.json, or parts/<part>.json there."""
+    if part is None:
+        return paths.under_root(figure, "result.json")
+    return paths.under_root(figure, "parts", f"{part}.json")
+
+
+def _auto_version() -> Optional[str]:
+    auto_dir = os.environ.get("AUTO_DIR", os.path.join(paths.BUILD, "auto", "07p"))
+    try:
+        with open(os.path.join(auto_dir, "CHANGELOG")) as log:
+            return log.readline().strip().rstrip(":")
+    except OSError:
+        return None
+
+
+def _git_commit() -> Optional[str]:
+    """HEAD, with "+dirty" if the drivers, constants, C sources or models
+    differ from it."""
+    def git(*args):
+        return subprocess.run(["git", "-C", paths.ROOT, *args], capture_output=True,
+                              text=True).stdout.strip()
+    head = git("rev-parse", "HEAD")
+    dirty = git("status", "--porcelain", "--", "drivers", "constants", "c", "models")
+    return (head + ("+dirty" if dirty else "")) or None
+
+
+def provenance(parameter_set: str) -> dict:
+    return {"parameter_set": parameter_set, "git_commit": _git_commit(),
+            "auto_version": _auto_version(),
+            "written": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")}
+
+
+def _plain(value: Any) -> Any:
+    """value with numpy arrays and numbers as lists and floats (JSON)."""
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, numpy.ndarray):
+        return _plain(value.tolist())
+    if isinstance(value, numpy.floating):
+        return float(value)
+    if isinstance(value, (numpy.integer, numpy.bool_)):
+        return value.item()
+    return value
+
+
+def write(figure: str, data: Any, parameter_set: str = "figures",
+          part: Optional[str] = None) -> str:
+    """Store data (dicts, lists, arrays, numbers, strings; NaN and inf as
+    Python's json writes and reads them) with its provenance, as the
+    figure's result or one part of it, atomically; returns the path."""
+    target = write_json(path(figure, part),
+                        {"figure": figure, "part": part, "provenance": provenance(parameter_set),
+                         "data": _plain(data)})
+    print(f"{figure}: {'part ' + part if part else 'result'} cached in "
+          f"{os.path.relpath(target, paths.ROOT)}", flush=True)
+    return target
+
+
+def read(figure: str, part: Optional[str] = None) -> Any:
+    """The data of a figure's cached result (or of one part of it)."""
+    try:
+        with open(path(figure, part)) as source:
+            return json.load(source)["data"]
+    except FileNotFoundError:
+        raise MissingResult(f"{figure}: no cached result {path(figure, part)} "
+                            f"(run `make {figure}`)") from None
+
+
+class Branch:
+    """A stored AUTO branch read back: columns by name (numpy arrays), and
+    stability() and labels as a parseB branch has them, so the helpers of
+    `branches` and `draw` take either."""
+
+    def __init__(self, record: dict):
+        self.columns = {k: numpy.asarray(v, dtype=float) for k, v in record["columns"].items()}
+        self.coordnames = list(self.columns)
+        self._stable = numpy.asarray(record["stable"], dtype=bool)
+        self.labels = _Labels(record["labels"])
+
+    def __getitem__(self, name: str) -> numpy.ndarray:
+        return self.columns[name]
+
+    def __len__(self) -> int:
+        return len(self._stable)
+
+    def __repr__(self) -> str:
+        return f"Branch({len(self)} points, columns {self.coordnames})"
+
+    def stability(self) -> list:
+        """AUTO's encoding: the end index of each run of equal stability,
+        negative for stable runs."""
+        return [(-s.stop if self._stable[s.start] else s.stop)
+                for s in branches.runs_of(self._stable, overlap=False)]
+
+
+class _Labels:
+    """branch.labels of parseB, as far as branches.labelled_points reads it."""
+
+    def __init__(self, points):
+        self._at = {}
+        for index, label, kind in points:
+            self._at.setdefault(index, {})[kind] = {"LAB": label}
+
+    def getIndices(self):
+        return sorted(self._at)
+
+    def __getitem__(self, index):
+        return self._at[index]
+
+
+def stored(diagram, columns) -> list:
+    """The branches of an AUTO diagram (a bifDiag or a list of branches) as
+    records of the given columns (those a branch lacks are left out)."""
+    return [{"columns": {c: numpy.asarray(b[c]) for c in columns if c in b.coordnames},
+             "stable": branches.stable_mask(b),
+             "labels": [list(p) for p in branches.labelled_points(b)]}
+            for b in diagram]
+
+
+def loaded(records) -> list:
+    """Stored branches (stored()) back as Branch objects."""
+    return [Branch(r) for r in records]

@@ -1,0 +1,96 @@
+"""The command lines of the figure and study drivers, and the one shell
+line per job that make, GNU parallel and Slurm run."""
+import argparse
+import os
+import shlex
+import shutil
+import sys
+import time
+from typing import Callable, Optional, Sequence
+
+from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs import cache
+from mlgshimmy.shared.jobs.atomic import write_text
+from mlgshimmy.shared.jobs.parts import Parts, rules_path
+
+PACKAGE_DIR = os.path.join(paths.ROOT, "drivers")
+
+
+def job_line(module: str, *args: str) -> str:
+    """One self-contained shell command that runs `python -m <module> args`
+    from the repository, with the package on its path."""
+    words = [sys.executable, "-m", module, *map(str, args)]
+    return (f"cd {shlex.quote(paths.ROOT)} && PYTHONPATH={shlex.quote(PACKAGE_DIR)} "
+            + " ".join(shlex.quote(w) for w in words))
+
+
+def variant_option(figure: str, doc: str):
+    """A driver's --strut-variant option (0: the default strut, 1: the
+    printed one) read from the command line: (variant, figure name: <figure>
+    or <figure>_v<variant>, the other arguments for run_figure)."""
+    parser = argparse.ArgumentParser(description=doc, add_help=False)
+    parser.add_argument("--strut-variant", type=int, choices=(0, 1), default=0)
+    args, rest = parser.parse_known_args()
+    variant = args.strut_variant
+    return variant, figure if variant == 0 else f"{figure}_v{variant}", rest
+
+
+def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[Callable] = None,
+               parameter_set: str = "figures", argv: Optional[Sequence[str]] = None,
+               module: Optional[str] = None) -> None:
+    """A figure driver's command line.  --compute: compute() (AUTO runs and
+    the rest) and cache what it returns; --plot: plot(cached result) (the
+    figure and its table); neither: both, from scratch.  A failure exits
+    non-zero naming the figure (RunError and the model's errors are
+    RuntimeError or ValueError).
+
+    With parts (a function returning {name: function or Needs}, see
+    Parts), compute gets the Parts and: `parts` lists their names, `rules`
+    writes mk/parts.mk's rules to $MLG_RUN_ROOT/<fig>/parts.mk, `jobs
+    [--stage K]` prints one shell command per part of stage K (default 1;
+    `stages` prints how many there are), `--part NAME` computes one,
+    --compute uses those cached."""
+    module = module or f"mlgshimmy.figures.{figure}"
+    commands = ["parts", "stages", "rules", "jobs"] if parts else []
+    parser = argparse.ArgumentParser(prog=f"python3 -m {module}",
+                                     description=f"{figure}: compute and cache, and/or plot")
+    parser.add_argument("command", nargs="?", choices=commands,
+                        help="list the parts, count their stages, write their make rules, or "
+                             "print one shell command per part of a stage")
+    parser.add_argument("--compute", action="store_true", help="only compute and cache")
+    parser.add_argument("--plot", action="store_true", help="only redraw from the cache")
+    if parts:
+        parser.add_argument("--part", help="compute and cache one part")
+        parser.add_argument("--stage", type=int, default=1,
+                            help="the stage whose parts `jobs` prints (default 1)")
+    args = parser.parse_args(argv)
+    both = not (args.compute or args.plot or getattr(args, "part", None))
+    try:
+        jobs = Parts(figure, parts(), parameter_set) if parts else None
+        if args.command == "parts":
+            print(" ".join(jobs.jobs))
+            return
+        if args.command == "stages":
+            print(jobs.stages())
+            return
+        if args.command == "rules":
+            write_text(rules_path(figure), jobs.make_rules())
+            return
+        if args.command == "jobs":
+            for name in jobs.of_stage(args.stage):
+                print(job_line(module, "--part", name))
+            return
+        if getattr(args, "part", None):
+            jobs.compute(args.part, alone=True)
+        if args.compute or both:
+            if both and jobs:   # from scratch: no part of an earlier run is reused
+                shutil.rmtree(os.path.dirname(cache.path(figure, "x")), ignore_errors=True)
+            started = time.monotonic()
+            data = compute(jobs) if jobs else compute()
+            cache.write(figure, data, parameter_set)
+            print(f"{figure}: computed in {time.monotonic() - started:.0f} s")
+        if args.plot or both:
+            plot(cache.read(figure))
+    except (RuntimeError, ValueError) as exc:
+        message = str(exc)   # a MissingResult already names its figure
+        sys.exit(message if message.startswith(f"{figure}:") else f"{figure}: {message}")

@@ -1,0 +1,107 @@
+"""The jobs of a figure's compute step (parts), each cached on its own, so
+that make (mk/parts.mk), GNU parallel or a Slurm array run them side by
+side, one stage after another: a part of stage 1 needs no other, one of
+stage k + 1 needs parts of stage k at most."""
+import os
+import time
+from typing import Any, Callable, Dict, Iterable, List, Union
+
+from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs import cache
+
+
+class Needs:
+    """A part that reads other parts: function(parts), run once the parts
+    named in `names` are cached (make runs it after them)."""
+
+    def __init__(self, names: Iterable[str], function: Callable[[Any], Any]):
+        self.names, self.function = tuple(names), function
+
+    def __repr__(self) -> str:
+        return f"Needs({list(self.names)})"
+
+
+Job = Union[Callable[[], Any], Needs]
+
+
+class Parts:
+    """{name: function or Needs} of one figure.  parts[name] is the cached
+    part, computed here if it is missing; a part computed on its own
+    (compute(name, alone=True), `--part NAME`) instead refuses to compute a
+    part it needs, which a parallel job may be writing."""
+
+    def __init__(self, figure: str, jobs: Dict[str, Job], parameter_set: str):
+        self.figure, self.jobs, self.parameter_set = figure, jobs, parameter_set
+        for name in jobs:
+            self.stage(name)   # every needed part exists, no cycle
+
+    def __repr__(self) -> str:
+        return f"Parts({self.figure!r}, {len(self.jobs)} parts, {self.stages()} stages)"
+
+    def stage(self, name: str, seen: tuple = ()) -> int:
+        if name not in self.jobs:
+            raise ValueError(f"{self.figure}: no part named {name!r} "
+                             f"(parts: {' '.join(self.jobs)})")
+        if name in seen:
+            raise ValueError(f"{self.figure}: part {name} needs itself")
+        job = self.jobs[name]
+        if not isinstance(job, Needs):
+            return 1
+        return 1 + max(self.stage(n, seen + (name,)) for n in job.names)
+
+    def stages(self) -> int:
+        return max(self.stage(name) for name in self.jobs)
+
+    def of_stage(self, stage: int) -> List[str]:
+        if not 1 <= stage <= self.stages():
+            raise ValueError(f"{self.figure}: --stage {stage}: its parts have stages "
+                             f"1 to {self.stages()}")
+        return [name for name in self.jobs if self.stage(name) == stage]
+
+    def compute(self, name: str, alone: bool = False) -> None:
+        """Compute and cache one part; alone: a missing part it needs is an
+        error (a parallel job may be writing it), not computed here."""
+        self.stage(name)   # a part of this figure (the error names the parts)
+        job = self.jobs[name]
+        started = time.monotonic()
+        data = job.function(_Reader(self, alone)) if isinstance(job, Needs) else job()
+        cache.write(self.figure, data, self.parameter_set, part=name)
+        print(f"{self.figure}: part {name} computed in {time.monotonic() - started:.0f} s",
+              flush=True)
+
+    def __getitem__(self, name: str) -> Any:
+        return _Reader(self, False)[name]
+
+    def all(self) -> Dict[str, Any]:
+        """{name: data} of every part, in order."""
+        return {name: self[name] for name in self.jobs}
+
+    def make_rules(self) -> str:
+        """mk/parts.mk's rules: PARTS, and each part's needs as the
+        prerequisites of its file."""
+        def file(name):
+            return cache.path(self.figure, name)
+        lines = [f"PARTS := {' '.join(self.jobs)}"]
+        lines += [f"{file(name)}: {' '.join(file(n) for n in job.names)}"
+                  for name, job in self.jobs.items() if isinstance(job, Needs)]
+        return "\n".join(lines) + "\n"
+
+
+class _Reader:
+    """What a Needs function reads its parts through."""
+
+    def __init__(self, parts: Parts, alone: bool):
+        self.parts, self.alone = parts, alone
+
+    def __getitem__(self, name: str) -> Any:
+        parts = self.parts
+        if not os.path.exists(cache.path(parts.figure, name)):
+            if self.alone:
+                raise cache.MissingResult(f"{parts.figure}: part {name} is not cached yet; run "
+                                          f"the parts of stage {parts.stage(name)} first")
+            parts.compute(name)
+        return cache.read(parts.figure, name)
+
+
+def rules_path(figure: str) -> str:
+    return paths.under_root(figure, "parts.mk")

@@ -1,0 +1,79 @@
+"""Wheel lift-off by time simulation: where the shimmy the model settles
+into grows until a tyre load turns negative (the model's domain ends).
+
+Beyond the torus curve the attractor is quasi-periodic, so no AUTO orbit
+tells where lift-off starts (the minimum tyre load over the unstable
+periodic orbit is not that of the torus); the edge is found by simulation.
+A run starts next to straight rolling (psi + 1e-4 rad, the atlas's
+"rolling" start, which is unstable there and grows onto the shimmy by
+itself; a large kick lifts a wheel off as a transient at light loads where
+the small starts settle) and counts as a lift-off if the simulator stops on
+a negative tyre load within T_END.
+
+    lifts_off(csv, 580.0, 0.3)                        # True / False
+    edge_speed(csv, 0.3, 450.0, 600.0)                # lowest V, or None
+"""
+import os
+
+from mlgshimmy.shared import freeplay
+from mlgshimmy.shared import simulator
+from mlgshimmy.shared import spectrum
+
+T_END = 120.0             # s: a run that lifts no wheel off within it does not count
+PSI0 = simulator.STARTS["rolling"]
+LIFT_OFF = "a wheel lifts off"    # c/parameters.c mlg_status_text
+TOL_V = 2.0               # m/s: the edge speed's bisection interval
+TOL_F = 0.005             # the edge's ends in F* (on V = V_MAX)
+
+
+def lifts_off(csv, V, Fstar, case=freeplay.NOMINAL, t_end=T_END):
+    """Whether the run from straight rolling (psi + PSI0) at (V, F*) stops
+    on a negative tyre load within t_end; a stop for another reason raises
+    SimulationError naming it."""
+    if not (V > 0 and Fstar > 0 and t_end > 0):
+        raise ValueError(f"liftoff: V = {V}, Fstar = {Fstar} and t_end = {t_end} must be > 0")
+    proc = simulator.run(csv, "--set", "figures", "--V", V, "--Fstar", Fstar,
+                         *simulator.freeplay_args(case), "--t-end", t_end, "--dt-out", 1.0,
+                         "--psi0", PSI0)
+    if os.path.exists(csv):
+        os.remove(csv)
+    if proc.returncode == 0:
+        return False
+    reason = simulator.left_domain(proc)
+    if reason is None or LIFT_OFF not in reason:
+        raise simulator.SimulationError(
+            f"liftoff: at V = {V:g}, F* = {Fstar:g} the simulator stopped otherwise: "
+            f"{proc.stderr.strip()}")
+    return True
+
+
+def bisected(test, lo, hi, tol, what, checked=False):
+    """The value between lo and hi (either order) nearest lo where test()
+    starts to hold, bisected to tol (test must fail at lo and hold at hi),
+    or None if it fails at hi.  lo is run only when the value comes out
+    within tol of it: were test to hold there, every step would have moved
+    towards lo (one full run saved per edge point; a test that holds at lo
+    and fails above it is not seen: the bisection finds one crossing).
+    checked: the caller has run test at both ends already, with that
+    outcome (they are not run again)."""
+    if not checked and not test(hi):
+        return None
+    sign = 1.0 if hi >= lo else -1.0   # spectrum.bisect wants lo < hi
+    found = sign * spectrum.bisect(lambda x: not test(sign * x), sign * lo, sign * hi, tol=tol)
+    if not checked and abs(found - lo) <= tol and test(lo):
+        raise ValueError(f"liftoff: a wheel lifts off already at {what} = {lo:g} "
+                         "(move the bracket)")
+    return found
+
+
+def edge_speed(csv, Fstar, lo, hi, tol=TOL_V, **options):
+    """The lowest speed in [lo, hi] at which a wheel lifts off (within
+    T_END) at load F*, or None if none does up to hi (one crossing: lift-off
+    within a fixed time need not be monotone in V)."""
+    return bisected(lambda V: lifts_off(csv, V, Fstar, **options), lo, hi, tol, "V")
+
+
+def edge_load(csv, V, lo, hi, tol=TOL_F, checked=False, **options):
+    """The load between lo (no lift-off) and hi (lift-off) where lift-off
+    starts at speed V, or None if none at hi (checked: as for bisected)."""
+    return bisected(lambda f: lifts_off(csv, V, f, **options), lo, hi, tol, "F*", checked)

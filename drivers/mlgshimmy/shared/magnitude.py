@@ -1,0 +1,419 @@
+"""Shared pieces of the freeplay-magnitude figures (Figs. 13-19, sections
+IV.D-IV.E): the two ways of varying the freeplay y_fp, one-parameter
+diagrams in V at a given y_fp, the orbits at fixed V continued in y_fp, and
+the curves of Hopf points and folds of cycles in (y_fp, V).
+
+    d = diagram_in_V(rundir, "y1", "ratio", 1.0)     # Hopf points + orbits
+    for point in stable_orbits(d, 50.0): ...         # UZ labels at V = 50
+    curves = hopf_curves(rundir, "fixed")            # in (y_fp, V)
+
+Scalings (section III): drivers/freeplay.py.  Everything is at
+F* = 1 unless Fstar is passed.
+"""
+import functools
+import os
+
+import numpy
+
+from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import branches
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared.freeplay import EPSILON, SCALINGS
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import spectrum
+
+FSTAR = 1.0
+V_MIN, V_MAX = 0.5, 200.0    # V = 0 is degenerate (tyre states undetermined)
+V_LIMIT = 120.0              # the speed limit of section IV.E
+V_ORBITS = (15.0, 50.0, 80.0, 110.0)
+V_SCAN = numpy.linspace(V_MIN, V_MAX, 161)
+YFP_MIN, YFP_MAX = 0.005, 2.0
+FOLD_YFP_MAX = 1.0   # fold-of-cycles curves (~0.5 s a point) end here
+HOPF_GAP = 0.01      # periodic branches stop this far (m/s) before another Hopf point
+# Arclength weights of the oscillating states (psi, delta and their rates):
+# the orbits are 1e-4..1e-2 rad wide beside a static eta ~ 0.4 m, and without
+# weights a step across a sharp fold of cycles overshoots onto a constant
+# solution (seen at y_fp = 0.15 mm, eps = 0.1 mm, V ~ 40 m/s).
+THU = {1: 1e4, 2: 1e4, 5: 1e4, 6: 1e4}
+DSMAX_V = 0.5      # periodic branches in V: larger steps jump past the other Hopf point
+
+
+def values(scaling, yfp, Fstar=FSTAR, **more):
+    return {"Fstar": Fstar, "yfp": yfp, **SCALINGS[scaling], **more}
+
+
+def progress(figure, text):
+    print(f"{figure}: {text}", flush=True)
+
+
+def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="magnitude"):
+    """continuation.speed_diagram over V_SCAN at this y_fp (runs
+    <tag>_hb<i>, <tag>_po<i>, i from 0), with UZ labels at the speeds `uzr`
+    and the weighted small first steps the orbits here need."""
+    return ct.speed_diagram(rundir, "figures", values(scaling, yfp, Fstar), V_SCAN,
+                            tag=f"{tag}_", first=0, gap=HOPF_GAP, figure=f"{figure}: {tag}",
+                            about={"scaling": scaling, "yfp": yfp},
+                            UZR={"V": list(uzr)} if uzr else {}, DS=1e-4, DSMAX=DSMAX_V,
+                            DSMIN=1e-9, NMX=2000, THU=THU)
+
+
+def stable_orbits(diagram, V):
+    """[(run, label)] of the stable orbits carrying a UZ label at speed V."""
+    found = []
+    for run in diagram.branches:
+        for branch in run:
+            stable = branches.stable_mask(branch)
+            for index, lab, _ in branches.labelled_points(branch, "UZ"):
+                if abs(branch["V"][index] - V) < 1e-3 and stable[index]:
+                    found.append((run, lab))
+    return found
+
+
+def yfp_thresholds(scaling, V, Fstar=FSTAR):
+    """[(y_fp, kind, omega)]: where straight rolling changes stability in y_fp
+    at speed V (eigenvalue scan over YFP_MIN..YFP_MAX)."""
+    grid = numpy.geomspace(YFP_MIN, YFP_MAX, 241)
+    return spectrum.stability_changes("figures", "yfp", grid, V=V, Fstar=Fstar,
+                                      **SCALINGS[scaling])
+
+
+def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude"):
+    """A periodic orbit at fixed V continued in y_fp both ways over
+    [YFP_MIN, YFP_MAX], across the Hopf points of straight rolling in y_fp
+    (continuation.follow_orbits; runs stop 0.1% either side of them).
+    Returns (down, up): the lists of runs in each direction, in order."""
+    hopf = {y: w / (2 * numpy.pi) for y, kind, w in yfp_thresholds(scaling, V) if kind == "HB"}
+    return tuple(ct.follow_orbits(rundir, lambda n, d=direction: f"{tag}_{d}{n}", point, "yfp",
+                                  hopf, lambda y: 1e-3 * y, (YFP_MIN, YFP_MAX),
+                                  figure=f"{figure}: {tag}", DS=ds, DSMAX=1.0, NMX=1000,
+                                  THU=THU)[0]
+                 for direction, ds in (("down", -0.005), ("up", 0.005)))
+
+
+def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="magnitude"):
+    """Curves of Hopf points of straight rolling in (y_fp, V), V in
+    [V_MIN, V_MAX], y_fp in [YFP_MIN, YFP_MAX], each continued both ways
+    from a Hopf point found at one of the seed y_fp values; a seed Hopf point
+    already on a computed curve is skipped.  [(run_down, run_up)]; the
+    frequency along a curve is 1/T (PAR(11), printed)."""
+    curves = []
+    for yfp in seeds:
+        vals = values(scaling, yfp, Fstar)
+        for V, _ in spectrum.hopf_scan("figures", "V", V_SCAN, **vals):
+            if any(_on_curve(c, yfp, V) for c in curves):
+                continue
+            name = f"{tag}_y{yfp:g}_V{V:.0f}"
+            hb = ct.hopf_point(rundir, f"{name}_hb", "figures", "V", V, **vals)
+            pair = _hopf_runs(rundir, name, hb, figure)
+            progress(figure, f"{name}: Hopf curve through (y_fp, V) = ({yfp:g}, {V:.3f}), "
+                             f"{sum(len(r[0]) for r in pair)} points")
+            curves.append(pair)
+    return curves
+
+
+def _hopf_runs(rundir, name, hb, figure):
+    """Both directions of a Hopf curve in (y_fp, V) from the point hb.  AUTO
+    0.9.2 stops (MX) where the curve turns back in its first parameter (seen
+    at the turn in V of the high-frequency curve, y_fp ~ 0.10 mm, and at the
+    turn in y_fp of the low-frequency one, y_fp ~ 0.32 mm), so if one
+    direction fails both are repeated with the parameters swapped.  The steps
+    are bounded in the first parameter (AUTO's steps on these curves follow
+    it): 0.005 mm in y_fp, 0.1 m/s in V."""
+    for order, step in ((["yfp", "V"], 0.005), (["V", "yfp"], 0.1)):
+        try:
+            return tuple(ct.hopf_curve(rundir, f"{name}_{d}", hb, order, with_period=True,
+                                       stop={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]},
+                                       DS=sign * step / 5, DSMAX=step, NMX=4000)
+                         for d, sign in (("a", 1), ("b", -1)))
+        except autoglue.RunError as exc:
+            progress(figure, f"{name}: Hopf curve with ICP {order} failed ({exc.brief})"
+                     + ("; repeating with the parameters swapped" if order[0] == "yfp" else ""))
+    raise autoglue.RunError(f"{name}: Hopf curve failed with both parameter orders")
+
+
+def _on_curve(curve, yfp, V):
+    """True if (yfp, V) lies within 2% (relative) of the polyline of a curve."""
+    ys, Vs = curve_points(curve, "yfp", "V")
+    p = numpy.c_[ys / yfp, Vs / max(V, 1.0)]
+    q = numpy.array([1.0, V / max(V, 1.0)])
+    a, b = p[:-1], p[1:]
+    t = numpy.clip(numpy.sum((q - a) * (b - a), axis=1)
+                   / numpy.maximum(numpy.sum((b - a) ** 2, axis=1), 1e-300), 0.0, 1.0)
+    return numpy.min(numpy.hypot(*(a + t[:, None] * (b - a) - q).T)) < 0.02
+
+
+def fold_curve(rundir, tag, run, label, figure="magnitude"):
+    """The fold of cycles at `label` of the periodic run `run` (in V)
+    continued in (y_fp, V) both ways, y_fp up to FOLD_YFP_MAX
+    (continuation.fold_curve), with the arclength weights THU on the starting
+    run too: without them it stops (MX) on the fold of y_fp = 0.15 mm."""
+    pair = ct.fold_curve(rundir, tag, run(label), ("yfp", "V"), both_ways=True, start={},
+                         stop={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, FOLD_YFP_MAX]},
+                         DS=0.01, DSMAX=0.5, NMX=1000, THU=THU)
+    progress(figure, f"{tag}: fold-of-cycles curve, {sum(len(r[0]) for r in pair)} points")
+    return pair
+
+
+def linear_fit(x, y):
+    """Least squares y = s x through the origin and y = s x + c:
+    (s0, max relative residual of the first, s, c)."""
+    x, y = numpy.asarray(x), numpy.asarray(y)
+    s0 = float(x @ y / (x @ x))
+    residual = float(numpy.max(numpy.abs(y - s0 * x) / numpy.abs(y)))
+    s, c = numpy.polyfit(x, y, 1)
+    return s0, residual, float(s), float(c)
+
+
+def orbits_in_yfp(rundir, diagram, figure="magnitude"):
+    """{V: (run down, run up)}: the stable orbit at each of V_ORBITS in
+    `diagram` continued in y_fp.  Raises RunError unless exactly one stable
+    orbit carries the UZ label at that speed."""
+    result = {}
+    for V in V_ORBITS:
+        found = stable_orbits(diagram, V)
+        if len(found) != 1:
+            raise autoglue.RunError(f"{figure}: {len(found)} stable orbits at V = {V:g} "
+                                    f"(y_fp = {diagram.yfp:g}), expected one")
+        run, lab = found[0]
+        result[V] = orbit_in_yfp(rundir, f"orbit_V{V:g}", run(lab), diagram.scaling, V, figure)
+    return result
+
+
+def orbit_curve(runs, measure):
+    """(y_fp, measure, stable mask) along the orbits of orbits_in_yfp, joined
+    at the starting orbit and sorted along the continuation."""
+    def joined(pieces, column):
+        return numpy.concatenate([numpy.asarray(r[0][column])[1:] for r in pieces])
+    down, up = runs
+
+    def stable(pieces):
+        return numpy.concatenate([branches.stable_mask(r[0])[1:] for r in pieces])
+    first = up[0][0]
+    ys = numpy.r_[joined(down, "yfp")[::-1], first["yfp"][0], joined(up, "yfp")]
+    ms = numpy.r_[joined(down, measure)[::-1], first[measure][0], joined(up, measure)]
+    st = numpy.r_[stable(down)[::-1], branches.stable_mask(first)[0], stable(up)]
+    return ys, ms, st
+
+
+def stored_orbits(orbits):
+    """The orbits of orbits_in_yfp for the cache: [(V, {"yfp", "psi_amp",
+    "freq", "stable"})], each joined by orbit_curve."""
+    out = []
+    for V, runs in orbits.items():
+        ys, amp, stable = orbit_curve(runs, "psi_amp")
+        out.append((V, {"yfp": ys, "psi_amp": amp, "freq": orbit_curve(runs, "freq")[1],
+                        "stable": stable}))
+    return out
+
+
+COLUMNS = ("V", "psi_amp", "freq")
+
+
+def stored_diagram(diagram):
+    """A Diagram in V for the cache: y_fp, scaling, Hopf points, folds
+    (V, psi_amp), the orbit branches (jobs.stored) and per orbit run its
+    first and smallest V (a turn AUTO may not label LP)."""
+    return {"yfp": diagram.yfp, "scaling": diagram.scaling, "hopf": diagram.hopf,
+            "folds": [(V, amp) for _, _, V, amp in diagram.folds()],
+            "branches": [b for run in diagram.branches for b in jobs.stored(run, COLUMNS)],
+            "turns": [(run[0]["V"][0], min(run[0]["V"])) for run in diagram.branches]}
+
+
+def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_ORBITS):
+    """The parts of a figure made of diagrams in V (jobs.Parts): one per
+    y_fp, named <prefix>y<y_fp>, computing the stored diagram (runs
+    <prefix>y<y_fp>_hb<i>, _po<i>, in the part's own run directory
+    $MLG_RUN_ROOT/<figure>/<part>/); the one at y_fp = orbits_at (named
+    ..._orbits) also continues its stable orbits at V_ORBITS in y_fp."""
+    def job(y, name):
+        def run():
+            rundir = paths.rundir(os.path.join(figure, name))
+            d = diagram_in_V(rundir, f"{prefix}y{y:g}", scaling, y, uzr=uzr, figure=figure)
+            out = {"diagram": stored_diagram(d)}
+            if y == orbits_at:
+                out["orbits"] = stored_orbits(orbits_in_yfp(rundir, d, figure))
+            return out
+        return run
+    names = {y: f"{prefix}y{y:g}" + ("_orbits" if y == orbits_at else "") for y in freeplays}
+    return {names[y]: job(y, names[y]) for y in freeplays}
+
+
+def diagrams_of(done, prefix=""):
+    """(stored diagrams in order, stored orbits or None) from the computed
+    parts {name: data} of diagram_jobs(..., prefix)."""
+    done = [data for name, data in done.items() if name.startswith(prefix + "y")]
+    orbits = [p["orbits"] for p in done if "orbits" in p]
+    return [p["diagram"] for p in done], (orbits[0] if orbits else None)
+
+
+def diagram_numbers(diagrams, prefix=""):
+    """{quantity: value}: the Hopf and fold speeds of stored diagrams, as
+    "<prefix>y_fp = <y>: H<k> [m/s]" and "...: S<k> [m/s]"."""
+    out = {}
+    for d in diagrams:
+        for k, (V, _) in enumerate(d["hopf"]):
+            out[f"{prefix}y_fp = {d['yfp']:g}: H{k + 1} [m/s]"] = V
+        for k, (V, _) in enumerate(d["folds"]):
+            out[f"{prefix}y_fp = {d['yfp']:g}: S{k + 1} [m/s]"] = V
+    return out
+
+
+BANDS = {"low": (1e-6, 8.0), "high": (8.0, numpy.inf), "real": (-1.0, 1e-6)}
+KAPPA_GRID = numpy.geomspace(YFP_MIN, YFP_MAX, 61)
+# The loads of the envelope of section IV.E, F* <= 2 (F* = 0 lifts a wheel off).
+ENVELOPE_LOADS = numpy.round(numpy.arange(0.1, 2.0001, 0.05), 3)
+
+
+@functools.lru_cache(maxsize=1024)
+def straight_rolling(parameter_set, Fstar, overrides):
+    """The straight-rolling state at load F* with the parameter overrides
+    ((name, value) pairs).  It is the same for every V > 0 (docs/model.md
+    4.20) and every freeplay (the torque links carry no load at psi = 0),
+    so the scans below solve it once per load."""
+    return mlgmodel.Model(parameter_set, Fstar=Fstar, **dict(overrides)).equilibrium()
+
+
+def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
+    """{band: largest real part of the eigenvalues of straight rolling whose
+    frequency |Im|/2pi lies in the band} (-inf if none), and "any": the
+    largest real part of all.  `model` overrides parameters or constants by
+    name (e.g. strut_variant=1, c_psi=410)."""
+    u = straight_rolling(parameter_set, Fstar, tuple(sorted(model.items())))
+    model = mlgmodel.Model(parameter_set, **values(scaling, yfp, Fstar, V=V), **model)
+    model.check()
+    return spectrum.growth(model, BANDS, u)
+
+
+def yfp_crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed", first_only=False, **model):
+    """y_fp values where the growth of `band` changes sign along `grid`
+    (bisection to 1e-10 mm); with first_only, only the first of them."""
+    return spectrum.sign_changes(lambda y: growth(Fstar, y, V, scaling, **model)[band], grid,
+                                 tol=1e-10, first_only=first_only)
+
+
+def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN, V_LIMIT, 25),
+                     **model):
+    """(y_fp, V): the smallest (or, with highest, the largest) y_fp at which
+    the mode `band` changes stability for some V in [V_MIN, V_LIMIT] -- a
+    turning point in y_fp of its Hopf curve or its end at V_LIMIT; optimised
+    on a V grid refined three times.  (inf or -inf, nan) if it never does.
+    `model`: parameter overrides, as for growth."""
+    sign = -1.0 if highest else 1.0
+    best = (sign * numpy.inf, numpy.nan)
+    for _ in range(4):
+        for V in speeds:
+            found = yfp_crossings(Fstar, V, band, first_only=not highest, **model)
+            if found and sign * (found[-1] if highest else found[0]) < sign * best[0]:
+                best = (found[-1] if highest else found[0], V)
+        if not numpy.isfinite(best[0]):
+            return best
+        step = speeds[1] - speeds[0]
+        speeds = numpy.linspace(max(V_MIN, best[1] - step), min(V_LIMIT, best[1] + step), 9)
+    return best
+
+
+def window_point_curve(rundir, tag, yfp, Fstar, stop, dsmax=0.02, **model):
+    """The Hopf point of straight rolling at V = V_LIMIT near y_fp = `yfp`
+    (eps = 0.1 mm; a window point a or b on V = V_LIMIT) continued by AUTO in
+    (F*, y_fp) both ways from `Fstar` to the loads `stop`.  `model`: PAR
+    overrides (e.g. strut_variant=1).  {"up"/"down": the run, or the
+    RunError that stopped it}.  The stage-switch overlay (DSMIN = 1e-10): with
+    the printed strut (variant 1) the curve turns twice in F* while eta
+    crosses the 1e-5 m wide stage switch (F* 0.63-0.70); AUTO's default
+    1e-5 stops it (MX) there."""
+    vals = {"Fstar": Fstar, "V": V_LIMIT, **SCALINGS["fixed"], **model}
+    hb = ct.hopf_point(rundir, f"{tag}_hb", "figures", "yfp", yfp, width=0.05 * yfp, **vals)
+    out = {}
+    for direction, ds in (("up", 0.01), ("down", -0.01)):
+        try:
+            out[direction] = ct.hopf_curve(rundir, f"{tag}_{direction}", hb, ("Fstar", "yfp"),
+                                           stop={"Fstar": list(stop)}, with_period=True, DS=ds,
+                                           overlay="stage_switch", DSMAX=dsmax)
+        except autoglue.RunError as exc:
+            out[direction] = exc
+    return out
+
+
+def refined_minimum(evaluate, loads, key, points=None, finer=(10,)):
+    """The point of least key(point) over F* in the evenly spaced `loads`,
+    refined around the minimum: for each k of `finer` in turn, on 2k + 1
+    loads spanning one step either side, the step then divided by k.
+    evaluate(F*) returns a point (a dict with "Fstar"); `points`: the points
+    of `loads` if already evaluated."""
+    best = min(points or [evaluate(F) for F in loads], key=key)
+    step = loads[1] - loads[0]
+    for k in finer:
+        fine = numpy.linspace(max(loads[0], best["Fstar"] - step),
+                              min(loads[-1], best["Fstar"] + step), 2 * k + 1)
+        best = min([best] + [evaluate(F) for F in fine], key=key)
+        step /= k
+    return best
+
+
+def kappa_star(evaluate, loads, points=None, finer=(10,)):
+    """Eq. (17)'s kappa*: the least y_fp/eps at which straight rolling is
+    unstable below V_LIMIT, minimised over the loads (refined_minimum of
+    evaluate(F*)["first"], the least unstable y_fp there); (kappa*, the
+    evaluation at the minimum)."""
+    best = refined_minimum(evaluate, loads, lambda p: p["first"], points, finer)
+    return best["first"] / EPSILON, best
+
+
+def window_points(Fstar, **model):
+    """The points bounding the windows of stable straight rolling up to
+    V_LIMIT at this F* (eps = 0.1 mm), as y_fp [mm]:
+      a: the smallest y_fp at which the high-frequency mode is unstable for
+         some V <= V_LIMIT (the end of R1; at F* = 1 where its Hopf curve
+         crosses V = V_LIMIT),
+      b: the largest such y_fp (the start of R2; at F* = 1 the second
+         crossing of V = V_LIMIT),
+      c: the smallest y_fp at which the low-frequency mode is unstable for
+         some V <= V_LIMIT (the turning point in y_fp of its Hopf curve; the
+         end of R2),
+      p: the smallest y_fp with a real eigenvalue > 0 (pitchfork, static yaw;
+         independent of V),
+      first: the smallest of a, c, p, with its mode and speed.
+    y_fp is scanned over KAPPA_GRID (up to YFP_MAX); inf where a mode never
+    crosses there.  Also the speeds V_a, V_b, V_c of a, b, c.  `model`:
+    parameter overrides, as for growth."""
+    a, V_a = extreme_yfp_crossing(Fstar, "high", **model)
+    b, V_b = extreme_yfp_crossing(Fstar, "high", highest=True, **model)
+    c, V_c = extreme_yfp_crossing(Fstar, "low", **model)
+    real = yfp_crossings(Fstar, 0.5 * V_LIMIT, "real", **model)
+    p = real[0] if real else numpy.inf
+    first = min((a, "high", V_a), (c, "low", V_c), (p, "real", numpy.nan), key=lambda t: t[0])
+    return {"Fstar": Fstar, "a": a, "b": b, "c": c, "p": p, "V_a": V_a, "V_b": V_b, "V_c": V_c,
+            "first": first[0], "first_mode": first[1], "first_V": first[2]}
+
+
+def fold_curves(rundir, tag, diagrams, figure="magnitude"):
+    """Curves of folds of cycles in (y_fp, V) through the folds of the given
+    Diagrams; a fold already on a computed curve is not started again."""
+    curves = []
+    for d in diagrams:
+        for n, (run, lab, V, _) in enumerate(d.folds()):
+            if any(_on_curve(c, d.yfp, V) for c in curves):
+                continue
+            curves.append(fold_curve(rundir, f"{tag}_y{d.yfp:g}_{n}", run, lab, figure=figure))
+    return curves
+
+
+def curve_points(curve, x, y):
+    """The two runs of a curve joined into one (x, y) polyline."""
+    a, b = (run[0] for run in curve)
+    return (numpy.r_[numpy.asarray(b[x])[::-1], numpy.asarray(a[x])],
+            numpy.r_[numpy.asarray(b[y])[::-1], numpy.asarray(a[y])])
+
+
+def stored_curves(curves, columns=("yfp", "V")):
+    """Curves (pairs of runs) for the cache: [{column: polyline}]
+    (curve_points); "freq" is 1/T along a curve with the period printed."""
+    out = []
+    for curve in curves:
+        line = {c: curve_points(curve, "yfp", c)[1] for c in columns if c != "freq"}
+        if "freq" in columns:
+            line["freq"] = 1.0 / curve_points(curve, "yfp", "T")[1]
+        out.append(line)
+    return out

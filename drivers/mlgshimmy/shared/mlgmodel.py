@@ -1,0 +1,251 @@
+"""The c/ model library from Python, through ctypes (build/lib/libmlg.so).
+
+Used by the drivers for what AUTO does not do: validating parameters before
+a run, the straight-rolling equilibrium that starts a run at given
+parameters (AUTO applies the constants' PAR after STPNT), and plain
+evaluations such as the torque-link profiles and the freeplay boundary.
+
+    m = Model("figures", Fstar=0.2, V=300)   # ValueError naming a bad parameter
+    u = m.equilibrium()            # {"psi": 0.0, ..., "eta": 0.27, ...}
+
+A constant set here (Model(k_relax=0.9)) reaches AUTO's FUNC through a file
+mlg.constants.<k> in the run directory, named by PAR(15) = k (Model.par(),
+write_constants_files(); docs/model.md 2.1).
+"""
+import ctypes
+import os
+import zlib
+from typing import Dict, Sequence, Union
+
+import numpy
+
+from mlgshimmy.shared import paths
+
+LIBRARY = os.path.join(paths.BUILD, "lib", "libmlg.so")
+
+
+class LibraryMissing(RuntimeError):
+    """build/lib/libmlg.so is not built."""
+
+
+class _Energy(ctypes.Structure):
+    _fields_ = [("kinetic", ctypes.c_double), ("potential", ctypes.c_double)]
+
+
+_lib = None
+_tables: Dict[str, object] = {}
+
+
+def library():
+    """The c/ library, loaded (and its functions typed) on first use;
+    LibraryMissing says what to build."""
+    global _lib
+    if _lib is not None:
+        return _lib
+    if not os.path.exists(LIBRARY):
+        raise LibraryMissing(f"mlgmodel: {LIBRARY} is missing: build it with "
+                             "`make build/lib/libmlg.so`")
+    lib = ctypes.CDLL(LIBRARY)
+
+    class Params(ctypes.Structure):
+        _fields_ = [("values", ctypes.c_double * lib.mlg_params_field_count())]
+    P, D = ctypes.POINTER(Params), ctypes.POINTER(ctypes.c_double)
+    lib.mlg_params_table.restype = Params
+    lib.mlg_params_figures.restype = Params
+    lib.mlg_param_ref.restype = D
+    lib.mlg_param_ref.argtypes = [P, ctypes.c_char_p]
+    lib.mlg_par_name.restype = ctypes.c_char_p
+    lib.mlg_constant_name.restype = ctypes.c_char_p
+    lib.mlg_measure_name.restype = ctypes.c_char_p
+    lib.mlg_state_name.restype = ctypes.c_char_p
+    lib.mlg_params_check.argtypes = [P, ctypes.c_char_p, ctypes.c_size_t]
+    lib.mlg_status_text.restype = ctypes.c_char_p
+    lib.mlg_equilibrium.argtypes = [P, ctypes.c_double, D]
+    lib.mlg_rhs_jacobian.argtypes = [P, D, D, D, D]
+    lib.mlg_r_tlk.restype = ctypes.c_double
+    lib.mlg_r_tlk.argtypes = [P, ctypes.c_double]
+    lib.mlg_epsilon_m.restype = ctypes.c_double
+    lib.mlg_epsilon_m.argtypes = [P]
+    lib.mlg_torque_link_force.restype = ctypes.c_double
+    lib.mlg_torque_link_force.argtypes = [ctypes.c_double] * 4
+    lib.mlg_energy.argtypes = [P, D, ctypes.c_double, ctypes.POINTER(_Energy)]
+    _lib = lib
+    return lib
+
+
+def _name(getter, k):
+    name = getter(k)
+    return None if name is None else name.decode()
+
+
+def _names(getter):
+    names = []
+    while _name(getter, len(names)) is not None:
+        names.append(_name(getter, len(names)))
+    return names
+
+
+def _table(key: str):
+    """The library's name tables, read once (see __getattr__)."""
+    if not _tables:
+        lib = library()
+        _tables.update(
+            # PARNAMES[k] is PAR(k+1): the continuation parameters, the switches
+            # AUTO reads and "constants" (PAR(15)); None where no name is given
+            PARNAMES=[_name(lib.mlg_par_name, k) for k in range(lib.mlg_par_slot_count())],
+            MEASURES=_names(lib.mlg_measure_name),  # PAR(21) onwards, written by PVLS
+            FIELDS=_names(lib.mlg_constant_name),   # every parameter, constant and switch
+            UNAMES=_names(lib.mlg_state_name),      # UNAMES[i] is U(i+1)
+            C_PSI_FIGURES=ctypes.c_double.in_dll(lib, "MLG_C_PSI_FIGURES").value)
+        _tables["NX"] = len(_tables["UNAMES"])
+    return _tables[key]
+
+
+def __getattr__(name: str):
+    """PARNAMES, MEASURES, FIELDS, UNAMES, NX, C_PSI_FIGURES: read from the
+    library when first asked for, so importing this module needs no build."""
+    if name in ("PARNAMES", "MEASURES", "FIELDS", "UNAMES", "NX", "C_PSI_FIGURES"):
+        return _table(name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+CONSTANTS_FILE = "constants"              # PAR(15): k of mlg.constants.<k>, 0 none
+MEASURES_FIRST_PAR = 21
+_EPSILON_PARTS = ("eps_abs", "eps_rel")
+_constants_files: Dict[int, str] = {}     # {k: text of mlg.constants.<k>} of par()
+
+
+class Model:
+    """A parameter set of the c/ library: 'table' (the paper as printed) or
+    'figures' (c_psi calibrated), with any parameter or constant overridden
+    by name, validated at construction (ValueError naming the parameter).
+
+    Smoothing width (eq. 15): epsilon = eps_abs + eps_rel * yfp [mm]. The
+    sets have eps_abs = 0, eps_rel = 0.1; giving only one of the two parts
+    (here or in set()) sets the other to 0, so epsilon is what was given:
+    Model(yfp=1, eps_abs=0.1) has epsilon = 0.1 mm."""
+
+    def __init__(self, parameter_set: str = "figures", **values: float):
+        if parameter_set not in ("table", "figures"):
+            raise ValueError(f"unknown parameter set {parameter_set!r}")
+        self.parameter_set = parameter_set
+        self._p = getattr(library(), f"mlg_params_{parameter_set}")()
+        self.set(**values)
+        self.check()
+
+    def __repr__(self) -> str:
+        changed = {name: self[name] for name in _table("PARNAMES")
+                   if name not in (None, CONSTANTS_FILE)}
+        base = Model.__new__(Model)
+        base._p = getattr(library(), f"mlg_params_{self.parameter_set}")()
+        differ = {k: v for k, v in changed.items() if v != base[k]}
+        differ.update(self.constants())
+        return f"Model({self.parameter_set!r}" + "".join(
+            f", {k}={v!r}" for k, v in differ.items()) + ")"
+
+    def _ref(self, name: str):
+        ref = library().mlg_param_ref(ctypes.byref(self._p), name.encode())
+        if not ref:
+            raise KeyError(f"no parameter or constant named {name!r}")
+        return ref
+
+    def __getitem__(self, name: str) -> float:
+        return self._ref(name)[0]
+
+    def set(self, **values: float) -> "Model":
+        """Set parameters by name (not validated: see check()). One part of
+        epsilon without the other sets the other to 0."""
+        given = [part for part in _EPSILON_PARTS if part in values]
+        if len(given) == 1:
+            values = dict(values, **{part: 0.0 for part in _EPSILON_PARTS if part not in given})
+        for name, value in values.items():
+            ref = self._ref(name)
+            try:
+                ref[0] = float(value)
+            except (TypeError, ValueError):
+                raise ValueError(f"parameter {name} = {value!r} is not a number") from None
+        return self
+
+    def constants(self) -> Dict[str, float]:
+        """The constants that differ from the `table` set and are not in PAR,
+        as {name: value}: what AUTO reads from mlg.constants.<k>."""
+        table = Model.__new__(Model)
+        table._p = library().mlg_params_table()
+        in_par = set(_table("PARNAMES"))
+        return {name: self[name] for name in _table("FIELDS")
+                if name not in in_par and self[name] != table[name]}
+
+    def par(self) -> Dict[str, float]:
+        """The PAR values AUTO reads, as {name: value}, in PAR order; with
+        constants changed, PAR(15) names the file that carries them (written
+        to a run directory by write_constants_files)."""
+        par = {name: self[name] for name in _table("PARNAMES")
+               if name not in (None, CONSTANTS_FILE)}
+        changed = self.constants()
+        text = "".join(f"{name} {value!r}\n" for name, value in changed.items())
+        k = zlib.crc32(text.encode()) % (2**31 - 1) + 1 if changed else 0
+        if k:
+            _constants_files[k] = text
+        par[CONSTANTS_FILE] = k
+        return par
+
+    def check(self) -> None:
+        msg = ctypes.create_string_buffer(256)
+        if library().mlg_params_check(ctypes.byref(self._p), msg, len(msg)):
+            raise ValueError(msg.value.decode())
+
+    def equilibrium(self, eta_guess: float = -1.0) -> Dict[str, float]:
+        """Straight rolling as {state name: value}; raises if not found."""
+        self.check()
+        names = _table("UNAMES")
+        u = (ctypes.c_double * len(names))()
+        status = library().mlg_equilibrium(ctypes.byref(self._p), eta_guess, u)
+        if status != 0:
+            why = "no convergence" if status < 0 else library().mlg_status_text(status).decode()
+            raise RuntimeError(f"straight-rolling equilibrium not found: {why}")
+        return dict(zip(names, u))
+
+    def jacobian(self, u: Union[Dict[str, float], Sequence[float]]) -> numpy.ndarray:
+        """df/du at the state u ({name: value} or a sequence in UNAMES order),
+        an NX x NX array; raises if the state is outside the model's domain."""
+        nx = _table("NX")
+        if isinstance(u, dict):
+            u = [u[name] for name in _table("UNAMES")]
+        x = (ctypes.c_double * nx)(*u)
+        f = (ctypes.c_double * nx)()
+        J = (ctypes.c_double * (nx * nx))()   # column-major
+        status = library().mlg_rhs_jacobian(ctypes.byref(self._p), x, f, J, None)
+        if status != 0:
+            raise RuntimeError(f"jacobian: {library().mlg_status_text(status).decode()}")
+        return numpy.array(J, dtype=float).reshape(nx, nx).T
+
+    def energy(self, u: Sequence[float], eta_ref: float):
+        """(kinetic, potential) of the model's Lagrangian at the state u (a
+        sequence in U order); the oleo potential counts from eta_ref."""
+        x = (ctypes.c_double * _table("NX"))(*u)
+        out = _Energy()
+        status = library().mlg_energy(ctypes.byref(self._p), x, eta_ref, ctypes.byref(out))
+        if status != 0:
+            raise RuntimeError(f"energy: {library().mlg_status_text(status).decode()}")
+        return out.kinetic, out.potential
+
+    def r_tlk(self, eta: float) -> float:
+        return library().mlg_r_tlk(ctypes.byref(self._p), eta)
+
+    def epsilon_m(self) -> float:
+        return library().mlg_epsilon_m(ctypes.byref(self._p))
+
+
+def write_constants_files(rundir: str) -> None:
+    """Write mlg.constants.<k> into rundir for every k that par() handed out
+    in this process (each replaced atomically, the same text for the same k)."""
+    from mlgshimmy.shared.jobs.atomic import write_text
+    for k, text in _constants_files.items():
+        write_text(os.path.join(rundir, f"mlg.constants.{k}"),
+                   f"# constants that differ from the `table` set (mlgshimmy.shared.mlgmodel)\n"
+                   f"{text}")
+
+
+def torque_link_force(k_tlk: float, y_tlk: float, yfp_m: float, eps_m: float) -> float:
+    """Eq. (15) (eps_m > 0) or eq. (14) (eps_m == 0): force [N] at y_tlk [m]."""
+    return library().mlg_torque_link_force(k_tlk, y_tlk, yfp_m, eps_m)

@@ -1,0 +1,46 @@
+"""The paper's printed numbers next to ours: one table per figure, printed
+and stored as build/tables/<fig>.txt.
+
+    paper.report("fig10", ours_figures, ours_table)
+
+ours_* map a quantity (e.g. "H1 [m/s]") to a value; quantities the paper
+does not print are listed with "-" in its column."""
+import os
+
+from mlgshimmy.shared import paths
+
+# Section IV of the paper (the `figures` set is calibrated on the first one).
+PAPER = {
+    "fig07": {"H, F* = 1 [m/s]": 346.1},
+    "fig10": {"H1 [m/s]": 1.5, "H2 [m/s]": 28.1, "H3 [m/s]": 142.5, "S1 [m/s]": 41.5},
+    # IV.D.1: the Fig. 10 diagram is the y_fp = 1 mm slice of Fig. 13
+    "fig13": {"y_fp = 1: H1 [m/s]": 1.5, "y_fp = 1: H2 [m/s]": 28.1,
+              "y_fp = 1: H3 [m/s]": 142.5, "y_fp = 1: S1 [m/s]": 41.5},
+}
+
+
+def _cell(value):
+    return "-" if value is None else f"{value:.6g}"
+
+
+def report(figure, ours, ours_table=None):
+    """Print and store the table; returns its text."""
+    paper = PAPER.get(figure, {})
+    ours_table = ours_table or {}
+    rows = [("quantity", "paper", "ours (figures)", "ours (table)", "rel. error")]
+    for quantity in list(paper) + [q for q in ours if q not in paper]:
+        value, printed = ours.get(quantity), paper.get(quantity)
+        error = (f"{(value - printed) / printed:+.2%}"
+                 if value is not None and printed is not None else "-")
+        rows.append((quantity, _cell(printed), _cell(value), _cell(ours_table.get(quantity)),
+                     error))
+    widths = [max(len(row[k]) for row in rows) for k in range(5)]
+    lines = ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in rows]
+    text = f"{figure}: paper vs ours (rel. error of the figures set)\n" + "\n".join(lines) + "\n"
+    os.makedirs(paths.tables_dir(), exist_ok=True)
+    path = os.path.join(paths.tables_dir(), f"{figure}.txt")
+    with open(f"{path}.{os.getpid()}.part", "w") as out:
+        out.write(text)
+    os.replace(f"{path}.{os.getpid()}.part", path)
+    print(text, end="")
+    return text

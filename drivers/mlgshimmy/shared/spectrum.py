@@ -1,0 +1,121 @@
+"""The spectrum of straight rolling from the exact Jacobian of the c/
+library (ctypes and numpy only, no AUTO): eigenvalue scans along a
+parameter, stability changes located by bisection, growth rates by mode.
+
+    changes = stability_changes("figures", "V", grid, Fstar=1.0)
+    hopf = hopf_scan("figures", "V", grid, Fstar=1.0)     # [(V, Hz)]
+
+AUTO's Hopf test function follows the eigenvalue nearest the imaginary
+axis; on this model that is usually the lightly damped axial pair
+(Re ~ -0.016), so AUTO misses a torsional crossing unless a step lands
+within |Re| < 0.016 of it.  These scans find every crossing;
+continuation.hopf_point then has AUTO locate it.
+"""
+import numpy
+
+from mlgshimmy.shared import mlgmodel
+
+
+def eigenvalues(model, u=None):
+    """Eigenvalues of the Jacobian at the state u (default: the model's
+    straight-rolling equilibrium)."""
+    u = model.equilibrium() if u is None else u
+    return numpy.linalg.eigvals(numpy.array(model.jacobian(u)))
+
+
+def bisect(same_as_lo, lo, hi, tol=0.0, steps=60):
+    """Midpoint of [lo, hi] after halving it `steps` times (or until it is no
+    wider than tol), keeping lo where same_as_lo() holds."""
+    for _ in range(steps):
+        if hi - lo <= tol:
+            break
+        mid = 0.5 * (lo + hi)
+        if same_as_lo(mid):
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def _unstable(parameter_set, values):
+    """(number of real, number of complex eigenvalues with Re > 0, eigenvalues)."""
+    eig = eigenvalues(mlgmodel.Model(parameter_set, **values))
+    real = numpy.abs(eig.imag) <= 1e-9 * numpy.maximum(1.0, numpy.abs(eig.real))
+    return int(numpy.sum(real & (eig.real > 0))), int(numpy.sum(~real & (eig.real > 0))), eig
+
+
+def stability_changes(parameter_set, parameter, grid, **values):
+    """Where straight rolling changes stability along `grid` of `parameter`,
+    refined by bisection (60 halvings of a grid step): [(value, kind, omega)],
+    kind "HB" (complex pair, omega its imaginary part in rad/s) or "BP"
+    (real eigenvalue)."""
+    def counts(value):
+        return _unstable(parameter_set, {**values, parameter: value})
+
+    changes = []
+    previous, before = grid[0], counts(grid[0])[:2]
+    for value in grid[1:]:
+        now = counts(value)[:2]
+        for kind, k in (("BP", 0), ("HB", 1)):
+            if now[k] == before[k]:
+                continue
+            at = bisect(lambda v: counts(v)[k] == before[k], previous, value)
+            eig = counts(at)[2]
+            critical = eig[numpy.argmin(numpy.abs(eig.real))]
+            changes.append((at, kind, abs(critical.imag) if kind == "HB" else 0.0))
+        previous, before = value, now
+    return sorted(changes)
+
+
+def hopf_scan(parameter_set, parameter, grid, **values):
+    """[(value, frequency in Hz)] of the Hopf points of straight rolling
+    along `grid` (stability_changes, complex pairs only)."""
+    return [(v, w / (2 * numpy.pi)) for v, kind, w
+            in stability_changes(parameter_set, parameter, grid, **values) if kind == "HB"]
+
+
+def growth(model, bands, u=None):
+    """{band: largest real part of the eigenvalues of straight rolling (or
+    of the state u) whose frequency |Im|/2pi lies in (lo, hi]} for bands
+    {name: (lo, hi)} (-inf if none), and "any": the largest of all."""
+    eig = eigenvalues(model, u)
+    freq = numpy.abs(eig.imag) / (2 * numpy.pi)
+    out = {"any": float(eig.real.max())}
+    for band, (lo, hi) in bands.items():
+        inside = (freq > lo) & (freq <= hi)
+        out[band] = float(eig.real[inside].max()) if inside.any() else -numpy.inf
+    return out
+
+
+def sign_changes(f, grid, tol=1e-10, first_only=False):
+    """The values where f changes sign along `grid`, bisected to tol (with
+    first_only, only the first)."""
+    found, previous, f_prev = [], grid[0], f(grid[0])
+    for x in grid[1:]:
+        f_x = f(x)
+        if (f_x > 0) != (f_prev > 0):
+            found.append(bisect(lambda v, s=f_prev > 0: (f(v) > 0) == s, previous, x,
+                                tol=tol, steps=200))
+            if first_only:
+                break
+        previous, f_prev = x, f_x
+    return found
+
+
+def stable_on_grid(parameter_set, outer, outer_grid, inner, inner_grid, **values):
+    """[outer, inner]: True where every eigenvalue of straight rolling has a
+    negative real part.  The equilibrium must not depend on the inner
+    parameter (checked at both ends of its grid); it is solved once per
+    outer value."""
+    model = mlgmodel.Model(parameter_set, **values)
+    stable = numpy.zeros((len(outer_grid), len(inner_grid)), dtype=bool)
+    for i, x in enumerate(outer_grid):
+        model.set(**{outer: x, inner: inner_grid[-1]})
+        u = model.equilibrium()
+        model.set(**{inner: inner_grid[0]})
+        if max(abs(a - b) for a, b in zip(u.values(), model.equilibrium().values())) > 1e-9:
+            raise RuntimeError(f"straight rolling at {outer} = {x:g} depends on {inner}")
+        for j, y in enumerate(inner_grid):
+            model.set(**{inner: y})
+            stable[i, j] = eigenvalues(model, u).real.max() < 0
+    return stable

@@ -1,0 +1,251 @@
+"""Torus (TR) points of periodic orbit branches and their curves in
+(V, F*): the recipes that Fig. 11 and the torus check
+(mlgshimmy.studies.torus_check) share.
+
+  - torus_crossings: where a complex Floquet pair crosses |mu| = 1 along an
+    orbit branch (floquet.py says why steps that cross in one go count);
+  - tr_point: AUTO's TR label at such a crossing (placed by fixed steps
+    across it when AUTO does not label it);
+  - torus_curve: the TR point continued in (V, F*) (AUTO ISW = 2), its
+    start seeded with the critical Floquet eigenfunction (seeded);
+  - multiplier_check, monodromy_path: |mu| - 1 from AUTO and from the
+    monodromy matrix integrated along the orbit;
+  - simulated_rate: the growth of the psi peaks' spread in a simulation,
+    which the critical pair's rate ln|mu| / T predicts.
+"""
+import math
+import os
+import tempfile
+
+import numpy
+
+from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import floquet
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import spectrum
+
+V_MAX = ct.V_MAX
+SIM_T = (20.0, 80.0)   # s: fit the log of the peak spread over this span
+SPAN = 2.0             # s: one peak-spread sample per SPAN
+CURVE_FSTAR = (0.02, 3.5)
+CURVE_STEPS = 150      # AUTO steps of a torus curve each way
+CURVE_TIME_LIMIT = 120  # s of CPU per direction (the main curve of Fig. 11: ~25 s each)
+# least step of a torus curve: where a tongue's edges stop (MX), AUTO halves
+# the step down to it, each try a failed Newton solve on the 3 x 10-dimensional
+# system (~0.7 s); on Fig. 11's curves no step below 1e-3 ever converged
+CURVE_DSMIN = 5e-4
+
+
+def orbit_branch(rundir, name, values, mesh, dsmax):
+    """The orbits born at the last Hopf point of straight rolling below
+    V_MAX (zero freeplay: the only one; with freeplay: H3, whose branch folds
+    back at S and then carries the large-amplitude orbits), continued in V."""
+    hopfs = [v for v, kind, _ in spectrum.stability_changes("figures", "V", ct.SPEED_SCAN,
+                                                                **values)
+             if kind == "HB"]
+    if not hopfs:
+        raise RuntimeError(f"torus: no Hopf point below {V_MAX:g} m/s at {values}")
+    hb = ct.hopf_point(rundir, f"{name}_hb", "figures", "V", hopfs[-1], **values)
+    return ct.periodic_from(rundir, name, hb, stop={"V": [0.5, V_MAX]}, DS=0.05, DSMAX=dsmax,
+                            NMX=3000, NTST=mesh[0], NCOL=mesh[1])
+
+
+def torus_crossings(rundir, name):
+    """Where the orbit run <name> in rundir has a complex Floquet pair cross
+    the unit circle (floquet.torus_crossings of its d-file)."""
+    return floquet.torus_crossings(floquet.read(os.path.join(rundir, f"d.{name}")))
+
+
+def on_branch(bd, v, key):
+    """A measure of the orbit branch at speed v (the stable large-amplitude
+    part: the last pass of the branch through v)."""
+    V, y = numpy.asarray(bd[0]["V"]), numpy.asarray(bd[0][key])
+    k = numpy.nonzero((V[:-1] - v) * (V[1:] - v) <= 0)[0][-1]
+    s = (v - V[k]) / (V[k + 1] - V[k])
+    return float(y[k] + s * (y[k + 1] - y[k]))
+
+
+def predicted_rate(steps, bd, v):
+    """ln|mu| / T of the critical complex pair at the step nearest v [1/s]."""
+    values = numpy.array([s[0] for s in steps])
+    g, _ = floquet.critical(steps[int(numpy.argmin(numpy.abs(values - v)))][1])
+    return math.log1p(g) * on_branch(bd, v, "freq")
+
+
+def simulated_rate(values, v, psi0, span=SIM_T, rtol=None):
+    """Growth rate [1/s] of the psi peaks' relative spread in a simulation
+    from psi0 (log-linear fit over span, one sample per SPAN seconds; rtol:
+    the simulator's tolerance, atol 1e-2 of it, default its own)."""
+    from mlgshimmy.shared import attractor
+    from mlgshimmy.shared import simulator
+    eps = 0.1 * values["yfp"]
+    tolerance = ("--rtol", rtol, "--atol", 1e-2 * rtol) if rtol else ()
+    with tempfile.TemporaryDirectory() as tmp:
+        csv = os.path.join(tmp, "run.csv")
+        simulator.simulate(csv, "--set", "figures", "--V", v, "--Fstar", values["Fstar"],
+                           "--yfp", values["yfp"], "--eps-abs", eps, "--eps-rel", 0,
+                           "--t-end", span[1], "--psi0", psi0, *tolerance)
+        data = numpy.loadtxt(csv, delimiter=",", skiprows=1, usecols=(0, 1))
+    fit = attractor.spread_trend(data[:, 0], data[:, 1], span[0], span[1], SPAN)
+    return fit["rate"], fit["first"], fit["last"]
+
+
+def tr_point(rundir, name, bd, v, slope):
+    """AUTO's TR label near speed v, a crossing of the branch bd (which ends
+    at V_MAX): the branch's own label if it has one within 0.5 m/s; else
+    back from the end to v + 3h, then fixed steps of -2h, one of them
+    across, h such that |mu| - 1 changes by 4e-5 or more over a step (AUTO's
+    count of stable multipliers, tolerance 1e-5, then changes with the
+    sign; AUTO tests nothing on the first step after a restart).  Where
+    AUTO still does not label it, h is doubled (twice)."""
+    labelled = [p for p in bd("TR") if abs(p["V"] - v) < 0.5]
+    if labelled:
+        return labelled[0]
+    end = [p for p in bd() if p["TY name"] in ("UZ", "EP")][-1]      # V = V_MAX
+    for factor in (1, 2, 4):
+        h = factor * max(2e-5 / abs(slope), 0.05)
+        back = ct.run(rundir, f"{name}_back{factor}", "periodic", data=end,
+                      ICP=["V", 11] + mlgmodel.MEASURES, DS=-1.0, DSMAX=5.0,
+                      UZSTOP={"V": v + 3 * h})
+        cross = ct.run(rundir, f"{name}_cross{factor}", "periodic", data=back("UZ")[-1],
+                       ICP=["V", 11] + mlgmodel.MEASURES, DS=-2 * h, DSMIN=1e-4, DSMAX=2 * h,
+                       IADS=0, NMX=4)
+        if cross("TR"):
+            return cross("TR")[0]
+    raise autoglue.RunError(f"run {name}: AUTO labelled no TR near V = {v:.3f} "
+                            f"(steps up to {4 * h:.3g} m/s across it)")
+
+
+def windows(found):
+    """The windows of instability among the crossings found (in branch
+    order): [(loses, regains)], consecutive."""
+    return [(a, b) for a, b in zip(found, found[1:]) if a["direction"] > 0 > b["direction"]]
+
+
+def multiplier_check(rundir, name, tr, v, mesh):
+    """|mu| - 1 of the critical pair at speed v on the orbit continued from
+    the TR label tr on mesh (NTST, NCOL), two ways: AUTO's Floquet
+    multipliers and the eigenvalues of the monodromy matrix integrated along
+    the orbit (monodromy_path); each with its error on the trivial
+    multiplier 1, a measure of its accuracy."""
+    sign = 1.0 if v > tr["V"] else -1.0
+    bd = ct.run(rundir, name, "periodic", data=tr, ICP=["V", 11] + mlgmodel.MEASURES, NTST=mesh[0],
+                NCOL=mesh[1], DS=0.05 * sign, DSMAX=0.2, NMX=1000, UZR={"V": [v]},
+                UZSTOP={"V": [v + 0.05 * sign]}, expect=["UZ"])
+    steps = floquet.read(os.path.join(rundir, f"d.{name}"))
+    mults = min((s for s in steps if s[0] is not None), key=lambda s: abs(s[0] - v))[1]
+    _, phi = monodromy_path(bd("UZ")[0])
+    mu = numpy.linalg.eigvals(phi[-1])
+    return {"NTST": mesh[0], "NCOL": mesh[1], "auto": floquet.critical(mults)[0],
+            "auto_trivial_error": float(numpy.min(numpy.abs(mults - 1))),
+            "monodromy": floquet.critical(mu)[0],
+            "monodromy_trivial_error": float(numpy.min(numpy.abs(mu - 1)))}
+
+
+SUBSTEPS = 8           # RK4 steps per stored mesh interval of the orbit (monodromy)
+
+
+def torus_icp():
+    """ICP of a torus curve in (V, F*): the period, the torus angle PAR(12), the measures."""
+    return ["V", "Fstar", 11, 12] + mlgmodel.MEASURES
+
+
+def monodromy_path(sol, parameter_set="figures"):
+    """The fundamental matrix Phi(t) of the orbit `sol` (an AUTO solution,
+    time scaled to [0, 1]) at its stored points: dPhi/dt = T J(u(t)) Phi,
+    Phi(0) = I, by RK4 on u interpolated linearly between the points (the
+    mesh is adapted, so the freeplay's sharp corners are resolved)."""
+    names = [n for n in mlgmodel.PARNAMES if n and n != mlgmodel.CONSTANTS_FILE]
+    if sol.PAR[mlgmodel.CONSTANTS_FILE]:
+        raise ValueError("torus: an orbit run with changed constants (PAR(15) != 0) is not "
+                         "supported by monodromy_path")
+    model = mlgmodel.Model(parameter_set, **{n: sol.PAR[n] for n in names})
+    t = numpy.asarray(sol["t"])
+    U = numpy.array([sol[n] for n in mlgmodel.UNAMES]).T
+    period = sol.PAR["T"]
+
+    def rate(u):
+        return period * numpy.array(model.jacobian(list(u)))
+    phi = numpy.eye(len(mlgmodel.UNAMES))
+    out = [phi]
+    for k in range(len(t) - 1):
+        h = (t[k + 1] - t[k]) / SUBSTEPS
+        du = (U[k + 1] - U[k]) / SUBSTEPS
+        for j in range(SUBSTEPS):
+            a, b, c = rate(U[k] + j * du), rate(U[k] + (j + 0.5) * du), rate(U[k] + (j + 1) * du)
+            k1 = a @ phi
+            k2 = b @ (phi + 0.5 * h * k1)
+            k3 = b @ (phi + 0.5 * h * k2)
+            k4 = c @ (phi + h * k3)
+            phi = phi + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        out.append(phi)
+    return t, out
+
+
+ANGLE_TOL = 0.05       # rad: the seeded pair's argument against the TR label's angle
+
+
+def seeded(start, angle, parameter_set="figures"):
+    """The first point of a torus curve with the critical Floquet
+    eigenfunction filled in.  AUTO's start from a TR label (periodic.f90,
+    STPNTR) guesses the eigenfunction as 1e-4 (cos, sin)(theta t) in every
+    component; on the freeplay orbits its Newton solve then converges to
+    the trivial v = 0 (norm PAR(NPAR) ~ 1e-20) and the continuation after it
+    is singular (MX at the first step, any DS).  Here v1 + i v2 = Phi(t) w0,
+    w0 the eigenvector of the monodromy matrix whose multiplier is nearest
+    exp(i angle) (BCTR: v(1) = exp(i theta) v(0)), scaled to norm 1
+    (ICTR: the integral of |v|^2 equals PAR(NPAR)).  angle: the crossing
+    pair's argument at the TR label (AUTO sets PAR(12) there from the
+    multiplier nearest the unit circle, TPSPBV; the start run's own PAR(12)
+    drifts in its degenerate solve), so a tongue's point gets its own pair,
+    not the main curve's; a pair whose argument is off it by more than
+    ANGLE_TOL is an error."""
+    t, phi = monodromy_path(start, parameter_set)
+    mu, vectors = numpy.linalg.eig(phi[-1])
+    k = int(numpy.argmin(numpy.abs(mu - numpy.exp(1j * angle))))
+    if abs(abs(numpy.angle(mu[k])) - abs(angle)) > ANGLE_TOL:
+        raise ValueError(f"torus: no Floquet pair at angle {angle:.4f} rad (nearest: "
+                         f"{numpy.angle(mu[k]):.4f} rad, |mu| = {abs(mu[k]):.6f})")
+    w = numpy.array([p @ vectors[:, k] for p in phi])
+    w /= math.sqrt(numpy.trapz(numpy.sum(numpy.abs(w) ** 2, axis=1), t))
+    n = len(mlgmodel.UNAMES)
+    for i in range(n):
+        start[f"U({n + i + 1})"] = w[:, i].real
+        start[f"U({2 * n + i + 1})"] = w[:, i].imag
+    start.PAR["PAR(12)"] = float(abs(numpy.angle(mu[k])))
+    start.PAR[start.PAR.coordnames[-1]] = 1.0          # PAR(NPAR): the norm
+    return start
+
+
+def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS, ntst=None):
+    """The TR point continued in (V, F*) both ways, within CURVE_FSTAR and
+    V <= V_MAX: the runs (<name>_up, <name>_down); ntst: their mesh, if not
+    the orbit's (a finer one: see fig11.TONGUE_EDGES).  AUTO's first ISW = 2
+    run from a TR label only builds the extended system's data (its last
+    point, EP, or MX where its degenerate Newton solve fails: the orbit is
+    kept, the eigenfunction is replaced); the curve is continued from there
+    with the eigenfunction filled in (seeded).  Its angle theta (PAR(12))
+    may pass pi: past it the pair is on the unit circle at 2 pi - theta
+    (the orbits' multipliers, docs/reproduction.md), so the curve goes on."""
+    first = ct.run(rundir, f"{name}_start", "periodic", data=tr, ISW=2, ICP=torus_icp(),
+                   DS=0.001, DSMAX=0.01, NMX=2, allow_mx=True)
+    seed = seeded(first()[-1], tr.PAR["PAR(12)"], parameter_set)
+    stop = {"Fstar": list(CURVE_FSTAR), "V": [0.5, V_MAX]}
+    mesh = {"NTST": ntst} if ntst else {}
+    return tuple(ct.run(rundir, f"{name}_{part}", "periodic", data=seed, ISW=2, ICP=torus_icp(),
+                        DS=sign * 0.05, DSMIN=CURVE_DSMIN, DSMAX=5.0, NMX=steps, UZSTOP=stop,
+                        allow_mx=True,
+                        time_limit=CURVE_TIME_LIMIT, **mesh)
+                 for sign, part in ((1, "up"), (-1, "down")))
+
+
+def curve_arrays(runs):
+    """A torus curve's runs as arrays for result.json: [{"V", "Fstar",
+    "freq", "angle", "ends"}] per run."""
+    return [{"V": list(map(float, bd[0]["V"])), "Fstar": list(map(float, bd[0]["Fstar"])),
+             "freq": list(map(float, bd[0]["freq"])), "angle": list(map(float, bd[0]["PAR(12)"])),
+             "ends": [p["TY name"] for p in bd() if p["TY name"] in ("EP", "MX", "UZ")]}
+            for bd in runs]
+
+

@@ -1,0 +1,171 @@
+"""Attractor atlas: what a time simulation settles on over the (V, F*) plane
+of Fig. 11 (y_fp = 1 mm, epsilon = 0.1 mm absolute, `figures` set).
+
+Every grid cell is an independent job with its own directory
+$MLG_RUN_ROOT/atlas/V<v>_F<f>/ (default build/) and result file
+result.json there, computed by drivers/atlas_cell.py (the starts, time
+limits and simulations; drivers/attractor.py classifies).  `check` runs the
+simulator for 1 ms per cell, so bad parameters stop the grid before any
+cell runs, with the simulator's message naming them.  Subcommands (axes
+as in drivers/jobgrid.py: "a,b,c" or "start:stop:step"; the default is
+DEFAULT_V x DEFAULT_FSTAR):
+
+  atlas.py check   [--V L --Fstar L]   validate every cell (no simulation)
+  atlas.py targets [--V L --Fstar L]   the result files, for make
+  atlas.py jobs    [--V L --Fstar L]   one shell command per cell, for GNU
+                                       parallel or a Slurm array (README)
+  atlas.py cell V<v>_F<f>              simulate and classify one cell
+  atlas.py summary [--V L --Fstar L]   summary.txt, summary.json and the plot
+                                       build/figures/atlas.{png,pdf}
+
+`make atlas` (with -j N for N cells at once) runs check, every cell, summary.
+"""
+import json
+import os
+import sys
+import tempfile
+
+from mlgshimmy.studies.atlas import cell as atlas_cell
+from mlgshimmy.studies.atlas import compare as atlas_compare
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared.jobs import grid as jobgrid
+axis = jobgrid.axis
+
+CELLS = jobgrid.Plane("V", "F", "atlas")   # cell V<v>_F<F*>
+# 18 x 13 cells: every region of Fig. 11 holds at least one (the stable
+# straight-rolling band at F* = 1 lies between 28.3 and 41.5 m/s: V = 30, 40;
+# the off-centre-yaw band between F* = 0.037 and 0.408: 0.1, 0.2, 0.3)
+DEFAULT_V = "5,10,20,30,40,50,70,100,150:600:50"
+DEFAULT_FSTAR = "0.02,0.1,0.2,0.3,0.5,0.8,1,1.4,1.8,2.2,2.6,3,3.5"
+
+
+def grid(args):
+    vs = axis(args.V, "ATLAS_V (--V)", "speeds in m/s")
+    fstars = axis(args.Fstar, "ATLAS_FSTAR (--Fstar)", "loads F*")
+    return [(v, f) for f in fstars for v in vs]
+
+
+def check(points):
+    from mlgshimmy.shared import simulator
+    bad = []
+    for v, fstar in points:
+        # a 1 ms run validates the parameters and finds the equilibrium
+        with tempfile.TemporaryDirectory() as tmp:
+            proc = simulator.run(os.path.join(tmp, "c.csv"),
+                                 *atlas_cell.simulator_args(v, fstar, 0.0, atlas_cell.DT_OUT))
+        if proc.returncode != 0:
+            bad.append(f"V = {v:g} m/s, F* = {fstar:g}: {proc.stderr.strip()}")
+    if bad:
+        sys.exit("atlas: grid rejected before any simulation:\n  " + "\n  ".join(bad))
+    print(f"atlas: {len(points)} cells valid")
+
+
+def run_cell(name):
+    try:
+        v, fstar = CELLS.parse(name)
+    except ValueError:
+        sys.exit(f"atlas: {name!r} is not a cell name V<v>_F<f> (see `atlas.py targets`)")
+    rundir = os.path.dirname(CELLS.result_path(v, fstar))
+    os.makedirs(rundir, exist_ok=True)
+    result = atlas_cell.cell(v, fstar, rundir)
+    # written whole or not at all: make sees a result only when it is complete
+    with tempfile.NamedTemporaryFile("w", dir=rundir, delete=False, suffix=".tmp") as out:
+        json.dump(result, out, indent=1)
+    os.replace(out.name, CELLS.result_path(v, fstar))
+    print(f"atlas: {name}: {result['label']} ({result['cpu_seconds']:.1f} s CPU)")
+
+
+def load(points):
+    cells = []
+    for v, fstar in points:
+        path = CELLS.result_path(v, fstar)
+        if not os.path.exists(path):
+            sys.exit(f"atlas: no result for V = {v:g}, F* = {fstar:g} ({path}); "
+                     "run `make atlas` (or atlas.py cell) first")
+        with open(path) as f:
+            cells.append(json.load(f))
+    return cells
+
+
+def summary(points):
+    cells = load(points)
+    counts = {}
+    for c in cells:
+        counts[c["label"]] = counts.get(c["label"], 0) + 1
+    cpu = [c["cpu_seconds"] for c in cells]
+    lines = [f"atlas: {len(cells)} cells, y_fp = {atlas_cell.FREEPLAY['yfp']:g} mm, epsilon = "
+             f"{atlas_cell.FREEPLAY['eps_abs'] + atlas_cell.FREEPLAY['eps_rel'] * atlas_cell.FREEPLAY['yfp']:g} mm; starts " +
+             ", ".join(f"{k} psi0 = {v:g} rad" for k, v in atlas_cell.STARTS.items()),
+             f"CPU per cell: mean {sum(cpu) / len(cpu):.2f} s, max {max(cpu):.2f} s; "
+             f"total {sum(cpu):.0f} s", "cells by label:"]
+    lines += [f"  {n:5d}  {lab}" for lab, n in sorted(counts.items(), key=lambda x: -x[1])]
+    lines.append("V [m/s]  F*  label  |  per start: kind amplitude[rad] frequency[Hz] "
+                 "mean[rad] peak spread, its trend [1/s] (modulation [Hz]) [time limit s]; "
+                 "domain: the reason, and the state before it")
+    for c in cells:
+        parts = []
+        for start, s in c["starts"].items():
+            if s["kind"] == "domain":
+                text = f"{start}: domain ({s['reason']})"
+                if s.get("before"):
+                    text += f" after {start_text(s['before'])}"
+                parts.append(text)
+                continue
+            parts.append(f"{start}: {start_text(s)}")
+        lines.append(f"{c['V']:g} {c['Fstar']:g} {c['label']} | " + "; ".join(parts))
+    agreement = fig11_agreement(cells)
+    if agreement is not None:
+        lines += atlas_compare.report(agreement)
+    text = "\n".join(lines) + "\n"
+    stored = {"cells": cells, "fig11_agreement": agreement}
+    for name, content in (("summary.txt", text), ("summary.json", json.dumps(stored, indent=1))):
+        with tempfile.NamedTemporaryFile("w", dir=CELLS.directory, delete=False) as out:
+            out.write(content)
+        os.replace(out.name, os.path.join(CELLS.directory, name))
+    print("\n".join(lines[:3 + len(counts)]))
+    if agreement is not None:
+        print("\n".join(atlas_compare.report(agreement)))
+    print(f"atlas: wrote {CELLS.directory}/summary.txt, summary.json")
+    from mlgshimmy.studies.atlas import plot as atlas_plot
+    atlas_plot.plot(cells, atlas_cell.NAMES, atlas_cell.KINDS)
+    if agreement is not None:
+        atlas_plot.overlay(cells, agreement, jobs.read("fig11"))
+
+
+def start_text(s):
+    """One start's end state in a line of summary.txt."""
+    text = f"{s['kind']} {s['amplitude_rad']:.4g} {s['frequency_hz']:.3g} {s['mean_rad']:.3g}"
+    if s["frequency_hz"] > 0:       # a stationary state has no peaks to spread
+        text += f" spread {s['peak_spread']:.2g}"
+    if s.get("spread_rate") is not None:
+        text += f" {s['trend']} {s['spread_rate']:+.3g}"
+    if s.get("unstable_by"):
+        text += f", on the orbit {s['unstable_by']} shows unstable"
+    if s.get("modulation_hz"):
+        text += f" ({s['modulation_hz']:.3g})"
+    return text + f" [{s['t_end']:g}]"
+
+
+def fig11_agreement(cells):
+    """atlas_compare.compare against Fig. 11's cached regions, or None (said
+    why) when there is no cached Fig. 11 with a region map."""
+    try:
+        fig11 = jobs.read("fig11")
+    except jobs.MissingResult as exc:
+        print(f"atlas: no comparison with Fig. 11: {exc}")
+        return None
+    if "region_map" not in fig11:
+        print("atlas: no comparison with Fig. 11: its cached result has no region_map "
+              f"({jobs.path('fig11')}; run `make fig11`)")
+        return None
+    return atlas_compare.compare(cells, fig11)
+
+
+def main():
+    jobgrid.main("atlas", __doc__.splitlines()[0], "cell", CELLS,
+                 [("--V", DEFAULT_V, "speeds [m/s]"), ("--Fstar", DEFAULT_FSTAR, "loads F*")],
+                 grid, run_job=run_cell, check=check, summary=summary)
+
+
+if __name__ == "__main__":
+    main()

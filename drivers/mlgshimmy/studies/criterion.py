@@ -1,0 +1,265 @@
+"""The allowable-freeplay criterion, eq. (17), under each low-load reading
+of the model: kappa* = min over F* in [0.1, 2] of the smallest y_fp/eps at
+which straight rolling is unstable for some V <= 120 m/s (eps = 0.1 mm).
+
+    criterion.py scan GROUP   # kappa* of every assumption of GROUP
+    criterion.py auto         # kappa* again by AUTO, strut variants 0 and 1
+    criterion.py report       # table (printed, build/tables/criterion.txt)
+                              # and build/figures/criterion.png
+    criterion.py custom NAME=VALUE ...   # kappa* of your own parameters,
+                              # e.g. a strut: a_keta=... eta_stage=0.2
+
+Straight rolling depends on the freeplay only through r = y_fp/eps (the
+torque-link stiffness at y = 0 is k_tlk s(r), eq. 15), so kappa* is exact
+in r.  Results are cached as parts of the result cache (drivers/jobs.py,
+with their provenance): $MLG_RUN_ROOT/criterion/parts/<GROUP>.json and
+auto.json (default build/).
+"""
+import os
+import sys
+
+import matplotlib.pyplot as plt
+import numpy
+
+from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
+
+VARIANTS = (0, 1)
+# The one-parameter family joining the strut variants: the stage-switch
+# position eta_s of the monotone spring (docs/model.md 4.15).  0.34 m is the
+# printed value (variant 0 itself); eta_s -> 0 removes the soft stage, so the
+# gear hangs on the 188.5 kN preload at light load as the printed order does.
+STAGE_SWITCHES = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.34)
+C_PSI = (410.0, 567.0)               # table value and halfway to `figures`
+TYRE_LOADS = (15e3, 30e3, 45e3, 60e3)  # F_tyre_min [N]; 0 is the paper's laws
+# F* on a grid of 0.1, refined to 0.02 and then 0.005 around the minimum
+# (the resolution of Fig. 18's grid refinement, with a third of its loads)
+LOADS = mg.ENVELOPE_LOADS[::2]
+BASE = {"c_psi": mlgmodel.C_PSI_FIGURES, "F_tyre_min": 0.0, "eta_stage": 0.34}
+
+
+def assumption(group, x, variant, **overrides):
+    return {"group": group, "x": x, "variant": variant,
+            "overrides": {"strut_variant": float(variant), **overrides}}
+
+
+GROUPS = {
+    "strut": [assumption("strut", v, v) for v in VARIANTS],
+    "stage": [assumption("stage", e, 0, eta_stage=e) for e in STAGE_SWITCHES[:-1]],
+    "c_psi": [assumption("c_psi", c, v, c_psi=c) for v in VARIANTS for c in C_PSI],
+    "tyre": [assumption("tyre", F, v, F_tyre_min=F) for v in VARIANTS for F in TYRE_LOADS],
+}
+AXES = {"strut": "strut variant", "stage": r"stage switch $\eta_s$ [m] (variant 0)",
+        "c_psi": r"$c_\psi$ [N m s/rad]", "tyre": r"$F_{tyre,min}$ [kN]"}
+
+
+def first_unstable(Fstar, **overrides):
+    """At one load: the smallest y_fp [mm] with straight rolling unstable for
+    some V <= V_LIMIT, that speed, and the static compression eta* [m]."""
+    y, V = mg.extreme_yfp_crossing(Fstar, "any", **overrides)
+    eta = mg.straight_rolling("figures", Fstar, tuple(sorted(overrides.items())))["eta"]
+    mode = None
+    if numpy.isfinite(y):   # the band that is unstable just beyond the crossing
+        beyond = mg.growth(Fstar, y * (1 + 1e-6), V, **overrides)
+        mode = max(mg.BANDS, key=lambda band: beyond[band])
+    return {"Fstar": float(Fstar), "first": float(y), "V": float(V), "eta": eta, "mode": mode}
+
+
+def kappa_star(overrides):
+    """{kappa, Fstar, V, eta} at the minimum over the envelope's loads."""
+    kappa, best = mg.kappa_star(lambda F: first_unstable(F, **overrides), LOADS, finer=(5, 4))
+    return {"kappa": kappa, "Fstar": best["Fstar"], "V": best["V"],
+            "eta": best["eta"], "mode": best["mode"]}
+
+
+def write(name, data):
+    """The cached part <name> (a group, or "auto") of the criterion."""
+    jobs.write("criterion", data, "figures", part=name)
+
+
+def read(name):
+    return jobs.read("criterion", name)
+
+
+def scan(group):
+    results = []
+    for item in GROUPS[group]:
+        jobs.append({**item, **kappa_star(item["overrides"])})
+        mg.progress("criterion", f"{group} {item['x']:g} (variant {item['variant']}): "
+                                 f"kappa* = {results[-1]['kappa']:.4f} at F* = "
+                                 f"{results[-1]['Fstar']:.3f}")
+    write(group, results)
+
+
+def parabola_minimum(xs, ys):
+    """(x, y) at the vertex of the parabola through the lowest sample and its
+    two neighbours (the sample itself if it is an end); xs distinct."""
+    k = int(numpy.argmin(ys))
+    if k == 0 or k == len(ys) - 1:
+        return xs[k], ys[k]
+    a, b, c = numpy.polyfit(xs[k - 1:k + 2], ys[k - 1:k + 2], 2)
+    x = -b / (2 * a)
+    return x, numpy.polyval([a, b, c], x)
+
+
+def auto_kappa(variant, scanned):
+    """kappa* by AUTO, independently of the scan's minimum: the point a of
+    F* = 1 (a Hopf point at V = V_LIMIT) continued in (F*, y_fp) over the
+    whole envelope, and the least y_fp along that curve.  Only valid where
+    the scan's minimum lies on V = V_LIMIT (checked)."""
+    if scanned["V"] != mg.V_LIMIT:
+        raise autoglue.RunError(f"variant {variant}: the scan's minimum lies at V = "
+                                f"{scanned['V']:.3f}, not on V = {mg.V_LIMIT}")
+    stop = (mg.ENVELOPE_LOADS[0], mg.ENVELOPE_LOADS[-1])
+    start = mg.extreme_yfp_crossing(mg.FSTAR, "high", strut_variant=float(variant))[0]
+    curve = mg.window_point_curve(paths.rundir(os.path.join("criterion", "auto")),
+                                  f"a_v{variant}", start, mg.FSTAR, stop, dsmax=0.005,
+                                  strut_variant=float(variant))
+    pieces = {}
+    for direction, run in curve.items():
+        if isinstance(run, autoglue.RunError):
+            raise run
+        end = stop[direction == "up"]
+        if abs(run[0]["Fstar"][-1] - end) > 1e-4:   # UZ stops within AUTO's tolerance
+            raise autoglue.RunError(f"variant {variant}: the curve of a ended at F* = "
+                                    f"{run[0]['Fstar'][-1]:.4f}, short of {end:g}")
+        pieces[direction] = (numpy.asarray(run[0]["Fstar"]), numpy.asarray(run[0]["yfp"]))
+    # one polyline in continuation order, from F* = 0.1 to 2
+    F = numpy.r_[pieces["down"][0][:0:-1], pieces["up"][0]]
+    y = numpy.r_[pieces["down"][1][:0:-1], pieces["up"][1]]
+    Fmin, ymin = parabola_minimum(F, y)
+    kappa = ymin / mg.EPSILON
+    return {"variant": variant, "kappa": kappa, "Fstar": Fmin, "points": len(F),
+            "scan": scanned["kappa"], "relative difference": kappa / scanned["kappa"] - 1}
+
+
+def auto():
+    results = []
+    for item in read("strut"):
+        jobs.append(auto_kappa(item["variant"], item))
+        mg.progress("criterion", f"AUTO, variant {item['variant']}: kappa* = "
+                                 f"{results[-1]['kappa']:.4f} at F* = {results[-1]['Fstar']:.3f} "
+                                 f"(scan {item['kappa']:.4f})")
+    write("auto", results)
+
+
+def label(item):
+    if item["group"] == "strut":
+        return f"strut variant {item['variant']}"
+    unit = {"stage": " m", "c_psi": " N m s/rad", "tyre": " N"}[item["group"]]
+    name = {"stage": "eta_s", "c_psi": "c_psi", "tyre": "F_tyre_min"}[item["group"]]
+    return f"{name} = {item['x']:g}{unit}, variant {item['variant']}"
+
+
+def lines(groups):
+    """{group: {variant: [(x, result)]}} sorted in x; the groups that vary
+    one value of the base assumption get its point from the strut group."""
+    base = {item["variant"]: item for item in groups["strut"]}
+    varied = {"c_psi": "c_psi", "tyre": "F_tyre_min", "stage": "eta_stage"}
+    out = {}
+    for group, items in groups.items():
+        by_variant = {}
+        for item in items:
+            by_variant.setdefault(item["variant"], []).append((item["x"], item))
+        if group in varied:
+            for v in by_variant:
+                by_variant[v].append((BASE[varied[group]], base[v]))
+        out[group] = {v: sorted(pts, key=lambda t: t[0]) for v, pts in by_variant.items()}
+    return out
+
+
+def plot(groups):
+    fig, axes = plt.subplots(1, 4, figsize=(13, 3.8))
+    colours = {0: "tab:blue", 1: "tab:red"}
+    for ax, (group, by_variant) in zip(axes, lines(groups).items()):
+        twin = ax.twinx()
+        for v, pts in by_variant.items():
+            xs = [x / (1e3 if group == "tyre" else 1.0) for x, _ in pts]
+            ax.plot(xs, [p["kappa"] for _, p in pts], "o-", color=colours[v],
+                    label=f"variant {v}")
+            twin.plot(xs, [p["eta"] for _, p in pts], "s:", color=colours[v], ms=3, alpha=0.6)
+        ax.set(xlabel=AXES[group], ylim=(0, 0.45))
+        twin.set(ylim=(0, 0.45))
+        if group == "strut":
+            ax.set(xticks=VARIANTS, xlim=(-0.5, 1.5))
+        if ax is axes[0]:
+            ax.set_ylabel(r"$\kappa^*$ (circles, solid)")
+            ax.legend(fontsize=7, loc="upper right")
+        if ax is axes[-1]:
+            twin.set_ylabel(r"$\eta^*$ at the minimum [m] (squares, dotted)")
+    fig.suptitle(r"Allowable freeplay $y_{fp}/\epsilon < \kappa^*$ (eq. 17: $V \leq$ 120 m/s, "
+                 r"$F^* \leq$ 2) under each low-load assumption")
+    fig.tight_layout()
+    draw.save(fig, "criterion")
+
+
+def report():
+    groups = {group: read(group) for group in GROUPS}
+    checks = read("auto")
+    rows = [f"{'assumption':44s} {'kappa*':>8s} {'at F*':>7s} {'V [m/s]':>8s} {'eta* [m]':>9s}"
+            f"  mode"]
+    for items in groups.values():
+        for item in items:
+            rows.append(f"{label(item):44s} {item['kappa']:8.4f} {item['Fstar']:7.3f} "
+                        f"{item['V']:8.2f} {item['eta']:9.5f}  {item['mode']}")
+    rows.append("")
+    rows.append("two methods (eigenvalue scan in r; AUTO's curve of a in F* at V = 120):")
+    for c in checks:
+        rows.append(f"  variant {c['variant']}: scan {c['scan']:.5f}, AUTO {c['kappa']:.5f} "
+                    f"at F* = {c['Fstar']:.4f} ({c['points']} points), relative difference "
+                    f"{c['relative difference']:+.2e}")
+    text = "\n".join(rows)
+    print(text)
+    tables = os.path.join(paths.run_root(), "tables")
+    os.makedirs(tables, exist_ok=True)
+    with open(os.path.join(tables, "criterion.txt"), "w") as out:
+        out.write(text + "\n")
+    plot(groups)
+    worst = max(abs(c["relative difference"]) for c in checks)
+    if worst > 0.01:
+        sys.exit(f"criterion: the two methods differ by {worst:.2%} (more than 1 %)")
+
+
+def custom(assignments):
+    """kappa* with parameters or constants set by name (NAME=VALUE)."""
+    overrides = {}
+    for text in assignments:
+        name, sep, value = text.partition("=")
+        try:
+            overrides[name] = float(value) if sep else None
+        except ValueError:
+            overrides[name] = None
+        if overrides[name] is None:
+            raise ValueError(f"{text!r}: expected NAME=VALUE with a number")
+    try:
+        mlgmodel.Model("figures", **overrides).check()
+    except KeyError as exc:
+        raise ValueError(f"unknown parameter: {exc}") from exc
+    result = kappa_star(overrides)
+    print(f"kappa* = {result['kappa']:.4f} at F* = {result['Fstar']:.3f}, V = {result['V']:.2f} "
+          f"m/s, eta* = {result['eta']:.5f} m, mode {result['mode']}")
+
+
+def main(argv):
+    try:
+        if argv[:1] == ["scan"] and len(argv) == 2 and argv[1] in GROUPS:
+            scan(argv[1])
+        elif argv == ["auto"]:
+            auto()
+        elif argv == ["report"]:
+            report()
+        elif argv[:1] == ["custom"]:
+            custom(argv[1:])
+        else:
+            sys.exit(f"usage: criterion.py scan {{{','.join(GROUPS)}}} | auto | report | "
+                     "custom NAME=VALUE ...")
+    except (autoglue.RunError, ValueError, RuntimeError) as exc:
+        sys.exit(f"criterion: {exc}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

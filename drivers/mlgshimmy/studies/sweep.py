@@ -1,0 +1,113 @@
+"""Sweep over side-stay angles: the critical shimmy speed on a (rho, mu) grid.
+
+Each grid point is an independent job with its own run directory
+build/sweep/rho<deg>_mu<deg>/: the first Hopf point in V of straight rolling
+(zero freeplay, F* = 1, `figures` set, complete equations eom_terms = 2),
+written to result.json there.  Subcommands (angles in degrees, lists
+comma-separated; the default grid is 3 x 3):
+
+  sweep.py check   [--rho L --mu L]   validate every grid point (no AUTO run)
+  sweep.py targets [--rho L --mu L]   the result files, for make
+  sweep.py jobs    [--rho L --mu L]   one shell command per grid point, for
+                                      GNU parallel or a Slurm array (README)
+  sweep.py point rho<deg>_mu<deg>     run one grid point
+  sweep.py summary [--rho L --mu L]   plot build/figures/sweep_critical_speed.*
+
+`make sweep` (with -j N for N jobs at once) runs check, every point, summary.
+"""
+import json
+import math
+import os
+import sys
+import time
+
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs import grid as jobgrid
+axis = jobgrid.axis
+
+POINTS = jobgrid.Plane("rho", "mu", "sweep")   # point rho<deg>_mu<deg>
+DEFAULT_GRID = "-10,0,10"
+V_START, V_STOP = ct.V_MIN, ct.V_MAX
+
+
+def grid(args):
+    rhos = axis(args.rho, "SWEEP_RHO (--rho)", "angles in degrees")
+    mus = axis(args.mu, "SWEEP_MU (--mu)", "angles in degrees")
+    return [(rho, mu) for rho in rhos for mu in mus]
+
+
+def parameters(rho, mu, eom_terms=2):
+    return {"Fstar": 1.0, "yfp": 0.0, "rho": math.radians(rho), "mu": math.radians(mu),
+            "eom_terms": eom_terms}
+
+
+def check(points):
+    from mlgshimmy.shared import mlgmodel
+    bad = []
+    for rho, mu in points:
+        try:
+            mlgmodel.Model("figures", V=V_START, **parameters(rho, mu)).check()
+        except ValueError as exc:
+            bad.append(f"rho = {rho:g} deg, mu = {mu:g} deg: {exc}")
+    if bad:
+        sys.exit("sweep: grid rejected before any AUTO run:\n  " + "\n  ".join(bad))
+    print(f"sweep: {len(points)} grid points valid")
+
+
+def run_point(name):
+    rho, mu = POINTS.parse(name)
+    started = time.monotonic()
+    values = parameters(rho, mu)
+    ct.Start("figures", V=V_START, **values)                 # validates first
+    hopf = ct.hopf_points(paths.rundir(os.path.join("sweep", name)), "hb", "figures", "V",
+                          ct.SPEED_SCAN, limit=1, **values)
+    result = {"rho_deg": rho, "mu_deg": mu, "critical_V": hopf[0]["V"] if hopf else None,
+              "seconds": round(time.monotonic() - started, 2)}
+    with open(POINTS.result_path(rho, mu), "w") as out:
+        json.dump(result, out, indent=1)
+    print(f"sweep: {name}: critical speed "
+          + (f"{result['critical_V']:.3f} m/s" if hopf else f"> {V_STOP:g} m/s"))
+
+
+def summary(points):
+    import matplotlib.pyplot as plt
+    import numpy
+
+    from mlgshimmy.shared import draw
+    rhos = sorted({rho for rho, _ in points})
+    mus = sorted({mu for _, mu in points})
+    speed = numpy.full((len(mus), len(rhos)), numpy.nan)
+    for rho, mu in points:
+        with open(POINTS.result_path(rho, mu)) as f:
+            value = json.load(f)["critical_V"]
+        speed[mus.index(mu), rhos.index(rho)] = numpy.nan if value is None else value
+        print(f"sweep: rho = {rho:6g} deg, mu = {mu:6g} deg: critical speed "
+              + (f"{value:.3f} m/s" if value is not None else f"> {V_STOP:g} m/s"))
+    fig, ax = plt.subplots(figsize=(5.5, 4.5))
+    mesh = ax.imshow(speed, origin="lower", cmap="viridis", aspect="auto",
+                     extent=(-0.5, len(rhos) - 0.5, -0.5, len(mus) - 0.5))
+    for i in range(len(mus)):
+        for j in range(len(rhos)):
+            text = "> 600" if numpy.isnan(speed[i, j]) else f"{speed[i, j]:.1f}"
+            ax.text(j, i, text, ha="center", va="center", color="w", fontsize=8)
+    ax.set_xticks(range(len(rhos)), [f"{r:g}" for r in rhos])
+    ax.set_yticks(range(len(mus)), [f"{m:g}" for m in mus])
+    ax.set_xlabel(r"$\rho$ [deg]")
+    ax.set_ylabel(r"$\mu$ [deg]")
+    ax.grid(False)
+    fig.colorbar(mesh, label="critical shimmy speed [m/s]")
+    ax.set_title("First Hopf point of straight rolling\n"
+                 "zero freeplay, F* = 1, `figures` set, eom_terms = 2")
+    draw.save(fig, "sweep_critical_speed")
+
+
+def main():
+    jobgrid.main("sweep", __doc__.splitlines()[0], "point", POINTS,
+                 [("--rho", DEFAULT_GRID, "rho values [deg], comma-separated"),
+                  ("--mu", DEFAULT_GRID, "mu values [deg], comma-separated")],
+                 grid, run_job=run_point, check=check, summary=summary)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,33 @@
+# A grid of independent jobs (shared.jobs.grid) as make targets; included by
+# ../Makefile before the makefiles that use it.
+#
+#   $(eval $(call job_grid,<tool>,<grid options>,<inputs>,<job command>))
+#
+# makes `make [-jN] <tool>`: `python3 -m mlgshimmy.studies.<tool> check <grid
+# options>` once per grid (a stamp in $(RUN_ROOT)/<tool>/), then one make job
+# `... <job command> <name>` per $(RUN_ROOT)/<tool>/<name>/result.json that
+# `<tool> targets` lists, rebuilt when it is older than the check or one of
+# <inputs>, then `<tool> summary`.  <grid options> reach the shell only as
+# words quoted with shell_quote.  The grid is read only when <tool> is a goal
+# (never for `make clean` or another target); a rejected grid stops make with
+# the tool's message, which names the variable.
+define job_grid
+ifneq ($$(filter $(1),$$(MAKECMDGOALS)),)
+$(1)_RESULTS := $$(shell $$(PYTHON) -m mlgshimmy.studies.$(1) targets $(2) || echo $(1)_GRID_REJECTED)
+ifneq ($$(filter $(1)_GRID_REJECTED,$$($(1)_RESULTS)),)
+$$(error $(1): the grid is rejected (reason above))
+endif
+$(1)_CHECKED := $(RUN_ROOT)/$(1)/grid-$$(shell printf '%s\n' $(2) | md5sum | cut -c1-12).ok
+$$($(1)_CHECKED): $(3)
+	@mkdir -p $$(@D)
+	$$(PYTHON) -m mlgshimmy.studies.$(1) check $(2)
+	touch $$@
+endif
+
+.PHONY: $(1)
+$(1): $$($(1)_RESULTS)
+	$$(PYTHON) -m mlgshimmy.studies.$(1) summary $(2)
+
+$(RUN_ROOT)/$(1)/%/result.json: $$($(1)_CHECKED) $(3)
+	$$(PYTHON) -m mlgshimmy.studies.$(1) $(4) $$*
+endef

@@ -1,0 +1,33 @@
+# The Python drivers (the package drivers/mlgshimmy): how make runs them and
+# what a driver's result depends on; included by ../Makefile first.
+#
+#   $(PYTHON) -m mlgshimmy.<room>.<module> ...   a driver (PYTHONPATH set here)
+#   $(eval $(call py_deps,<name>,<module>))    $(PYDEPS_<name>): the files of
+#                                              the module's import closure
+#   $(call shell_quote,<text>)                 <text> as one single-quoted word
+export PYTHONPATH := $(CURDIR)/drivers$(if $(PYTHONPATH),:$(PYTHONPATH))
+shell_quote = '$(subst ','\'',$(1))'
+
+# `make -n` runs recipe lines that call $(MAKE); those check DRY_RUN so that
+# a dry run prints what it would do instead of doing it.
+DRY_RUN := $(findstring n,$(firstword -$(MAKEFLAGS)))
+# No driver's import closure is needed to clean or to print the help.
+PY_DEPS_WANTED := $(if $(filter-out clean help,$(or $(MAKECMDGOALS),all)),yes)
+
+# Like gcc -MMD: build/deps/<name>.d sets PYDEPS_<name> to every file of the
+# package that the module imports, imports inside functions included
+# (shared.jobs.depends reads the sources and imports nothing, so it works
+# before anything is built); the .d file depends on them and is remade when
+# one changes.
+DEPS_DIR := build/deps
+define py_deps
+ifndef PYDEPS_RULE_$(1)
+PYDEPS_RULE_$(1) := 1
+$(DEPS_DIR)/$(1).d:
+	@mkdir -p $$(@D)
+	$$(PYTHON) -m mlgshimmy.shared.jobs.depends PYDEPS_$(1) $$@ mlgshimmy.$(2) > $$@
+ifeq ($(PY_DEPS_WANTED),yes)
+-include $(DEPS_DIR)/$(1).d
+endif
+endif
+endef

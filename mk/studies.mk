@@ -1,0 +1,84 @@
+# The studies (mlgshimmy.studies): the side-stay geometry, the sweep over
+# it, the allowable-freeplay criterion, the attractor atlas, the torus check
+# and the c_psi calibration; included by ../Makefile after figures.mk.
+
+# Side-stay geometry (angles in degrees): make sidestay RHO=10 MU=10 [EOM=0|1|2]
+# (EOM: the eom_terms level, default 2, the complete equations)
+EOM ?= 2
+.PHONY: sidestay sidestay_rho10_mu10 calibrate
+sidestay: $(AUTO_DRIVER_DEPS)
+	$(if $(and $(RHO),$(MU)),,$(error make sidestay needs RHO=<deg> MU=<deg>))
+	$(if $(filter-out 0 1 2,$(EOM))$(filter-out 1,$(words $(EOM))),$(error make sidestay: \
+	    EOM=$(EOM) must be 0 (as printed), 1 (side-stay corrections) or 2 (complete equations)))
+	$(PYTHON) -m mlgshimmy.studies.sidestay --rho $(call shell_quote,$(RHO)) \
+	    --mu $(call shell_quote,$(MU)) --eom-terms $(EOM)
+
+# The non-zero geometry with a regression reference (tests/reference/).
+sidestay_rho10_mu10: $(AUTO_DRIVER_DEPS)
+	$(PYTHON) -m mlgshimmy.studies.sidestay --rho 10 --mu 10
+REGRESS_FIGURES += sidestay_rho10_mu10
+
+# The c_psi of the `figures` set (MLG_C_PSI_FIGURES in c/parameters.c).
+calibrate: $(AUTO_DRIVER_DEPS)
+	$(PYTHON) -m mlgshimmy.studies.calibrate_c_psi
+
+# Sweep over side-stay angles (degrees, comma-separated), one job per grid
+# point (mk/jobs.mk):
+#   make -j2 sweep SWEEP_RHO=-10,0,10 SWEEP_MU=-10,0,10
+SWEEP_RHO ?= -10,0,10
+SWEEP_MU ?= -10,0,10
+$(eval $(call py_deps,sweep,studies.sweep))
+$(eval $(call job_grid,sweep,--rho=$(call shell_quote,$(SWEEP_RHO)) \
+    --mu=$(call shell_quote,$(SWEEP_MU)),$$(PYDEPS_sweep) $(MODEL_INPUTS) | auto,point))
+
+# The allowable-freeplay criterion (eq. 17) under each low-load assumption:
+# one job per group of assumptions (studies.criterion GROUPS), so `make -j2
+# criterion` runs them side by side; `criterion` prints the table and draws
+# the figure.  The groups are parts of the result cache (shared.jobs),
+# recomputed when a file of the study's import closure, the constants or the
+# model is newer.
+CRITERION_DIR := $(RUN_ROOT)/criterion/parts
+CRITERION_GROUPS := strut stage c_psi tyre
+$(eval $(call py_deps,criterion,studies.criterion))
+CRITERION_DEPS = $(PYDEPS_criterion) $(MODEL_INPUTS) | auto
+
+$(CRITERION_DIR)/%.json: $(CRITERION_DEPS)
+	$(PYTHON) -m mlgshimmy.studies.criterion scan $*
+
+# AUTO's check starts from the scan's minimum of each strut variant.
+$(CRITERION_DIR)/auto.json: $(CRITERION_DIR)/strut.json $(CRITERION_DEPS)
+	$(PYTHON) -m mlgshimmy.studies.criterion auto
+
+.PHONY: criterion criterion-plot
+criterion: $(CRITERION_GROUPS:%=$(CRITERION_DIR)/%.json) $(CRITERION_DIR)/auto.json
+	$(PYTHON) -m mlgshimmy.studies.criterion report
+# The table and figure from the cached parts alone (no rescan).
+criterion-plot:
+	$(PYTHON) -m mlgshimmy.studies.criterion report
+
+FIGURES += criterion
+
+# Attractor atlas over (V, F*) by time simulation (studies.atlas); axes
+# "a,b,c" or "start:stop:step", one job per cell:
+#   make -j2 atlas                       the default grid (atlas DEFAULT_*)
+#   make -j2 atlas ATLAS_GRID=coarse     8 x 5 cells of the default grid
+#   make -j2 atlas ATLAS_V=100:600:100 ATLAS_FSTAR=0.5,1
+# Results in $(RUN_ROOT)/atlas/, plot $(RUN_ROOT)/figures/atlas.png.
+ifeq ($(ATLAS_GRID),coarse)
+ATLAS_V ?= 10,30,50,100,200,300,450,600
+ATLAS_FSTAR ?= 0.2,0.5,1,1.8,3
+else ifneq ($(ATLAS_GRID),)
+$(error ATLAS_GRID=$(ATLAS_GRID): the only named grid is coarse)
+endif
+ATLAS_ARGS := $(if $(ATLAS_V),--V=$(call shell_quote,$(ATLAS_V))) \
+              $(if $(ATLAS_FSTAR),--Fstar=$(call shell_quote,$(ATLAS_FSTAR)))
+$(eval $(call py_deps,atlas,studies.atlas))
+$(eval $(call job_grid,atlas,$(ATLAS_ARGS),$$(PYDEPS_atlas) $(MLG_SIMULATE) $(MLG_SHARED),cell))
+
+# Torus points of the large-amplitude orbits (Figs. 7 and 10), checked on
+# three meshes and by simulation, their windows of instability on a fine
+# mesh, and continued in (V, F*) (studies.torus_check): results in
+# $(RUN_ROOT)/torus/result.json (Fig. 11 continues its own torus curves).
+.PHONY: torus
+torus: $(AUTO_DRIVER_DEPS) $(MLG_SIMULATE)
+	$(PYTHON) -m mlgshimmy.studies.torus_check
