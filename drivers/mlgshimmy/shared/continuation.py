@@ -37,6 +37,7 @@ class Start:
         self.model.check()
         self.U = self.model.equilibrium()
         self.PAR = self.model.par()
+        mlgmodel.register_constants(self.model)
 
 
 def run(rundir, name, kind=None, overlay=None, **kw):

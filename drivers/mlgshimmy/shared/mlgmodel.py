@@ -112,7 +112,9 @@ def __getattr__(name: str):
 CONSTANTS_FILE = "constants"              # PAR(15): k of mlg.constants.<k>, 0 none
 MEASURES_FIRST_PAR = 21
 _EPSILON_PARTS = ("eps_abs", "eps_rel")
-_constants_files: Dict[int, str] = {}     # {k: text of mlg.constants.<k>} of par()
+# {k: text of mlg.constants.<k>}: the constants files of the runs this
+# process started (register_constants), written into each run directory
+_constants_files: Dict[int, str] = {}
 
 
 class Model:
@@ -175,18 +177,20 @@ class Model:
         return {name: self[name] for name in _table("FIELDS")
                 if name not in in_par and self[name] != table[name]}
 
-    def par(self) -> Dict[str, float]:
-        """The PAR values AUTO reads, as {name: value}, in PAR order; with
-        constants changed, PAR(15) names the file that carries them (written
-        to a run directory by write_constants_files)."""
-        par = {name: self[name] for name in _table("PARNAMES")
-               if name not in (None, CONSTANTS_FILE)}
+    def constants_file(self):
+        """(k, text) of the file mlg.constants.<k> that carries constants(),
+        k named by the text's checksum; (0, "") if none differs."""
         changed = self.constants()
         text = "".join(f"{name} {value!r}\n" for name, value in changed.items())
-        k = zlib.crc32(text.encode()) % (2**31 - 1) + 1 if changed else 0
-        if k:
-            _constants_files[k] = text
-        par[CONSTANTS_FILE] = k
+        return (zlib.crc32(text.encode()) % (2**31 - 1) + 1 if changed else 0), text
+
+    def par(self) -> Dict[str, float]:
+        """The PAR values AUTO reads, as {name: value}, in PAR order; with
+        constants changed, PAR(15) names the file that carries them
+        (constants_file; a run needs it written: register_constants)."""
+        par = {name: self[name] for name in _table("PARNAMES")
+               if name not in (None, CONSTANTS_FILE)}
+        par[CONSTANTS_FILE] = self.constants_file()[0]
         return par
 
     def check(self) -> None:
@@ -236,9 +240,18 @@ class Model:
         return library().mlg_epsilon_m(ctypes.byref(self._p))
 
 
+def register_constants(model: Model) -> int:
+    """Remember the model's constants file for the runs of this process
+    (a run started from a solution of it carries its PAR(15)); its k."""
+    k, text = model.constants_file()
+    if k:
+        _constants_files[k] = text
+    return k
+
+
 def write_constants_files(rundir: str) -> None:
-    """Write mlg.constants.<k> into rundir for every k that par() handed out
-    in this process (each replaced atomically, the same text for the same k)."""
+    """Write mlg.constants.<k> into rundir for every k registered in this
+    process (each replaced atomically, the same text for the same k)."""
     from mlgshimmy.shared.jobs.atomic import write_text
     for k, text in _constants_files.items():
         write_text(os.path.join(rundir, f"mlg.constants.{k}"),
