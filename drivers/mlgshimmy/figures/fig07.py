@@ -4,9 +4,9 @@ lateral amplitudes."""
 import matplotlib.pyplot as plt
 
 from mlgshimmy.shared import continuation as ct
-from mlgshimmy.shared import paths
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paths
 
 LOADS = (0.2, 1.0)
 COLUMNS = ("V", "psi_amp", "delta_amp")

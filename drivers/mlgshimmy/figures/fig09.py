@@ -3,9 +3,9 @@ continued from the Hopf point of straight rolling at F* = 1."""
 import matplotlib.pyplot as plt
 
 from mlgshimmy.shared import continuation as ct
-from mlgshimmy.shared import paths
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paths
 
 FSTAR_RANGE = (0.1, 3.5)   # below F* ~ 0.1 the curve leaves V <= 600 m/s steeply
 

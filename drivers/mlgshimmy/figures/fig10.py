@@ -7,10 +7,10 @@ import matplotlib.pyplot as plt
 
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
-from mlgshimmy.shared import paper
-from mlgshimmy.shared import paths
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import paths
 
 DEG = draw.DEG
 V_MAX = ct.V_MAX

@@ -12,11 +12,11 @@ import numpy
 
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import draw
-from mlgshimmy.shared import jobs
 from mlgshimmy.shared import spectrum
 
 DEG = draw.DEG

@@ -6,13 +6,13 @@ import matplotlib.pyplot as plt
 import numpy
 
 from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
+from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
-from mlgshimmy.shared import draw
 from mlgshimmy.shared.draw import magnitude as draw_magnitude
-from mlgshimmy.shared import jobs
 
 FREEPLAYS = freeplay.FIG13_FREEPLAYS
 COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red")

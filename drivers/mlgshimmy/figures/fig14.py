@@ -5,14 +5,14 @@ frequency of the stable orbits at V = 15, 50, 80, 110 m/s continued in y_fp,
 with the Hopf curves in (y_fp, V) dot-dashed in (h)."""
 import matplotlib.pyplot as plt
 
-from mlgshimmy.shared import paths
 from mlgshimmy.shared import draw
-from mlgshimmy.shared.draw import magnitude as draw_magnitude
 from mlgshimmy.shared import freeplay
+from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
-from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paths
+from mlgshimmy.shared.draw import magnitude as draw_magnitude
 
 FREEPLAYS = freeplay.FIG14_FREEPLAYS
 

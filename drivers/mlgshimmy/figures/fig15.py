@@ -5,8 +5,8 @@ no continuation, no AUTO import and nothing to cache (it draws in seconds)."""
 import matplotlib.pyplot as plt
 import numpy
 
-from mlgshimmy.shared import freeplay as fp
 from mlgshimmy.shared import draw
+from mlgshimmy.shared import freeplay as fp
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 

@@ -10,12 +10,12 @@ from matplotlib.patches import Patch
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from mlgshimmy.shared import branches
+from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
+from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import draw
-from mlgshimmy.shared import jobs
 from mlgshimmy.shared import surfaces
 
 FAMILY = {

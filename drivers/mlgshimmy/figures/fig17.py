@@ -5,10 +5,10 @@ cached result: no computation of its own."""
 import matplotlib.pyplot as plt
 import numpy
 
-from mlgshimmy.shared import magnitude as mg
-from mlgshimmy.shared import paper
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import paper
 
 
 def compute():

@@ -16,12 +16,12 @@ from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch
 
 from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import draw
 from mlgshimmy.shared import regions
-from mlgshimmy.shared import jobs
 
 FSTARS = mg.ENVELOPE_LOADS
 MAP_KAPPA = numpy.geomspace(0.05, 8.0, 50)

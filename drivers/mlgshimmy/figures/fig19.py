@@ -7,10 +7,10 @@ profiles between their kappa* profiles are allowed by one only."""
 import matplotlib.pyplot as plt
 import numpy
 
-from mlgshimmy.shared import mlgmodel
-from mlgshimmy.shared import paper
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paper
 
 SPAN = 3.0
 

@@ -18,11 +18,11 @@ import numpy
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
-from mlgshimmy.shared.freeplay import EPSILON, SCALINGS
+from mlgshimmy.shared import jobs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import jobs
 from mlgshimmy.shared import spectrum
+from mlgshimmy.shared.freeplay import EPSILON, SCALINGS
 
 FSTAR = 1.0
 V_MIN, V_MAX = 0.5, 200.0    # V = 0 is degenerate (tyre states undetermined)

@@ -20,6 +20,7 @@ from typing import Dict, Sequence, Union
 import numpy
 
 from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs.atomic import write_text
 
 LIBRARY = os.path.join(paths.BUILD, "lib", "libmlg.so")
 
@@ -252,7 +253,6 @@ def register_constants(model: Model) -> int:
 def write_constants_files(rundir: str) -> None:
     """Write mlg.constants.<k> into rundir for every k registered in this
     process (each replaced atomically, the same text for the same k)."""
-    from mlgshimmy.shared.jobs.atomic import write_text
     for k, text in _constants_files.items():
         write_text(os.path.join(rundir, f"mlg.constants.{k}"),
                    f"# constants that differ from the `table` set (mlgshimmy.shared.mlgmodel)\n"

@@ -19,10 +19,12 @@ import tempfile
 
 import numpy
 
+from mlgshimmy.shared import attractor
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import floquet
 from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import simulator
 from mlgshimmy.shared import spectrum
 
 V_MAX = ct.V_MAX
@@ -77,8 +79,6 @@ def simulated_rate(values, v, psi0, span=SIM_T, rtol=None):
     """Growth rate [1/s] of the psi peaks' relative spread in a simulation
     from psi0 (log-linear fit over span, one sample per SPAN seconds; rtol:
     the simulator's tolerance, atol 1e-2 of it, default its own)."""
-    from mlgshimmy.shared import attractor
-    from mlgshimmy.shared import simulator
     eps = 0.1 * values["yfp"]
     tolerance = ("--rtol", rtol, "--atol", 1e-2 * rtol) if rtol else ()
     with tempfile.TemporaryDirectory() as tmp:

@@ -6,8 +6,8 @@ import sys
 
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
-from mlgshimmy.shared import paths
 from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paths
 
 V_PAPER = 346.1
 

@@ -22,11 +22,11 @@ import matplotlib.pyplot as plt
 import numpy
 
 from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import draw
-from mlgshimmy.shared import jobs
 
 VARIANTS = (0, 1)
 # The one-parameter family joining the strut variants: the stage-switch

@@ -26,9 +26,9 @@ import matplotlib.pyplot as plt
 
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import draw
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import draw
 from mlgshimmy.shared import spectrum
 
 V_START, V_STOP = ct.V_MIN, ct.V_MAX

@@ -22,6 +22,7 @@ import sys
 import time
 
 from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs import grid as jobgrid
 axis = jobgrid.axis
@@ -43,7 +44,6 @@ def parameters(rho, mu, eom_terms=2):
 
 
 def check(points):
-    from mlgshimmy.shared import mlgmodel
     bad = []
     for rho, mu in points:
         try:

@@ -4,14 +4,14 @@ slices' folds), the pitchforks and the zero-freeplay Hopf curve; where two
 curves stop in MX at one point (mx_ends)."""
 import numpy
 
+from mlgshimmy.figures.fig11.orbits import slice_rundir
+from mlgshimmy.figures.fig11.plane import FREEPLAY, F_MAX, F_MIN, SLICES, STOP, V_MAX, V_SCAN
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import spectrum
-from mlgshimmy.figures.fig11.orbits import slice_rundir
-from mlgshimmy.figures.fig11.plane import FREEPLAY, F_MAX, F_MIN, SLICES, STOP, V_MAX, V_SCAN
 
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
 

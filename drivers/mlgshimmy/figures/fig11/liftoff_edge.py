@@ -3,9 +3,9 @@ speed bisected on a few loads, its two ends on V = V_MAX bisected in F*."""
 import numpy
 import os
 
+from mlgshimmy.figures.fig11.plane import FREEPLAY, V_MAX
 from mlgshimmy.shared import liftoff
 from mlgshimmy.shared import paths
-from mlgshimmy.figures.fig11.plane import FREEPLAY, V_MAX
 
 # The lift-off edge: bisected in V on these loads (from a speed without
 # lift-off within liftoff.T_END up to V_MAX), its ends in F* on V = V_MAX.

@@ -3,6 +3,7 @@ the large-amplitude family (not Hopf-born in range) followed from F* = 1,
 the eigenvalue grid of straight rolling, and which orbits are stable."""
 import numpy
 
+from mlgshimmy.figures.fig11.plane import (FREEPLAY, F_GRID, F_MAX, F_MIN, SLICES, V_GRID, V_MAX, V_MIN, V_SCAN)
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
@@ -10,7 +11,6 @@ from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import torus
-from mlgshimmy.figures.fig11.plane import (FREEPLAY, F_GRID, F_MAX, F_MIN, SLICES, V_GRID, V_MAX, V_MIN, V_SCAN)
 
 # An orbit family is low-frequency if it is born at a Hopf point below this:
 # the slices' Hopf frequencies fall in two groups, 1.7-8.3 Hz and 10.3-14.6

@@ -1,10 +1,10 @@
 """Fig. 11 drawn from its cached result."""
 import numpy
 
-from mlgshimmy.shared import jobs
 from mlgshimmy.figures.fig11.curves import JOIN_LABELS
 from mlgshimmy.figures.fig11.plane import F_MAX, SLICES, V_MAX
 from mlgshimmy.figures.fig11.region_map import shade
+from mlgshimmy.shared import jobs
 
 STYLES = {"hopf": ("k-", "Hopf (y_fp = 1 mm)"), "fold": ("b--", "fold of periodic orbits"),
           "zero": ("k:", "Hopf, zero freeplay")}

@@ -2,10 +2,10 @@
 by the attractors the slices' samples find there (shared.regions)."""
 import numpy
 
-from mlgshimmy.shared import jobs
-from mlgshimmy.shared import regions
 from mlgshimmy.figures.fig11.plane import F_GRID, V_GRID, V_MAX, V_MIN
 from mlgshimmy.figures.fig11.tori import torus_speed
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import regions
 
 ATTRACTORS, NAMES = regions.ATTRACTORS, regions.ATTRACTOR_NAMES
 BAND = "; between the pitchforks: off-centre yaw equilibria (their stability not computed)"

@@ -3,12 +3,12 @@ edges of the tongues of instability left of it, continued by AUTO from
 torus points of the large family (shared.torus)."""
 import numpy
 
-from mlgshimmy.shared import jobs
-from mlgshimmy.shared import paths
-from mlgshimmy.shared import torus
 from mlgshimmy.figures.fig11.curves import on_curves
 from mlgshimmy.figures.fig11.orbits import large_upwards
 from mlgshimmy.figures.fig11.plane import V_MAX
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import torus
 
 # the torus curve bounding the quasi-periodic region, continued from its
 # point on this load; the loads whose other torus points (narrow tongues of

@@ -25,10 +25,11 @@ import os
 import sys
 import tempfile
 
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import simulator
+from mlgshimmy.shared.jobs import grid as jobgrid
 from mlgshimmy.studies.atlas import cell as atlas_cell
 from mlgshimmy.studies.atlas import compare as atlas_compare
-from mlgshimmy.shared import jobs
-from mlgshimmy.shared.jobs import grid as jobgrid
 axis = jobgrid.axis
 
 CELLS = jobgrid.Plane("V", "F", "atlas")   # cell V<v>_F<F*>
@@ -46,7 +47,6 @@ def grid(args):
 
 
 def check(points):
-    from mlgshimmy.shared import simulator
     bad = []
     for v, fstar in points:
         # a 1 ms run validates the parameters and finds the equilibrium

@@ -11,7 +11,11 @@ for a kind can be applied to stored cells.
 import os
 import resource
 
+import numpy
+
+from mlgshimmy.shared import attractor
 from mlgshimmy.shared import freeplay, simulator
+from mlgshimmy.shared import mlgmodel
 
 FREEPLAY = freeplay.NOMINAL      # y_fp = 1 mm, eps = 0.1 mm (Fig. 11)
 
@@ -49,7 +53,6 @@ def inside_start(v, fstar, psi0, csv):
 def read_run(csv):
     """t, psi, delta, lambda_L of the simulator's samples (of a run that left
     the domain: those up to then), or None if there are none."""
-    import numpy
     try:
         data = numpy.loadtxt(csv, delimiter=",", skiprows=1, usecols=(0, 1, 2, 9), ndmin=2)
     except (OSError, ValueError):
@@ -60,7 +63,6 @@ def read_run(csv):
 def freeplay_angle(fstar):
     """psi_fp = y_fp / r_tlk [rad] at straight rolling (r_tlk depends on the
     strut compression, so on F*): 2.56e-3 at F* = 0.02, 2.05e-3 at 3.5."""
-    from mlgshimmy.shared import mlgmodel
     model = mlgmodel.Model("figures", Fstar=fstar, yfp=FREEPLAY["yfp"],
                            eps_abs=FREEPLAY["eps_abs"], eps_rel=FREEPLAY["eps_rel"])
     return FREEPLAY["yfp"] * 1e-3 / model.r_tlk(model.equilibrium()["eta"])
@@ -70,8 +72,6 @@ def end_state(data, psi_fp):
     """attractor.classify of the samples, with the lateral (delta) and tyre
     (lambda_L) motion relative to psi at the orbit's frequency as
     [amplitude ratio, phase lead in degrees] for a shimmy end."""
-    import numpy
-    from mlgshimmy.shared import attractor
     t, psi = data[:, 0], data[:, 1]
     result = attractor.classify(t, psi, WINDOW, psi_fp)
     if result["frequency_hz"] > 0:
@@ -117,7 +117,6 @@ def confirmed(result):
     that can be a transient (at V = 250, F* = 0.02 a start's spread grew at
     0.013 /s over 20-40 s at 1e-4, while the same orbit's decays at
     -0.017 /s over 60-120 s), so the growth must last to the last stage."""
-    from mlgshimmy.shared import attractor
     if result["kind"] == "unsettled":
         return False
     return not (result.get("growing") and result["peak_spread"] < attractor.MODULATED)
@@ -162,7 +161,6 @@ def unstable_orbits(starts):
     rest excites the unstable Floquet pair little; it grows at ~1e-2 /s
     from ~1e-5 and needs ~10 min).  Its kind becomes quasi, with the start
     that showed the growth in `unstable_by`."""
-    from mlgshimmy.shared import attractor
     growing = {k: s for k, s in starts.items() if s["kind"] == "quasi" and s.get("growing")}
     for start, s in starts.items():
         if s["kind"] not in ("low", "high") or s["peak_spread"] >= attractor.SPREAD_NOISE:
