@@ -19,9 +19,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check, check_close  # noqa: E402
-from mlgshimmy.shared import attractor  # noqa: E402
 from mlgshimmy.studies.atlas import cell as atlas_cell  # noqa: E402
 from mlgshimmy.studies.atlas import compare as atlas_compare  # noqa: E402
+from mlgshimmy.shared import attractor  # noqa: E402
 
 T = np.arange(0.0, 10.0 + 1e-9, 1e-3)       # two 5 s windows, atlas sampling
 T40 = np.arange(0.0, 40.0 + 1e-9, 1e-3)     # the first stage's time limit

@@ -11,9 +11,9 @@ import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
+from mlgshimmy.studies import criterion  # noqa: E402
 from mlgshimmy.shared import magnitude as mg  # noqa: E402
 from mlgshimmy.shared import mlgmodel  # noqa: E402
-from mlgshimmy.studies import criterion  # noqa: E402
 from check import check, check_close  # noqa: E402
 
 # docs/reproduction.md, Fig. 18: kappa* = 0.3651 at F* = 0.295 (variant 0)

@@ -11,8 +11,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
 from check import check, check_close  # noqa: E402
-from mlgshimmy.figures import fig11  # noqa: E402
 from mlgshimmy.studies.atlas import compare as atlas_compare  # noqa: E402
+from mlgshimmy.figures import fig11  # noqa: E402
 
 V = fig11.V_GRID
 HIGH, QUASI = fig11.ATTRACTORS["high"], fig11.ATTRACTORS["quasi"]

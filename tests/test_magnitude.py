@@ -12,12 +12,12 @@ import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
-from mlgshimmy.figures import fig15  # noqa: E402
 from mlgshimmy.shared import autoglue  # noqa: E402
 from mlgshimmy.shared import continuation as ct  # noqa: E402
+from mlgshimmy.shared import spectrum  # noqa: E402
+from mlgshimmy.figures import fig15  # noqa: E402
 from mlgshimmy.shared import magnitude as mg  # noqa: E402
 from mlgshimmy.shared import mlgmodel  # noqa: E402
-from mlgshimmy.shared import spectrum  # noqa: E402
 from check import check, check_close  # noqa: E402
 
 RUNDIR = os.path.join(autoglue.BUILD, "tests", "magnitude")

@@ -21,7 +21,8 @@ from mlgshimmy.shared import spectrum
 MODEL = os.path.join(paths.BUILD, "models", "mlg")
 CONSTANTS = os.path.join(paths.ROOT, "constants", "c.mlg")
 RUN_CONSTANTS = os.path.join(paths.ROOT, "constants", "runs")
-V_MIN, V_MAX = 0.5, 600.0   # m/s: the paper's speeds (V = 0 is degenerate: tyre states undetermined)
+# m/s: the paper's speeds (V = 0 is degenerate: the tyre states are undetermined)
+V_MIN, V_MAX = 0.5, 600.0
 SPEED_SCAN = numpy.linspace(V_MIN, V_MAX, 3000)   # the eigenvalue scan of straight rolling in V
 COLLAPSED = 1e-8      # rad: an orbit with a smaller psi amplitude is straight rolling
 SHRUNK = 0.3          # an orbit below this part of its branch's largest amplitude has shrunk
@@ -76,7 +77,8 @@ def equilibria(rundir, name, start, parameter="V", stop=None, overlay=None, **kw
 def periodic_from(rundir, name, point, parameter="V", stop=None, overlay=None, **kw):
     """The periodic orbits born at the Hopf point `point` (or through the
     orbit `point`), continued in `parameter` (overlay as for equilibria)."""
-    return run(rundir, name, "periodic", overlay, data=point, ICP=[parameter, 11] + mlgmodel.MEASURES,
+    return run(rundir, name, "periodic", overlay, data=point,
+               ICP=[parameter, 11] + mlgmodel.MEASURES,
                UZSTOP=stop or {}, **kw)
 
 
@@ -200,7 +202,8 @@ def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
     """The Hopf points of straight rolling along `grid` of `parameter` and
     the periodic orbits born at each, followed across the others
     (follow_orbits) within the grid's range; a Hopf point where an earlier
-    branch collapsed starts none (AUTO still locates it).  Runs <tag>hb<k>, <tag>po<k>[_<n>], k from
+    branch collapsed starts none (AUTO still locates it).  Runs <tag>hb<k>,
+    <tag>po<k>[_<n>], k from
     `first`; steps: AUTO constants of the orbit runs."""
     changes = spectrum.stability_changes(parameter_set, parameter, grid, **values)
     hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]

@@ -19,9 +19,14 @@ FIG13_FREEPLAYS = (0.2, 0.5, 1.0, 2.0)                 # y_fp [mm], "ratio"
 FIG14_FREEPLAYS = (0.05, 0.098, 0.11, 0.15, 0.35, 1.0)  # y_fp [mm], "fixed"
 
 
+def epsilon(case):
+    """The smoothing width eps = eps_abs + eps_rel * y_fp [mm] of a freeplay case."""
+    return case["eps_abs"] + case["eps_rel"] * case["yfp"]
+
+
 def profile(yfp, scaling, k_tlk, span=3.0, n=801):
     """Eq. (15): (y_tlk [mm], M_kpsi/r_tlk [N]) over |y_tlk| <= span*y_fp."""
-    eps = SCALINGS[scaling]["eps_abs"] + SCALINGS[scaling]["eps_rel"] * yfp
+    eps = epsilon({**SCALINGS[scaling], "yfp": yfp})
     y = numpy.linspace(-span * yfp, span * yfp, n)
     force = [mlgmodel.torque_link_force(k_tlk, 1e-3 * v, 1e-3 * yfp, 1e-3 * eps) for v in y]
     return y, numpy.array(force)

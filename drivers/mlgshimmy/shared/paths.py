@@ -8,7 +8,8 @@ at a private directory so that build/<fig>/ stays as it was.
 """
 import os
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+# the repository: this file is drivers/mlgshimmy/shared/paths.py in it
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 BUILD = os.path.join(ROOT, "build")
 
 

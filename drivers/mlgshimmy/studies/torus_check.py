@@ -20,7 +20,8 @@ For each case:
      by steps that cross the unit circle in one go (floquet.py says why),
      its start seeded with the critical Floquet eigenfunction (seeded).
 Fig. 11 continues its own torus curves with the same recipes (mlgshimmy.shared.torus).
-`python3 -m mlgshimmy.studies.torus_check [case ...]` (default: every case) writes each case's result to
+`python3 -m mlgshimmy.studies.torus_check [case ...]` (default: every case)
+writes each case's result to
 $MLG_RUN_ROOT/torus/<case>/result.json and all cases found there to
 $MLG_RUN_ROOT/torus/result.json (the curves as arrays).
 `make torus`.

@@ -18,14 +18,16 @@ curves bounding it ("edge_curves") for the attractor atlas."""
 import numpy
 
 from mlgshimmy.figures.fig11.curves import mx_ends, on_curves, stored_curves, upper_fold_curves
-from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, liftoff_edge, liftoff_end, liftoff_speed)
-from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits, straight_rolling_stable)
+from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, liftoff_edge,
+                                                  liftoff_end, liftoff_speed)
+from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits,
+                                            straight_rolling_stable)
 from mlgshimmy.figures.fig11.plane import F_GRID, SLICES, V_GRID
-from mlgshimmy.figures.fig11.region_map import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list, region_map,
+from mlgshimmy.figures.fig11.region_map import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
+                                                region_map, region_name, slice_codes)
+from mlgshimmy.figures.fig11.tori import TONGUE_EDGES, TONGUE_TOL, tongue_curve, torus_curves
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import liftoff
-    region_name, slice_codes)
-from mlgshimmy.figures.fig11.tori import TONGUE_EDGES, TONGUE_TOL, tongue_curve, torus_curves
 
 
 def parts():

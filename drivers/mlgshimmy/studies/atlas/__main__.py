@@ -25,7 +25,7 @@ import os
 import sys
 import tempfile
 
-from mlgshimmy.shared import jobs
+from mlgshimmy.shared import freeplay, jobs
 from mlgshimmy.shared import simulator
 from mlgshimmy.shared.jobs import grid as jobgrid
 from mlgshimmy.studies.atlas import cell as atlas_cell
@@ -94,7 +94,7 @@ def summary(points):
         counts[c["label"]] = counts.get(c["label"], 0) + 1
     cpu = [c["cpu_seconds"] for c in cells]
     lines = [f"atlas: {len(cells)} cells, y_fp = {atlas_cell.FREEPLAY['yfp']:g} mm, epsilon = "
-             f"{atlas_cell.FREEPLAY['eps_abs'] + atlas_cell.FREEPLAY['eps_rel'] * atlas_cell.FREEPLAY['yfp']:g} mm; starts " +
+             f"{freeplay.epsilon(atlas_cell.FREEPLAY):g} mm; starts " +
              ", ".join(f"{k} psi0 = {v:g} rad" for k, v in atlas_cell.STARTS.items()),
              f"CPU per cell: mean {sum(cpu) / len(cpu):.2f} s, max {max(cpu):.2f} s; "
              f"total {sum(cpu):.0f} s", "cells by label:"]
