@@ -27,6 +27,7 @@ import shutil
 import signal
 import sys
 import time
+from typing import Any, Callable, List, Optional, Sequence, Union
 
 import numpy
 
@@ -105,7 +106,7 @@ def _owned(path):
     return any(path == p or path.startswith(p + os.sep) for p in list(_claimed) + inherited)
 
 
-def claim(path, keep=None):
+def claim(path: str, keep: Optional[Callable[[str], bool]] = None) -> str:
     """Make the run directory `path` this process's own and return it.
 
     The first claim takes an exclusive lock (flock on .<dir>.lock beside it,
@@ -251,7 +252,7 @@ def special_points(bd):
             for _, label, ty in branches.labelled_points(branch)]
 
 
-def read_constants(paths):
+def read_constants(paths: Union[str, List[str]]):
     """A constants file, or a list of them: each later file overrides the
     constants it sets (read with AUTO's parseC; unset ones stay as they are)."""
     if isinstance(paths, str):
@@ -304,8 +305,9 @@ class _CPULimit:
                 continue
 
 
-def run(rundir, name, data=None, constants=None, expect=(), allow_mx=False, time_limit=None,
-        **kw):
+def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]] = None,
+        expect: Sequence[str] = (), allow_mx: bool = False, time_limit: Optional[float] = None,
+        **kw: Any):
     """Run AUTO in rundir, save to b./s./d.<name> there, and check the result.
 
     constants: path of a constants file, or a list of files merged in order

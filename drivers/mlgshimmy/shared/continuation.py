@@ -10,6 +10,8 @@ curves of Hopf points and folds of cycles.
 """
 import os
 
+from typing import Any, Optional, Sequence
+
 import numpy
 
 from mlgshimmy.shared import autoglue
@@ -33,7 +35,7 @@ class Start:
     """Parameters of a run and the straight-rolling equilibrium there,
     validated by the c/ library before AUTO starts."""
 
-    def __init__(self, parameter_set="figures", **values):
+    def __init__(self, parameter_set: str = "figures", **values: float):
         self.model = mlgmodel.Model(parameter_set, **values)
         self.model.check()
         self.U = self.model.equilibrium()
@@ -41,7 +43,8 @@ class Start:
         mlgmodel.register_constants(self.model)
 
 
-def run(rundir, name, kind=None, overlay=None, **kw):
+def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[str] = None,
+        **kw: Any):
     """autoglue.run on the MLG model: the base constants, then the run-type
     file constants/runs/c.<kind> if given, then the overlay file
     constants/runs/c.<overlay> if given, then the keyword overrides."""
@@ -51,7 +54,7 @@ def run(rundir, name, kind=None, overlay=None, **kw):
     return autoglue.run(rundir, name, constants=files, e=MODEL, **kw)
 
 
-def load(rundir, name):
+def load(rundir: str, name: str):
     """A run saved by run() (b./s./d.<name> in rundir) read back as a
     diagram, checked as run() checks it (MX allowed: such runs are kept)."""
     files = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
@@ -67,14 +70,16 @@ def load(rundir, name):
     return bd
 
 
-def equilibria(rundir, name, start, parameter="V", stop=None, overlay=None, **kw):
+def equilibria(rundir: str, name: str, start: Start, parameter: str = "V",
+               stop: Optional[dict] = None, overlay: Optional[str] = None, **kw: Any):
     """Straight rolling continued in `parameter` from `start` (overlay: a
     constants/runs/c.<overlay> on top of c.equilibria)."""
     return run(rundir, name, "equilibria", overlay, PAR=start.PAR, U=start.U,
                ICP=[parameter] + mlgmodel.MEASURES, UZSTOP=stop or {}, **kw)
 
 
-def periodic_from(rundir, name, point, parameter="V", stop=None, overlay=None, **kw):
+def periodic_from(rundir: str, name: str, point, parameter: str = "V",
+                  stop: Optional[dict] = None, overlay: Optional[str] = None, **kw: Any):
     """The periodic orbits born at the Hopf point `point` (or through the
     orbit `point`), continued in `parameter` (overlay as for equilibria)."""
     return run(rundir, name, "periodic", overlay, data=point,
@@ -82,7 +87,8 @@ def periodic_from(rundir, name, point, parameter="V", stop=None, overlay=None, *
                UZSTOP=stop or {}, **kw)
 
 
-def hopf_point(rundir, name, parameter_set, parameter, value, width=None, **values):
+def hopf_point(rundir: str, name: str, parameter_set: str, parameter: str, value: float,
+               width: Optional[float] = None, **values: float):
     """AUTO's HB solution at the Hopf point near `value` (from a spectrum
     scan): straight rolling continued through a narrow window around it with
     steps small enough for AUTO's Hopf test."""
@@ -97,7 +103,8 @@ def hopf_point(rundir, name, parameter_set, parameter, value, width=None, **valu
     return point
 
 
-def hopf_points(rundir, name, parameter_set, parameter, grid, limit=None, **values):
+def hopf_points(rundir: str, name: str, parameter_set: str, parameter: str,
+                grid: Sequence[float], limit: Optional[int] = None, **values: float) -> list:
     """Every Hopf point of straight rolling along `grid` (at most `limit`,
     from the lowest): scanned by spectrum.hopf_scan, each located by AUTO in
     run <name><k>, k = 1, 2, ..."""

@@ -11,19 +11,22 @@ axis; on this model that is usually the lightly damped axial pair
 within |Re| < 0.016 of it.  These scans find every crossing;
 continuation.hopf_point then has AUTO locate it.
 """
+from typing import Callable, Dict, List, Optional, Sequence, Tuple
+
 import numpy
 
 from mlgshimmy.shared import mlgmodel
 
 
-def eigenvalues(model, u=None):
+def eigenvalues(model: mlgmodel.Model, u: Optional[dict] = None) -> numpy.ndarray:
     """Eigenvalues of the Jacobian at the state u (default: the model's
     straight-rolling equilibrium)."""
     u = model.equilibrium() if u is None else u
     return numpy.linalg.eigvals(numpy.array(model.jacobian(u)))
 
 
-def bisect(same_as_lo, lo, hi, tol=0.0, steps=60):
+def bisect(same_as_lo: Callable[[float], bool], lo: float, hi: float, tol: float = 0.0,
+           steps: int = 60) -> float:
     """Midpoint of [lo, hi] after halving it `steps` times (or until it is no
     wider than tol), keeping lo where same_as_lo() holds."""
     for _ in range(steps):
@@ -44,7 +47,8 @@ def _unstable(parameter_set, values):
     return int(numpy.sum(real & (eig.real > 0))), int(numpy.sum(~real & (eig.real > 0))), eig
 
 
-def stability_changes(parameter_set, parameter, grid, **values):
+def stability_changes(parameter_set: str, parameter: str, grid: Sequence[float],
+                      **values: float) -> List[Tuple[float, str, float]]:
     """Where straight rolling changes stability along `grid` of `parameter`,
     refined by bisection (60 halvings of a grid step): [(value, kind, omega)],
     kind "HB" (complex pair, omega its imaginary part in rad/s) or "BP"
@@ -67,14 +71,16 @@ def stability_changes(parameter_set, parameter, grid, **values):
     return sorted(changes)
 
 
-def hopf_scan(parameter_set, parameter, grid, **values):
+def hopf_scan(parameter_set: str, parameter: str, grid: Sequence[float],
+              **values: float) -> List[Tuple[float, float]]:
     """[(value, frequency in Hz)] of the Hopf points of straight rolling
     along `grid` (stability_changes, complex pairs only)."""
     return [(v, w / (2 * numpy.pi)) for v, kind, w
             in stability_changes(parameter_set, parameter, grid, **values) if kind == "HB"]
 
 
-def growth(model, bands, u=None):
+def growth(model: mlgmodel.Model, bands: Dict[str, Tuple[float, float]],
+           u: Optional[dict] = None) -> Dict[str, float]:
     """{band: largest real part of the eigenvalues of straight rolling (or
     of the state u) whose frequency |Im|/2pi lies in (lo, hi]} for bands
     {name: (lo, hi)} (-inf if none), and "any": the largest of all."""
@@ -87,7 +93,8 @@ def growth(model, bands, u=None):
     return out
 
 
-def sign_changes(f, grid, tol=1e-10, first_only=False):
+def sign_changes(f: Callable[[float], float], grid: Sequence[float], tol: float = 1e-10,
+                 first_only: bool = False) -> List[float]:
     """The values where f changes sign along `grid`, bisected to tol (with
     first_only, only the first)."""
     found, previous, f_prev = [], grid[0], f(grid[0])
@@ -102,7 +109,8 @@ def sign_changes(f, grid, tol=1e-10, first_only=False):
     return found
 
 
-def stable_on_grid(parameter_set, outer, outer_grid, inner, inner_grid, **values):
+def stable_on_grid(parameter_set: str, outer: str, outer_grid: Sequence[float], inner: str,
+                   inner_grid: Sequence[float], **values: float) -> numpy.ndarray:
     """[outer, inner]: True where every eigenvalue of straight rolling has a
     negative real part.  The equilibrium must not depend on the inner
     parameter (checked at both ends of its grid); it is solved once per
