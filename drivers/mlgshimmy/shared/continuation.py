@@ -9,7 +9,6 @@ curves of Hopf points and folds of cycles.
     d = speed_diagram(rundir, "figures", {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1})
 """
 import os
-
 from typing import Any, Optional, Sequence
 
 import numpy
