@@ -21,7 +21,6 @@ AUTO's own output goes to <rundir>/<name>.log; the console gets one line per
 run, and a failed run's RunError carries the tail of its log.
 """
 import atexit
-import fcntl
 import os
 import shutil
 import signal
@@ -32,6 +31,7 @@ from typing import Any, Callable, List, Optional, Sequence, Union
 import numpy
 
 from mlgshimmy.shared import branches, paths
+from mlgshimmy.shared.jobs import locks
 
 
 class AutoMissing(RuntimeError):
@@ -106,14 +106,22 @@ def _owned(path):
     return any(path == p or path.startswith(p + os.sep) for p in list(_claimed) + inherited)
 
 
+# What a claim keeps when it empties a run directory: the figure's cached
+# result and parts (shared.jobs.cache), which readers may be using; each is
+# replaced atomically by whoever recomputes it.
+CACHE_NAMES = ("result.json", "parts", "parts.mk")
+
+
 def claim(path: str, keep: Optional[Callable[[str], bool]] = None) -> str:
     """Make the run directory `path` this process's own and return it.
 
-    The first claim takes an exclusive lock (flock on .<dir>.lock beside it,
-    released when the process ends) and empties the directory, so that every
-    file in it comes from this process (unless keep(path), called under the
-    lock, says its contents are a valid cached result).  If another live
-    process holds the lock, this waits until it ends, saying so on stderr.
+    The first claim takes an exclusive lock (jobs.locks on .<dir>.lock
+    beside it, released when the process ends) and empties the directory,
+    so that every run in it comes from this process (unless keep(path),
+    called under the lock, says its contents are a valid cached result);
+    the figure's cache (CACHE_NAMES) is kept.  If another live process
+    holds the lock, this waits until it ends, saying so on stderr.  A run
+    directory, or its lock, that is a symbolic link is refused (RunError).
     Claims of the same directory, or of one below an owned one, return at
     once."""
     path = os.path.abspath(path)
@@ -122,30 +130,40 @@ def claim(path: str, keep: Optional[Callable[[str], bool]] = None) -> str:
         return path
     parent, base = os.path.split(path)
     os.makedirs(parent, exist_ok=True)
-    lock = open(os.path.join(parent, f".{base}.lock"), "a+")
+    if os.path.islink(path):
+        raise RunError(f"{path} is a symbolic link: a run directory must be a directory of "
+                       "its own (remove the link, or point MLG_RUN_ROOT elsewhere)")
+    waited = time.monotonic()
     try:
-        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except BlockingIOError:
-        lock.seek(0)
-        holder = lock.read().strip() or "another process"
-        print(f"{_label(path)}: {os.path.relpath(path)} is in use by {holder}; "
-              "waiting for it to finish", file=sys.stderr, flush=True)
-        waited = time.monotonic()
-        fcntl.flock(lock, fcntl.LOCK_EX)
+        lock = locks.acquire(os.path.join(parent, f".{base}.lock"), locks.say_waiting(
+            f"{_label(path)}: {os.path.relpath(path)}"))
+    except locks.LockRefused as exc:
+        raise RunError(str(exc)) from None
+    if time.monotonic() - waited > 1.0:
         print(f"{_label(path)}: {os.path.relpath(path)} free after "
-              f"{time.monotonic() - waited:.0f} s; computing it afresh",
+              f"{time.monotonic() - waited:.0f} s; computing its runs afresh",
               file=sys.stderr, flush=True)
-    lock.seek(0)
-    lock.truncate()
-    lock.write(f"process {os.getpid()} ({' '.join(sys.argv)[:200]})\n")
-    lock.flush()
     if not (keep and os.path.isdir(path) and keep(path)):
-        shutil.rmtree(path, ignore_errors=True)
+        _empty(path)
     os.makedirs(path, exist_ok=True)
     _claimed[path] = lock
     os.environ[CLAIMED_ENV] = os.pathsep.join(
         [p for p in os.environ.get(CLAIMED_ENV, "").split(os.pathsep) if p] + [path])
     return path
+
+
+def _empty(path: str) -> None:
+    """Remove what is in the run directory but the cache (CACHE_NAMES);
+    links inside are removed, never followed."""
+    if not os.path.isdir(path):
+        return
+    for entry in os.scandir(path):
+        if entry.name in CACHE_NAMES:
+            continue
+        if entry.is_dir(follow_symlinks=False):
+            shutil.rmtree(entry.path)
+        else:
+            os.remove(entry.path)
 
 
 def _label(rundir):

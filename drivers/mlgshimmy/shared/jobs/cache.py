@@ -12,11 +12,12 @@ import datetime
 import json
 import os
 import subprocess
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 import numpy
 
 from mlgshimmy.shared import branches, paths
+from mlgshimmy.shared.jobs import locks
 from mlgshimmy.shared.jobs.atomic import write_json
 
 
@@ -83,6 +84,31 @@ def write(figure: str, data: Any, parameter_set: str = "figures",
     print(f"{figure}: {'part ' + part if part else 'result'} cached in "
           f"{os.path.relpath(target, paths.ROOT)}", flush=True)
     return target
+
+
+def lock_path(figure: str, part: Optional[str] = None) -> str:
+    """The lock that one computation of a result (or part) holds:
+    $MLG_RUN_ROOT/.locks/<fig>[.<part>].lock, outside every run directory."""
+    return paths.under_root(".locks", f"{figure}.{part}.lock" if part else f"{figure}.lock")
+
+
+def compute_once(figure: str, compute: Callable[[], Any], parameter_set: str = "figures",
+                 part: Optional[str] = None) -> bool:
+    """Compute and cache a result (or part) unless another process is
+    doing so: then wait for it and use what it wrote, so that two identical
+    requests (two `make fig07`, or `make fig18` beside `make fig19`) make
+    one computation and keep it.  True if computed here."""
+    started = locks.now_ns()
+    what = f"{figure}: {'part ' + part if part else 'the result'}"
+    fd = locks.acquire(lock_path(figure, part), locks.say_waiting(what))
+    try:
+        if locks.since(path(figure, part), started):
+            print(f"{what} was computed meanwhile by another process; using it", flush=True)
+            return False
+        write(figure, compute(), parameter_set, part=part)
+        return True
+    finally:
+        os.close(fd)
 
 
 def read(figure: str, part: Optional[str] = None) -> Any:

@@ -86,9 +86,9 @@ def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[C
             if both and jobs:   # from scratch: no part of an earlier run is reused
                 shutil.rmtree(os.path.dirname(cache.path(figure, "x")), ignore_errors=True)
             started = time.monotonic()
-            data = compute(jobs) if jobs else compute()
-            cache.write(figure, data, parameter_set)
-            print(f"{figure}: computed in {time.monotonic() - started:.0f} s")
+            if cache.compute_once(figure, lambda: compute(jobs) if jobs else compute(),
+                                  parameter_set):
+                print(f"{figure}: computed in {time.monotonic() - started:.0f} s")
         if args.plot or both:
             plot(cache.read(figure))
     except (RuntimeError, ValueError) as exc:

@@ -64,10 +64,10 @@ class Parts:
         self.stage(name)   # a part of this figure (the error names the parts)
         job = self.jobs[name]
         started = time.monotonic()
-        data = job.function(_Reader(self, alone)) if isinstance(job, Needs) else job()
-        cache.write(self.figure, data, self.parameter_set, part=name)
-        print(f"{self.figure}: part {name} computed in {time.monotonic() - started:.0f} s",
-              flush=True)
+        if cache.compute_once(self.figure, lambda: job.function(_Reader(self, alone))
+                              if isinstance(job, Needs) else job(), self.parameter_set, name):
+            print(f"{self.figure}: part {name} computed in {time.monotonic() - started:.0f} s",
+                  flush=True)
 
     def __getitem__(self, name: str) -> Any:
         return _Reader(self, False)[name]
