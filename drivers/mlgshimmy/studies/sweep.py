@@ -35,7 +35,7 @@ V_START, V_STOP = ct.V_MIN, ct.V_MAX
 def grid(args):
     rhos = axis(args.rho, "SWEEP_RHO (--rho)", "angles in degrees")
     mus = axis(args.mu, "SWEEP_MU (--mu)", "angles in degrees")
-    return [(rho, mu) for rho in rhos for mu in mus]
+    return jobgrid.plane(rhos, mus)
 
 
 def parameters(rho, mu, eom_terms=2):

@@ -3,8 +3,11 @@ axis values a user types, checked before any job runs.
 
 An axis is "a,b,c" (values) or "start:stop:step" (start, start + step, ...
 up to stop inclusive), or several of these joined by commas.  Every value
-must be a finite number, and no two may share a job (job names use 6
-significant digits, f"{value:g}").
+must be a finite number.  Two spellings of one value (10 and 1e1, 0 and
+-0) are one point; two different values may not share a job (job names use
+6 significant digits, f"{value:g}").  A grid has at most MAX_POINTS points
+unless MLG_GRID_MAX_POINTS says otherwise, and a range is counted before
+it is listed, so a tiny step is refused at once.
 """
 import argparse
 import math
@@ -13,6 +16,20 @@ import sys
 
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs.cli import job_line
+
+
+MAX_POINTS = 2000       # points of one grid (about 4 h of sweep points on 2 cores)
+MAX_POINTS_ENV = "MLG_GRID_MAX_POINTS"
+
+
+def max_points():
+    """The grid size limit: MLG_GRID_MAX_POINTS if set (checked), else MAX_POINTS."""
+    text = os.environ.get(MAX_POINTS_ENV)
+    if text is None:
+        return MAX_POINTS
+    if not (text.isdigit() and int(text) >= 1):
+        raise GridError(f"{MAX_POINTS_ENV}={text!r} must be a whole number >= 1")
+    return int(text)
 
 
 class GridError(ValueError):
@@ -35,8 +52,12 @@ def _range(item, text, variable, unit):
     if not step > 0 or stop < start:
         raise GridError(f"{variable}={text!r}: {item.strip()!r} needs step > 0 and "
                         "stop >= start")
-    count = int(math.floor((stop - start) / step + 1e-9)) + 1
-    return [round(start + k * step, 12) for k in range(count)]
+    count = math.floor((stop - start) / step + 1e-9) + 1
+    if count > max_points():
+        raise GridError(f"{variable}={text!r}: {item.strip()!r} has {count:.3g} values, more "
+                        f"than the limit of {max_points()} points of a grid (raise it with "
+                        f"{MAX_POINTS_ENV}=N)")
+    return [round(start + k * step, 12) for k in range(int(count))]
 
 
 def axis(text, variable, unit="numbers"):
@@ -50,14 +71,30 @@ def axis(text, variable, unit="numbers"):
         else:
             items = [(_number(item, text, variable, unit), item.strip())]
         for value, typed in items:
+            value = value + 0.0          # -0 is 0
             name = f"{value:g}"
+            if value in values:          # another spelling of a point listed already
+                continue
             if name in names:
                 raise GridError(f"{variable}={text!r}: {names[name]} and {typed} are the "
                                 f"same grid point ({name}, one job); list each value once, "
                                 "distinct to 6 significant digits")
             names[name] = typed
             values.append(value)
+            if len(values) > max_points():
+                raise GridError(f"{variable}={text!r}: more than the limit of {max_points()} "
+                                f"points of a grid (raise it with {MAX_POINTS_ENV}=N)")
     return values
+
+
+def plane(first, second):
+    """The points of a grid over two axes (lists of values): every pair,
+    refused if there are more than max_points()."""
+    count = len(first) * len(second)
+    if count > max_points():
+        raise GridError(f"the grid has {len(first)} x {len(second)} = {count} points, more "
+                        f"than the limit of {max_points()} (raise it with {MAX_POINTS_ENV}=N)")
+    return [(a, b) for a in first for b in second]
 
 
 

@@ -43,7 +43,7 @@ DEFAULT_FSTAR = "0.02,0.1,0.2,0.3,0.5,0.8,1,1.4,1.8,2.2,2.6,3,3.5"
 def grid(args):
     vs = axis(args.V, "ATLAS_V (--V)", "speeds in m/s")
     fstars = axis(args.Fstar, "ATLAS_FSTAR (--Fstar)", "loads F*")
-    return [(v, f) for f in fstars for v in vs]
+    return [(v, f) for f, v in jobgrid.plane(fstars, vs)]
 
 
 def check(points):
