@@ -18,6 +18,7 @@ import numpy as np  # noqa: E402
 
 from mlgshimmy.shared import paths  # noqa: E402
 from mlgshimmy.shared import simulator  # noqa: E402
+from mlgshimmy.shared import jobs
 
 OUT_DIR = os.path.join(paths.run_root(), "fig08")
 FIG_DIR = paths.figures_dir()
@@ -82,8 +83,7 @@ def main(redraw):
     plot(data, os.path.join(FIG_DIR, "fig08"))
 
     if not redraw:
-        with open(summary_path, "w") as out:
-            out.write("\n".join(lines) + "\n")
+        jobs.write_text(summary_path, "\n".join(lines) + "\n")
     print("fig08: settled oscillation over the last second "
           "(amplitude = half peak-to-peak):")
     print("\n".join("  " + line for line in lines))

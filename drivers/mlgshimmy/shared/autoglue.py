@@ -385,22 +385,50 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
     return bd
 
 
+# AUTO ends every branch with a labelled point of one of these types (the
+# stop it reached, a stop value, or no convergence); a branch whose last
+# point is not one was cut short.
+BRANCH_ENDS = ("EP", "UZ", "MX")
+
+
 def read_diagram(outputs, what, log=None):
     """The diagram of a run's b-, s- and d-files, its b-file parsed now (AUTO
-    reads lazily): RunError if it is empty, unreadable, or its last line
-    was cut short."""
+    reads lazily), checked complete by its content (AUTO ignores write
+    errors, so a full disk leaves files cut at any byte): every branch ends
+    in a labelled EP, UZ or MX, the s-file holds a solution for every label
+    of the b-file, and the b-file's last line is whole.  RunError otherwise
+    (saying so when the file system is full)."""
     auto = init()
     try:
         with open(outputs[0], "rb") as f:
             text = f.read()
         bd = auto.bifDiag.bifDiag(*outputs)
         lengths = [len(branch) for branch in bd]
+        labels = [lab for branch in bd for _, lab, _ in branches.labelled_points(branch)]
+        saved = [solution["LAB"] for solution in auto.parseS.parseS(outputs[1])]
+        cut = [branch.BR for branch in bd
+               if not any(index == len(branch) - 1 and kind in BRANCH_ENDS
+                          for index, _, kind in branches.labelled_points(branch))]
     except Exception as exc:  # any parser failure means an unreadable file
-        raise RunError(f"{what}: {outputs[0]} unreadable ({type(exc).__name__}: {exc})",
-                       log) from exc
-    if not text.endswith(b"\n") or not lengths or min(lengths) == 0:
-        raise RunError(f"{what}: {outputs[0]} is empty or cut short", log)
+        raise RunError(f"{what}: {outputs[0]} unreadable ({type(exc).__name__}: {exc})"
+                       + _full(outputs[0]), log) from exc
+    if not text.endswith(b"\n") or not lengths or min(lengths) == 0 or cut:
+        raise RunError(f"{what}: {outputs[0]} is empty or cut short"
+                       + (f" (branch {cut[0]} has no end point)" if cut else "")
+                       + _full(outputs[0]), log)
+    if sorted(labels) != sorted(saved):
+        raise RunError(f"{what}: {outputs[1]} holds solutions {sorted(saved)}, the b-file "
+                       f"labels {sorted(labels)}: cut short" + _full(outputs[1]), log)
     return bd
+
+
+def _full(path):
+    """' (the file system ... is full)' when it is, else ''."""
+    try:
+        stat = os.statvfs(os.path.dirname(os.path.abspath(path)))
+    except OSError:
+        return ""
+    return f" (the file system of {os.path.dirname(path)} is full)" if stat.f_bavail == 0 else ""
 
 
 def check_diagram(bd, what, expect=()):

@@ -8,6 +8,7 @@ does not print are listed with "-" in its column."""
 import os
 
 from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs.atomic import write_text
 
 # Section IV of the paper (the `figures` set is calibrated on the first one).
 PAPER = {
@@ -37,10 +38,6 @@ def report(figure, ours, ours_table=None):
     widths = [max(len(row[k]) for row in rows) for k in range(5)]
     lines = ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in rows]
     text = f"{figure}: paper vs ours (rel. error of the figures set)\n" + "\n".join(lines) + "\n"
-    os.makedirs(paths.tables_dir(), exist_ok=True)
-    path = os.path.join(paths.tables_dir(), f"{figure}.txt")
-    with open(f"{path}.{os.getpid()}.part", "w") as out:
-        out.write(text)
-    os.replace(f"{path}.{os.getpid()}.part", path)
+    write_text(os.path.join(paths.tables_dir(), f"{figure}.txt"), text)
     print(text, end="")
     return text

@@ -8,6 +8,7 @@ from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
+from mlgshimmy.shared import jobs
 
 V_PAPER = 346.1
 
@@ -30,8 +31,7 @@ def main():
              f"c_psi putting it at V = {V_PAPER} m/s: {c_psi:.4f} N m s/rad",
              f"MLG_C_PSI_FIGURES in c/parameters.c: {mlgmodel.C_PSI_FIGURES}"]
     path = os.path.join(paths.rundir("calibration"), "c_psi.txt")
-    with open(path, "w") as out:
-        out.write("\n".join(lines) + "\n")
+    jobs.write_text(path, "\n".join(lines) + "\n")
     print("\n".join("calibrate_c_psi: " + line for line in lines))
     if abs(c_psi - mlgmodel.C_PSI_FIGURES) > 0.05:
         sys.exit("calibrate_c_psi: MLG_C_PSI_FIGURES differs from the calibration by more "

@@ -214,10 +214,7 @@ def report():
                     f"{c['relative difference']:+.2e}")
     text = "\n".join(rows)
     print(text)
-    tables = os.path.join(paths.run_root(), "tables")
-    os.makedirs(tables, exist_ok=True)
-    with open(os.path.join(tables, "criterion.txt"), "w") as out:
-        out.write(text + "\n")
+    jobs.write_text(os.path.join(paths.tables_dir(), "criterion.txt"), text + "\n")
     plot(groups)
     worst = max(abs(c["relative difference"]) for c in checks)
     if worst > 0.01:

@@ -30,6 +30,7 @@ from mlgshimmy.shared import draw
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import spectrum
+from mlgshimmy.shared import jobs
 
 V_START, V_STOP = ct.V_MIN, ct.V_MAX
 FSTAR_RANGE = [0.1, 3.5]
@@ -151,9 +152,8 @@ def compute(rho_deg, mu_deg, eom_terms, key=None):
                        [c for c in curves if c is not None], notes)
         index[tag] = {**entry, "notes": notes}
     if key:  # written last, in one rename: present only beside complete runs
-        with open(os.path.join(rundir, CACHE + ".partial"), "w") as f:
-            json.dump({"key": key, "eom_terms": eom_terms, "runs": index}, f, indent=1)
-        os.replace(os.path.join(rundir, CACHE + ".partial"), os.path.join(rundir, CACHE))
+        jobs.write_json(os.path.join(rundir, CACHE),
+                        {"key": key, "eom_terms": eom_terms, "runs": index}, indent=1)
     return result
 
 
@@ -204,11 +204,8 @@ def report(name, title, result, reference):
             lines.append(f"{tag_label}, {label}: Hopf points at V = {speeds} m/s; "
                          f"{len(orbits)} orbit families, {len(curves)} Hopf-curve runs")
             lines += [f"  note: {note}" for note in notes]
-    directory = paths.tables_dir()
-    os.makedirs(directory, exist_ok=True)
-    path = os.path.join(directory, f"{name}.txt")
-    with open(path, "w") as out:
-        out.write("\n".join(lines) + "\n")
+    path = jobs.write_text(os.path.join(paths.tables_dir(), f"{name}.txt"),
+                           "\n".join(lines) + "\n")
     print("\n".join(f"sidestay: {line}" for line in lines))
     print(f"sidestay: wrote {os.path.relpath(path, paths.ROOT)}")
 

@@ -25,6 +25,7 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs import grid as jobgrid
+from mlgshimmy.shared import jobs
 axis = jobgrid.axis
 
 POINTS = jobgrid.Plane("rho", "mu", "sweep")   # point rho<deg>_mu<deg>
@@ -64,8 +65,7 @@ def run_point(name):
                           ct.SPEED_SCAN, limit=1, **values)
     result = {"rho_deg": rho, "mu_deg": mu, "critical_V": hopf[0]["V"] if hopf else None,
               "seconds": round(time.monotonic() - started, 2)}
-    with open(POINTS.result_path(rho, mu), "w") as out:
-        json.dump(result, out, indent=1)
+    jobs.write_json(POINTS.result_path(rho, mu), result, indent=1)
     print(f"sweep: {name}: critical speed "
           + (f"{result['critical_V']:.3f} m/s" if hopf else f"> {V_STOP:g} m/s"))
 

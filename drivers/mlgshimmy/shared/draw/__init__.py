@@ -12,6 +12,7 @@ import numpy
 
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs.atomic import write_atomic
 
 matplotlib.rcParams.update({"figure.dpi": 110, "savefig.dpi": 150, "font.size": 9,
                             "axes.grid": True, "grid.alpha": 0.3})
@@ -76,13 +77,9 @@ def surface(ax, quads, stable, alpha=(0.45, 0.85), light=(-0.4, -1.0, 1.2)):
 def save(fig, name):
     """Write $MLG_RUN_ROOT/figures/<name>.png and .pdf (each written beside
     and renamed, so a reader never sees half a file) and close fig."""
-    os.makedirs(paths.figures_dir(), exist_ok=True)
-    written = []
-    for ext in ("png", "pdf"):
-        path = os.path.join(paths.figures_dir(), f"{name}.{ext}")
-        partial = f"{path}.{os.getpid()}.part.{ext}"
-        fig.savefig(partial, bbox_inches="tight")
-        os.replace(partial, path)
-        written.append(path)
+    written = [write_atomic(os.path.join(paths.figures_dir(), f"{name}.{ext}"),
+                            lambda out, ext=ext: fig.savefig(out, format=ext, bbox_inches="tight"),
+                            mode="wb")
+               for ext in ("png", "pdf")]
     plt.close(fig)
     print(f"{name}: wrote " + ", ".join(os.path.relpath(p, paths.ROOT) for p in written))

@@ -69,9 +69,7 @@ def run_cell(name):
     os.makedirs(rundir, exist_ok=True)
     result = atlas_cell.cell(v, fstar, rundir)
     # written whole or not at all: make sees a result only when it is complete
-    with tempfile.NamedTemporaryFile("w", dir=rundir, delete=False, suffix=".tmp") as out:
-        json.dump(result, out, indent=1)
-    os.replace(out.name, CELLS.result_path(v, fstar))
+    jobs.write_json(CELLS.result_path(v, fstar), result, indent=1)
     print(f"atlas: {name}: {result['label']} ({result['cpu_seconds']:.1f} s CPU)")
 
 
@@ -119,9 +117,7 @@ def summary(points):
     text = "\n".join(lines) + "\n"
     stored = {"cells": cells, "fig11_agreement": agreement}
     for name, content in (("summary.txt", text), ("summary.json", json.dumps(stored, indent=1))):
-        with tempfile.NamedTemporaryFile("w", dir=CELLS.directory, delete=False) as out:
-            out.write(content)
-        os.replace(out.name, os.path.join(CELLS.directory, name))
+        jobs.write_text(os.path.join(CELLS.directory, name), content)
     print("\n".join(lines[:3 + len(counts)]))
     if agreement is not None:
         print("\n".join(atlas_compare.report(agreement)))
