@@ -6,6 +6,7 @@ import math
 import numpy
 import pytest
 
+from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import spectrum
 
@@ -20,7 +21,12 @@ def hopf_speeds(Fstar, grid=numpy.linspace(0.5, 600, 3000)):
 
 @pytest.fixture(scope="module")
 def rundir(tmp_path_factory):
-    return str(tmp_path_factory.mktemp("freeplay"))
+    """The runs' directory; the run directories this process claims are not
+    passed on to later tests' child processes."""
+    path = tmp_path_factory.mktemp("freeplay")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        yield str(path)
 
 
 @pytest.fixture(scope="module")
