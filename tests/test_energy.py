@@ -13,17 +13,12 @@ shrinks with the tolerance: 1e-7 at rtol 1e-12, 2e-9 at 1e-14).  The equations a
 it: their drift is printed and must exceed 1e-5 (the test can tell them apart).
 """
 import os
-import sys
-import tempfile
 
 import numpy as np
+import pytest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
-from check import check  # noqa: E402
-from mlgshimmy.shared import mlgmodel  # noqa: E402
-from mlgshimmy.shared import simulator  # noqa: E402
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import simulator
 
 CONSERVATIVE = {"tyre_forces": 0, "c_psi": 0, "c_beta": 0, "zeta_delta": 0,
                 "c_eta1": 0, "c_eta2a": 0, "c_eta2b": 0, "V": 0}
@@ -33,6 +28,7 @@ CASES = [  # (name, parameters)
                                        "eps_abs": 0.0, "eps_rel": 0.1}),
     ("rho=mu=0,F*=1", {"rho": 0.0, "mu": 0.0, "Fstar": 1.0}),
 ]
+CASE_IDS = [name for name, _ in CASES]
 
 
 def relative_drift(tmp, values):
@@ -48,22 +44,32 @@ def relative_drift(tmp, values):
     return np.max(np.abs(energy - energy[0])) / excitation, excitation
 
 
-def main():
-    with tempfile.TemporaryDirectory() as tmp:
-        for name, case in CASES:
-            drift = {}
-            for eom in (0, 1, 2):
-                values = dict(CONSERVATIVE, eom_terms=eom, **case)
-                drift[eom], excitation = relative_drift(tmp, values)
-                print(f"# {name}: eom_terms {eom}: relative energy drift {drift[eom]:.3e} "
-                      f"(excitation {excitation:.3g} J)")
-            check(f"{name}: complete equations conserve energy (drift <= 1e-8)",
-                  drift[2] <= 1e-8, f"drift {drift[2]:.3e}")
-            if name != "rho=mu=0,F*=1":
-                check(f"{name}: printed equations do not (drift > 1e-5)",
-                      drift[0] > 1e-5 and drift[1] > 1e-5,
-                      f"printed {drift[0]:.3e}, side-stay corrections only {drift[1]:.3e}")
+@pytest.fixture(scope="module")
+def drifts(tmp_path_factory):
+    """{case name: {eom_terms: relative drift}}: each case simulated once
+    with each of the three forms of the equations."""
+    tmp = str(tmp_path_factory.mktemp("energy"))
+    found = {}
+    for name, case in CASES:
+        drift = found[name] = {}
+        for eom in (0, 1, 2):
+            values = dict(CONSERVATIVE, eom_terms=eom, **case)
+            drift[eom], excitation = relative_drift(tmp, values)
+            print(f"# {name}: eom_terms {eom}: relative energy drift {drift[eom]:.3e} "
+                  f"(excitation {excitation:.3g} J)")
+    return found
 
 
-if __name__ == "__main__":
-    main()
+@pytest.mark.parametrize("name", CASE_IDS)
+def test_energy_conserved_by_the_complete_equations(drifts, name):
+    drift = drifts[name]
+    assert drift[2] <= 1e-8, f"{name}: drift {drift[2]:.3e} of the complete equations"
+
+
+@pytest.mark.parametrize("name", [n for n in CASE_IDS if n != "rho=mu=0,F*=1"])
+def test_energy_not_conserved_by_the_printed_equations(drifts, name):
+    """At non-zero side-stay angles the printed equations (eom_terms 0) and
+    those with the side-stay corrections only (1) drift by more than 1e-5."""
+    drift = drifts[name]
+    assert drift[0] > 1e-5 and drift[1] > 1e-5, \
+        f"{name}: printed {drift[0]:.3e}, side-stay corrections only {drift[1]:.3e}"

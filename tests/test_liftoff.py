@@ -1,63 +1,72 @@
-"""drivers/liftoff.py: the bisection on a known step (no simulation), and
+"""shared/liftoff.py: the bisection on a known step (no simulation), and
 two simulations of the `figures` set with y_fp = 1 mm, epsilon = 0.1 mm:
 at V = 600 m/s, F* = 0.3 the shimmy grown from straight rolling lifts a
 wheel off after about 19 s (docs/reproduction.md, Fig. 11); at V = 100 m/s,
 F* = 1 straight rolling is stable (the Hopf point lies at 130 m/s) and no
 wheel lifts off."""
-import os
-import sys
-import tempfile
+import math
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "drivers"))
-from check import check, check_close  # noqa: E402
-from mlgshimmy.shared import liftoff  # noqa: E402
+import pytest
+
+from mlgshimmy.shared import liftoff
 
 
-def raises(error, call):
-    try:
-        call()
-    except error as exc:
-        return str(exc)
-    return None
+def step(at):
+    return lambda x: x >= at
 
 
-def main():
-    def step(at):
-        return lambda x: x >= at
+def test_bisection_locates_the_step_to_half_the_tolerance():
     found = liftoff.bisected(step(573.3), 450.0, 600.0, 2.0, "V")
-    check_close("bisection in V: the step located to half the tolerance", found, 573.3, abs=1.0)
+    assert math.isclose(found, 573.3, abs_tol=1.0), found
+
+
+def test_bisection_with_the_bracket_reversed():
+    """Lift-off below 0.537: the bracket runs from 0.6 down to 0.5."""
     found = liftoff.bisected(lambda f: f <= 0.537, 0.6, 0.5, 0.005, "F*")
-    check_close("bisection with the bracket reversed (lift-off below 0.537)", found, 0.537,
-                abs=0.0025)
-    check("no lift-off at the top of the bracket: None",
-          liftoff.bisected(step(700.0), 450.0, 600.0, 2.0, "V") is None)
+    assert math.isclose(found, 0.537, abs_tol=0.0025), found
+
+
+def test_bisection_without_lift_off_at_the_top_of_the_bracket_is_none():
+    assert liftoff.bisected(step(700.0), 450.0, 600.0, 2.0, "V") is None
+
+
+def test_bisection_of_a_checked_bracket_runs_only_the_halvings():
+    """The caller checked the bracket: its ends are not run again, the step
+    is found with 7 halvings from 150 to 2 m/s, one run each."""
     tried = []
     found = liftoff.bisected(lambda x: tried.append(x) or x >= 573.3, 450.0, 600.0, 2.0, "V",
                              checked=True)
-    check("bracket checked by the caller: its ends are not run again, the step is found",
-          450.0 not in tried and 600.0 not in tried and abs(found - 573.3) <= 1.0, tried)
-    check("bracket checked: 7 halvings from 150 to 2 m/s, one run each", len(tried) == 7, tried)
+    assert 450.0 not in tried and 600.0 not in tried and abs(found - 573.3) <= 1.0, tried
+    assert len(tried) == 7, tried
+
+
+def test_bisection_of_an_unchecked_bracket_runs_its_top_not_its_bottom():
+    """The top end and the halvings are run, not the bottom end (the edge
+    lies far from it)."""
     tried = []
     liftoff.bisected(lambda x: tried.append(x) or x >= 573.3, 450.0, 600.0, 2.0, "V")
-    check("bracket not checked: the top end and the halvings are run, not the bottom end "
-          "(the edge lies far from it)", tried[0] == 600.0 and 450.0 not in tried
-          and len(tried) == 8, tried)
-    message = raises(ValueError, lambda: liftoff.bisected(step(400.0), 450.0, 600.0, 2.0, "V"))
-    check("lift-off already at the bottom of the bracket is an error naming it",
-          message is not None and "V = 450" in message, message)
-    message = raises(ValueError, lambda: liftoff.lifts_off("x.csv", -5.0, 0.3))
-    check("a negative speed is refused, naming V", message is not None and "V = -5" in message,
-          message)
-
-    with tempfile.TemporaryDirectory() as tmp:
-        csv = os.path.join(tmp, "run.csv")
-        check("V = 600 m/s, F* = 0.3: a wheel lifts off within 60 s",
-              liftoff.lifts_off(csv, 600.0, 0.3, t_end=60.0))
-        check("V = 100 m/s, F* = 1: no lift-off in 5 s (straight rolling stable)",
-              not liftoff.lifts_off(csv, 100.0, 1.0, t_end=5.0))
-        check("no simulator output left behind", os.listdir(tmp) == [], os.listdir(tmp))
+    assert tried[0] == 600.0 and 450.0 not in tried and len(tried) == 8, tried
 
 
-main()
+def test_bisection_with_lift_off_at_the_bottom_of_the_bracket_names_it():
+    with pytest.raises(ValueError) as error:
+        liftoff.bisected(step(400.0), 450.0, 600.0, 2.0, "V")
+    assert "V = 450" in str(error.value), str(error.value)
+
+
+def test_lifts_off_refuses_a_negative_speed_naming_V():
+    with pytest.raises(ValueError) as error:
+        liftoff.lifts_off("x.csv", -5.0, 0.3)
+    assert "V = -5" in str(error.value), str(error.value)
+
+
+def test_lifts_off_simulated_at_600_and_100_m_s(tmp_path):
+    """V = 600 m/s, F* = 0.3: a wheel lifts off within 60 s; V = 100 m/s,
+    F* = 1: no lift-off in 5 s (straight rolling stable); no simulator
+    output left behind."""
+    csv = str(tmp_path / "run.csv")
+    assert liftoff.lifts_off(csv, 600.0, 0.3, t_end=60.0), \
+        "V = 600 m/s, F* = 0.3: no wheel lifted off within 60 s"
+    assert not liftoff.lifts_off(csv, 100.0, 1.0, t_end=5.0), \
+        "V = 100 m/s, F* = 1: a wheel lifted off within 5 s"
+    assert list(tmp_path.iterdir()) == [], list(tmp_path.iterdir())

@@ -10,13 +10,11 @@ import resource
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "drivers"))
-from mlgshimmy.shared import autoglue  # noqa: E402
-from mlgshimmy.shared import continuation as ct  # noqa: E402
-import perf_split  # noqa: E402
+import perf_split   # beside this script (tests/bench/)
+from mlgshimmy.shared import continuation as ct   # PYTHONPATH=drivers (make bench sets it)
+from mlgshimmy.shared import paths
 
-RUNDIR = os.path.join(autoglue.BUILD, "bench", "auto-jacobian")
+RUNDIR = os.path.join(paths.BUILD, "bench", "auto-jacobian")
 UNDER_PERF = "MLG_BENCH_UNDER_PERF"    # set in the recorded child
 
 
@@ -58,8 +56,8 @@ def profiled():
                                env=dict(os.environ, **{UNDER_PERF: "1"}))
     if status != 0:
         sys.exit(f"bench_auto_jacobian: the recorded run failed (exit {status})")
-    objects = [os.path.join(autoglue.BUILD, "lib", "libmlg.a"),
-               os.path.join(autoglue.BUILD, "models", "mlg.o")]
+    objects = [os.path.join(paths.BUILD, "lib", "libmlg.a"),
+               os.path.join(paths.BUILD, "models", "mlg.o")]
     perf_split.print_split(perf_split.split(data, objects), ["eq", "JAC=1", "JAC=0"])
 
 

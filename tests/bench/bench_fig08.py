@@ -8,9 +8,7 @@ import os
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
-                                "drivers"))
-from mlgshimmy.shared import simulator  # noqa: E402
+from mlgshimmy.shared import simulator   # PYTHONPATH=drivers (make bench sets it)
 
 REPEATS = 3
 

@@ -221,7 +221,10 @@ atexit.register(PROGRESS.save)
 
 class _LogTo:
     """Send this process's stdout and stderr (its own and AUTO's child
-    processes') to a file, at the descriptor level."""
+    processes') to a file, at the descriptor level.  A sys.stdout or
+    sys.stderr that something replaced (pytest's capture, IPython) writes
+    elsewhere than descriptor 1 or 2: it is replaced by one on the
+    descriptor meanwhile, so that AUTO's own messages reach the log too."""
 
     def __init__(self, path):
         self.path = path
@@ -234,10 +237,19 @@ class _LogTo:
         os.dup2(log, 1)
         os.dup2(log, 2)
         os.close(log)
+        self.streams = [sys.stdout, sys.stderr]
+        if sys.stdout is not sys.__stdout__:
+            sys.stdout = open(1, "w", closefd=False)
+        if sys.stderr is not sys.__stderr__:
+            sys.stderr = open(2, "w", closefd=False)
 
     def __exit__(self, *exc):
         sys.stdout.flush()
         sys.stderr.flush()
+        for stream, saved in zip((sys.stdout, sys.stderr), self.streams):
+            if stream is not saved:
+                stream.close()   # the descriptor stays open (closefd=False)
+        sys.stdout, sys.stderr = self.streams
         for fd, saved in zip((1, 2), self.saved):
             os.dup2(saved, fd)
             os.close(saved)
