@@ -10,3 +10,19 @@ if DRIVERS not in os.environ.get("PYTHONPATH", "").split(os.pathsep):
     os.environ["PYTHONPATH"] = os.pathsep.join(
         [DRIVERS] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p])
 os.environ.setdefault("MPLBACKEND", "Agg")
+
+
+import pytest  # noqa: E402
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _claims_stay_in_their_module():
+    """A run directory claimed in this process (autoglue.claim) is listed
+    in MLG_RUN_CLAIMED for its child processes; a module's claims must not
+    reach the next module's subprocesses."""
+    before = os.environ.get("MLG_RUN_CLAIMED")
+    yield
+    if before is None:
+        os.environ.pop("MLG_RUN_CLAIMED", None)
+    else:
+        os.environ["MLG_RUN_CLAIMED"] = before
