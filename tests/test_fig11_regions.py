@@ -2,7 +2,6 @@
 torus curve crosses a slice load, the pairing of MX ends where two Hopf
 curves or two tongue edges meet, and the region map's codes around one
 curve (a tongue edge left out)."""
-import importlib
 import math
 
 import numpy as np
@@ -10,12 +9,11 @@ import pytest
 
 from mlgshimmy.figures import fig11
 from mlgshimmy.figures.fig11 import plane, tori
+from mlgshimmy.figures.fig11 import regions as fig11_regions
 from mlgshimmy.shared import regions
 from mlgshimmy.studies.atlas import compare as atlas_compare
 
-# the module, not the function fig11.region_map that its package exports
-region_map_module = importlib.import_module("mlgshimmy.figures.fig11.region_map")
-slice_row = region_map_module.slice_row
+slice_row = fig11_regions.slice_row
 
 V = fig11.V_GRID
 HIGH, QUASI = fig11.ATTRACTORS["high"], fig11.ATTRACTORS["quasi"]
@@ -171,8 +169,8 @@ def test_region_codes_are_the_atlas_codes_liftoff_its_left_the_domain():
     left = {"starts": {"a": {"kind": "domain"}, "b": {"kind": "domain"}}}
     assert atlas_compare.cell_code(left) == fig11.ATTRACTORS["liftoff"] \
         == regions.code(["domain"]), (atlas_compare.cell_code(left), fig11.ATTRACTORS)
-    assert "lift-off" in region_map_module.NAMES[fig11.ATTRACTORS["liftoff"]], \
-        region_map_module.NAMES
+    assert "lift-off" in fig11_regions.NAMES[fig11.ATTRACTORS["liftoff"]], \
+        fig11_regions.NAMES
 
 
 def test_every_tongue_edge_drawn_is_a_part():

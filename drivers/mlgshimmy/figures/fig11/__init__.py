@@ -23,7 +23,7 @@ from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, l
 from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits,
                                             straight_rolling_stable)
 from mlgshimmy.figures.fig11.plane import F_GRID, SLICES, V_GRID
-from mlgshimmy.figures.fig11.region_map import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
+from mlgshimmy.figures.fig11.regions import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
                                                 region_map, region_name, slice_codes)
 from mlgshimmy.figures.fig11.tori import TONGUE_EDGES, TONGUE_TOL, tongue_curve, torus_curves
 from mlgshimmy.shared import jobs

@@ -3,7 +3,7 @@ import numpy
 
 from mlgshimmy.figures.fig11.curves import JOIN_LABELS
 from mlgshimmy.figures.fig11.plane import F_MAX, SLICES, V_MAX
-from mlgshimmy.figures.fig11.region_map import shade
+from mlgshimmy.figures.fig11.regions import shade
 from mlgshimmy.shared import jobs
 
 STYLES = {"hopf": ("k-", "Hopf (y_fp = 1 mm)"), "fold": ("b--", "fold of periodic orbits"),
