@@ -9,7 +9,7 @@ a, b, c and the region map come from the eigenvalues of straight rolling
 (magnitude.window_points, magnitude.growth) on an F* grid; a and b are also
 continued by AUTO as curves of Hopf points at V = 120 m/s in (y_fp, F*) as a
 check.  The regions drawn are bounded by the curves a, b, c and the
-pitchfork; the cells of the eigenvalue grid only label them (regionmap)."""
+pitchfork; the cells of the eigenvalue grid only label them (shared.regions)."""
 import matplotlib.pyplot as plt
 import numpy
 from matplotlib.colors import ListedColormap

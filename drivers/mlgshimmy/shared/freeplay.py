@@ -1,6 +1,6 @@
 """The torque-link stiffness profile of eq. (15) under the two ways of
 varying the freeplay y_fp (section III), with no AUTO import: Fig. 15 draws
-from it alone, the magnitude figures (drivers/magnitude.py) run AUTO on it.
+from it alone, the magnitude figures (shared.magnitude) run AUTO on it.
 
 Scalings: "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1, eps_abs = 0),
 "fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).

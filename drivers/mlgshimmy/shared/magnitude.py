@@ -7,7 +7,7 @@ the curves of Hopf points and folds of cycles in (y_fp, V).
     for point in stable_orbits(d, 50.0): ...         # UZ labels at V = 50
     curves = hopf_curves(rundir, "fixed")            # in (y_fp, V)
 
-Scalings (section III): drivers/freeplay.py.  Everything is at
+Scalings (section III): shared.freeplay.  Everything is at
 F* = 1 unless Fstar is passed.
 """
 import functools

@@ -11,7 +11,7 @@ which straight rolling is unstable for some V <= 120 m/s (eps = 0.1 mm).
 
 Straight rolling depends on the freeplay only through r = y_fp/eps (the
 torque-link stiffness at y = 0 is k_tlk s(r), eq. 15), so kappa* is exact
-in r.  Results are cached as parts of the result cache (drivers/jobs.py,
+in r.  Results are cached as parts of the result cache (shared.jobs,
 with their provenance): $MLG_RUN_ROOT/criterion/parts/<GROUP>.json and
 auto.json (default build/).
 """

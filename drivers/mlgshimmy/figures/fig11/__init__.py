@@ -11,7 +11,7 @@ region).  The
 regions are bounded by those curves and by the edges of the straight-rolling stability grid (exact Jacobian
 eigenvalues); they are labelled, not bounded, by the stable low- (< 8 Hz) and high-frequency orbits
 of one-parameter diagrams in V (continuation.speed_diagram and the
-large-amplitude family) on a set of loads (regionmap).  The wheel lift-off
+large-amplitude family) on a set of loads (shared.regions).  The wheel lift-off
 region is bounded by its edge located by simulation (liftoff).  result.json
 holds the map ("region_map": V, Fstar, code per F* row, names) and the
 curves bounding it ("edge_curves") for the attractor atlas."""

@@ -1,13 +1,13 @@
 """Attractor atlas: what a time simulation settles on over the (V, F*) plane
-of Fig. 11 (y_fp = 1 mm, epsilon = 0.1 mm absolute, `figures` set).
+of Fig. 11 (y_fp = 1 mm, epsilon = 0.1 mm (freeplay.NOMINAL), `figures` set).
 
 Every grid cell is an independent job with its own directory
 $MLG_RUN_ROOT/atlas/V<v>_F<f>/ (default build/) and result file
-result.json there, computed by drivers/atlas_cell.py (the starts, time
-limits and simulations; drivers/attractor.py classifies).  `check` runs the
+result.json there, computed by studies.atlas.cell (the starts, time
+limits and simulations; shared.attractor classifies).  `check` runs the
 simulator for 1 ms per cell, so bad parameters stop the grid before any
 cell runs, with the simulator's message naming them.  Subcommands (axes
-as in drivers/jobgrid.py: "a,b,c" or "start:stop:step"; the default is
+as in shared.jobs.grid: "a,b,c" or "start:stop:step"; the default is
 DEFAULT_V x DEFAULT_FSTAR):
 
   atlas.py check   [--V L --Fstar L]   validate every cell (no simulation)

@@ -1,6 +1,6 @@
-"""One cell of the attractor atlas (drivers/atlas.py): simulations of the
+"""One cell of the attractor atlas (mlgshimmy.studies.atlas): simulations of the
 MLG model from each of STARTS at one (V, F*), y_fp = 1 mm, epsilon = 0.1 mm
-absolute, `figures` set, each end state classified by drivers/attractor.py.
+(freeplay.NOMINAL), `figures` set, each end state classified by shared.attractor.
 A start not settled after STAGES[0] seconds (or whose small modulation
 grows: confirmed()) is run again for STAGES[1]; still unsettled, it is
 reported as such.  A start that leaves the domain
