@@ -149,10 +149,9 @@ def state(root, old_runs):
 
 
 def replace(root, run, kill_at=None):
-    """reference_set.py replace, as make refs-<fig> runs it (PYTHONPATH=drivers)."""
-    path = os.environ.get("PYTHONPATH")
-    env = dict(os.environ, PYTHONPATH=os.path.join(cd.ROOT, "drivers")
-               + (os.pathsep + path if path else ""))
+    """reference_set.py replace, as make refs-<fig> runs it (PYTHONPATH=drivers:
+    tests/conftest.py sets it, as make does)."""
+    env = dict(os.environ)
     if kill_at:
         env["MLG_REFS_KILL_AT"] = kill_at
     return subprocess.Popen([sys.executable, os.path.join(HERE, "regression",

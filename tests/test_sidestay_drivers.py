@@ -21,17 +21,12 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DRIVERS = os.path.join(ROOT, "drivers")
 
 
-def environment(**more):
-    """os.environ with the package importable (PYTHONPATH, as the Makefile
-    sets it) and the given variables."""
-    path = os.environ.get("PYTHONPATH")
-    return dict(os.environ, PYTHONPATH=DRIVERS + (os.pathsep + path if path else ""), **more)
-
-
 def driver(module, *args, **env):
-    """python3 -m mlgshimmy.<module> args, from the repository root."""
+    """python3 -m mlgshimmy.<module> args, from the repository root (the
+    package found through the PYTHONPATH tests/conftest.py sets), with the
+    environment variables env."""
     return subprocess.run([sys.executable, "-m", f"mlgshimmy.{module}", *args], cwd=ROOT,
-                          capture_output=True, text=True, env=environment(**env))
+                          capture_output=True, text=True, env=dict(os.environ, **env))
 
 
 def test_sidestay_rejects_rho_87_before_auto(tmp_path):
@@ -75,9 +70,9 @@ def test_sweep_grid_rejected_naming_the_variable(command, rho, mu, variable, wha
 # variables make exports, so mk/jobs.mk's `$(PYTHON) -m mlgshimmy.studies.sweep
 # targets` does not see mk/python.mk's PYTHONPATH: from a shell without
 # PYTHONPATH, `make sweep` (and `make atlas`) stop on "No module named
-# 'mlgshimmy'" instead of the grid's message.  Under `make test` the
-# PYTHONPATH make exports reaches this test's environment and hides that, so
-# both cases are run explicitly.
+# 'mlgshimmy'" instead of the grid's message.  The PYTHONPATH that make test
+# exports and tests/conftest.py sets would hide that here, so both cases are
+# run explicitly.
 @pytest.mark.parametrize("pythonpath", [
     pytest.param(None, id="shell-without-PYTHONPATH", marks=pytest.mark.xfail(
         strict=True, reason="mk/jobs.mk: $(shell) does not see the exported PYTHONPATH "
@@ -156,7 +151,7 @@ def shared_reference(tmp_path_factory):
     started while the first holds sidestay_rho0_mu0: (root, out1, err1,
     out2, err2)."""
     root = tmp_path_factory.mktemp("sidestay-root")
-    env = environment(MLG_RUN_ROOT=str(root))
+    env = dict(os.environ, MLG_RUN_ROOT=str(root))
 
     def start(angle):
         return subprocess.Popen([sys.executable, "-c", QUICK_SIDESTAY, angle], cwd=ROOT,
