@@ -1,7 +1,7 @@
 """The side-stay drivers: bad angles are rejected before any AUTO run, with a
 message naming the parameter; one sweep job gives the critical speed, and
 the mirror image (-rho, -mu) gives the same (docs/model.md 8.5, 8.7).  A
-sweep grid with a repeated point or a non-number is rejected naming
+sweep grid with two values of one job or a non-number is rejected naming
 SWEEP_RHO/SWEEP_MU, and `make clean` never reads the grid; a bad EOM stops
 `make sidestay` naming it.  Two side-stay runs that both need the
 rho = mu = 0 runs, the second started while the first holds them: the
@@ -57,7 +57,9 @@ def test_make_sidestay_with_a_bad_eom_stops_before_any_run_naming_eom(eom):
 @pytest.mark.parametrize("command", ["jobs", "targets"])
 @pytest.mark.parametrize("rho, mu, variable, what", [
     ("10,10.0000001", "0", "SWEEP_RHO", "10 and 10.0000001"),
-    ("0", "5,-5,5", "SWEEP_MU", "5 and 5"),
+    # (a value listed twice, "5,-5,5", was refused too until f21800e made two
+    # spellings of one value one point; two values of one job name still are)
+    ("0", "5,-5,5.0000001", "SWEEP_MU", "5 and 5.0000001"),
     ("0,,10", "0", "SWEEP_RHO", "'' is not a number"),
     ("0", "1,x", "SWEEP_MU", "'x' is not a number")])
 def test_sweep_grid_rejected_naming_the_variable(command, rho, mu, variable, what):
