@@ -13,43 +13,71 @@ import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "regression"))
-import compare_diagrams as cd  # noqa: E402
-import reference_set as rs  # noqa: E402
-from check import check  # noqa: E402
+import pytest
 
-WORK = os.path.join(cd.ROOT, "build", "tests", "reference-sets")
+import compare_diagrams as cd
+import reference_set as rs
+
+HERE = os.path.dirname(os.path.abspath(__file__))
 FIGURE = "fig07"
 STEPS = ("copying", "manifest", "verified", "exchanged")
+SETS = sorted(glob.glob(os.path.join(cd.REFERENCE_ROOT, "*")))
 
 
-def stored_sets():
-    for directory in sorted(glob.glob(os.path.join(cd.REFERENCE_ROOT, "*"))):
-        try:
-            runs = rs.verify(directory)
-            check(f"{os.path.basename(directory)}: {len(runs)} runs match its MANIFEST", runs)
-        except rs.SetError as exc:
-            check(f"{os.path.basename(directory)}: matches its MANIFEST", False, str(exc))
+def make_variable(name):
+    """A variable the Makefile exports to `make test` (tests/regression/
+    regression.mk): from the environment when run by make, else asked of
+    make itself, so that pytest run by hand checks the same value."""
+    if name in os.environ:
+        return os.environ[name]
+    proc = subprocess.run(["make", "-s", "--no-print-directory",
+                           f"--eval=print-test-variable: ; @echo $({name})",
+                           "print-test-variable"], cwd=cd.ROOT, capture_output=True, text=True)
+    assert proc.returncode == 0, f"make cannot print {name}: {proc.stderr.strip()}"
+    return proc.stdout.strip()
 
 
-def coverage():
-    """REGRESS_FIGURES (exported by tests/regression/regression.mk) and the
-    sets in tests/reference/ name the same figures: a set nobody runs, or a
-    registered figure without one, is named."""
-    registered = set(os.environ.get("REGRESS_FIGURES", "").split())
-    if not check("REGRESS_FIGURES names the figures `make regress` runs (set by the Makefile)",
-                 registered, "REGRESS_FIGURES is empty or unset: run through `make test`"):
-        return
-    stored = {os.path.basename(d) for d in glob.glob(os.path.join(cd.REFERENCE_ROOT, "*"))}
-    check(f"make regress runs every figure with a reference set ({len(stored)})",
-          not stored - registered, f"sets not in REGRESS_FIGURES: {sorted(stored - registered)}")
-    check("every figure of REGRESS_FIGURES has a reference set",
-          not registered - stored, f"no tests/reference/<fig>/ for {sorted(registered - stored)}")
+@pytest.mark.parametrize("directory", SETS, ids=os.path.basename)
+def test_stored_set_matches_its_manifest(directory):
+    try:
+        runs = rs.verify(directory)
+    except rs.SetError as exc:
+        pytest.fail(f"{os.path.basename(directory)}: {exc}")
+    assert runs, f"{os.path.basename(directory)}: no runs"
 
 
-def copy_set(name):
-    path = os.path.join(WORK, name)
+@pytest.fixture(scope="module")
+def registered():
+    """REGRESS_FIGURES: the figures `make regress` runs."""
+    figures = set(make_variable("REGRESS_FIGURES").split())
+    assert figures, "REGRESS_FIGURES is empty: it names the figures `make regress` runs"
+    return figures
+
+
+def test_make_regress_runs_every_figure_with_a_reference_set(registered):
+    stored = {os.path.basename(d) for d in SETS}
+    assert not stored - registered, f"sets not in REGRESS_FIGURES: {sorted(stored - registered)}"
+
+
+def test_every_figure_of_regress_figures_has_a_reference_set(registered):
+    stored = {os.path.basename(d) for d in SETS}
+    assert not registered - stored, \
+        f"no tests/reference/<fig>/ for {sorted(registered - stored)}"
+
+
+@pytest.fixture(scope="module")
+def work(tmp_path_factory):
+    return str(tmp_path_factory.mktemp("reference-sets"))
+
+
+@pytest.fixture(scope="module")
+def old_runs():
+    """The runs of the stored fig07 set."""
+    return rs.verify(os.path.join(cd.REFERENCE_ROOT, FIGURE))
+
+
+def copy_set(work, name):
+    path = os.path.join(work, name)
     shutil.rmtree(path, ignore_errors=True)
     shutil.copytree(os.path.join(cd.REFERENCE_ROOT, FIGURE), path)
     return path
@@ -63,39 +91,43 @@ def error_of(directory):
     return "no error"
 
 
-def manifest_errors():
-    runs = rs.verify(os.path.join(cd.REFERENCE_ROOT, FIGURE))
-    deleted = copy_set("deleted")
-    gone = os.path.join(deleted, f"b.{runs[0]}")
+def test_manifest_a_deleted_reference_b_file_is_an_error_naming_it(work, old_runs):
+    deleted = copy_set(work, "deleted")
+    gone = os.path.join(deleted, f"b.{old_runs[0]}")
     os.remove(gone)
     message = error_of(deleted)
-    check("a deleted reference b-file is an error naming it",
-          gone in message and "missing" in message, message)
-    extra = copy_set("extra")
+    assert gone in message and "missing" in message, message
+
+
+def test_manifest_an_extra_file_in_a_set_is_an_error_naming_it(work, old_runs):
+    extra = copy_set(work, "extra")
     added = os.path.join(extra, "b.stray")
-    shutil.copy(os.path.join(extra, f"b.{runs[0]}"), added)
+    shutil.copy(os.path.join(extra, f"b.{old_runs[0]}"), added)
     message = error_of(extra)
-    check("an extra file in a set is an error naming it",
-          added in message and "extra" in message, message)
-    edited = copy_set("edited")
-    path = os.path.join(edited, f"b.{runs[-1]}")
+    assert added in message and "extra" in message, message
+
+
+def test_manifest_an_edited_reference_file_is_an_error_naming_it(work, old_runs):
+    edited = copy_set(work, "edited")
+    path = os.path.join(edited, f"b.{old_runs[-1]}")
     with open(path, "a") as f:
         f.write(" ")
     message = error_of(edited)
-    check("an edited reference file is an error naming it",
-          path in message and "changed" in message, message)
+    assert path in message and "changed" in message, message
 
-    ours = copy_set("ours")
+
+def test_a_run_the_figure_writes_without_a_reference_is_reported(work, old_runs):
+    ours = copy_set(work, "ours")
     os.makedirs(os.path.join(ours, "sub"))
-    shutil.copy(os.path.join(ours, f"b.{runs[0]}"), os.path.join(ours, "sub", "b.new"))
+    shutil.copy(os.path.join(ours, f"b.{old_runs[0]}"), os.path.join(ours, "sub", "b.new"))
     result = cd.compare_dirs(os.path.join(cd.REFERENCE_ROOT, FIGURE), ours)
-    check("a run the figure writes (sub/b.new) without a reference is reported",
-          any(p.startswith("sub/new:") for p in result.problems), result.report())
+    assert any(p.startswith("sub/new:") for p in result.problems), result.report()
 
 
-def new_run():
+@pytest.fixture(scope="module")
+def new_run(work):
     """A run directory that differs from the fig07 set in one b-file."""
-    run = os.path.join(WORK, "run")
+    run = os.path.join(work, "run")
     shutil.rmtree(run, ignore_errors=True)
     os.makedirs(run)
     for path in glob.glob(os.path.join(cd.REFERENCE_ROOT, FIGURE, "b.*")):
@@ -105,18 +137,20 @@ def new_run():
     return run
 
 
-def state(root):
+def state(root, old_runs):
     """"old", "new" or what is wrong with root/FIGURE."""
     directory = os.path.join(root, FIGURE)
     try:
         runs = rs.verify(directory)
     except rs.SetError as exc:
         return f"broken: {exc}"
-    return {tuple(sorted(OLD_RUNS)): "old", tuple(sorted(OLD_RUNS + ["zero/eq"])): "new"}.get(
+    return {tuple(sorted(old_runs)): "old", tuple(sorted(old_runs + ["zero/eq"])): "new"}.get(
         tuple(runs), f"neither: {runs}")
 
 
 def replace(root, run, kill_at=None):
+    """reference_set.py replace, as make refs-<fig> runs it (PYTHONPATH=drivers:
+    tests/conftest.py sets it, as make does)."""
     env = dict(os.environ)
     if kill_at:
         env["MLG_REFS_KILL_AT"] = kill_at
@@ -126,68 +160,74 @@ def replace(root, run, kill_at=None):
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 
 
-def fresh_root(name):
-    root = os.path.join(WORK, name)
+def fresh_root(work, name):
+    root = os.path.join(work, name)
     shutil.rmtree(root, ignore_errors=True)
     os.makedirs(root)
     shutil.copytree(os.path.join(cd.REFERENCE_ROOT, FIGURE), os.path.join(root, FIGURE))
     return root
 
 
-def interrupts():
-    run = new_run()
+@pytest.fixture(scope="module")
+def killed(work, new_run, old_runs):
+    """{step: (exit status, state of the set, output)} of a replace killed
+    at each step, each in its own root kill-<step>."""
+    out = {}
     for step in STEPS:
-        root = fresh_root(f"kill-{step}")
-        proc = replace(root, run, step)
-        out, _ = proc.communicate(timeout=120)
-        expected = "new" if step == "exchanged" else "old"
-        check(f"replace killed at '{step}': the {expected} set, complete",
-              proc.returncode == -signal.SIGKILL and state(root) == expected,
-              f"status {proc.returncode}, {state(root)}; {out[-300:]}")
-    leftovers = glob.glob(os.path.join(WORK, "kill-*", ".*"))
-    root = os.path.join(WORK, "kill-copying")
-    proc = replace(root, run)
+        root = fresh_root(work, f"kill-{step}")
+        proc = replace(root, new_run, step)
+        text, _ = proc.communicate(timeout=120)
+        out[step] = (proc.returncode, state(root, old_runs), text)
+    return out
+
+
+@pytest.mark.parametrize("step", STEPS)
+def test_replace_killed_at_a_step_leaves_the_old_or_new_set_complete(killed, step):
+    expected = "new" if step == "exchanged" else "old"
+    status, got, text = killed[step]
+    assert status == -signal.SIGKILL and got == expected, \
+        f"killed at '{step}': status {status}, {got} (expected the {expected} set); {text[-300:]}"
+
+
+def test_replace_after_a_killed_one_succeeds_and_removes_its_leftovers(work, killed, new_run,
+                                                                       old_runs):
+    leftovers = glob.glob(os.path.join(work, "kill-*", ".*"))
+    root = os.path.join(work, "kill-copying")
+    proc = replace(root, new_run)
     out, _ = proc.communicate(timeout=120)
-    check("a later replace succeeds and removes what a killed one left",
-          leftovers and proc.returncode == 0 and state(root) == "new"
-          and not glob.glob(os.path.join(root, ".*")), f"{leftovers}; {out[-300:]}")
-    for delay in (0.3, 0.6, 0.9, 1.2):
-        root = fresh_root(f"delay-{delay}")
-        proc = replace(root, run)
-        time.sleep(delay)
-        proc.kill()
-        proc.communicate()
-        check(f"replace killed after {delay} s: the old or the new set, complete",
-              state(root) in ("old", "new"), state(root))
+    assert leftovers and proc.returncode == 0 and state(root, old_runs) == "new" \
+        and not glob.glob(os.path.join(root, ".*")), f"{leftovers}; {out[-300:]}"
 
 
-def selection():
-    root = fresh_root("selection")
+@pytest.mark.parametrize("delay", [0.3, 0.6, 0.9, 1.2])
+def test_replace_killed_after_a_delay_leaves_the_old_or_new_set_complete(work, new_run,
+                                                                         old_runs, delay):
+    root = fresh_root(work, f"delay-{delay}")
+    proc = replace(root, new_run)
+    time.sleep(delay)
+    proc.kill()
+    proc.communicate()
+    assert state(root, old_runs) in ("old", "new"), state(root, old_runs)
+
+
+@pytest.fixture(scope="module")
+def selected(work, new_run):
+    """(root, runs stored, replace's output) of a replace into a set whose
+    runs.json selects the equilibria only."""
+    root = fresh_root(work, "selection")
     with open(os.path.join(root, FIGURE, rs.SELECTION), "w") as f:
         f.write('{"store": ["eq_*"], "reason": "test: the equilibria only"}\n')
-    run = new_run()
-    proc = replace(root, run)
+    proc = replace(root, new_run)
     out, _ = proc.communicate(timeout=120)
     runs = rs.verify(os.path.join(root, FIGURE)) if proc.returncode == 0 else []
-    check("runs.json: replace stores only the runs it selects (eq_*)",
-          runs == ["eq_F0.2", "eq_F1"], f"{runs}; {out[-300:]}")
-    result = cd.compare_dirs(os.path.join(root, FIGURE), run)
-    check("... and the comparator asks no reference of the others",
-          result.ok() and result.points > 0, result.report())
+    return root, runs, out
 
 
-def main():
-    global OLD_RUNS
-    os.makedirs(WORK, exist_ok=True)
-    stored_sets()
-    coverage()
-    OLD_RUNS = rs.verify(os.path.join(cd.REFERENCE_ROOT, FIGURE))
-    manifest_errors()
-    interrupts()
-    selection()
+def test_runs_json_replace_stores_only_the_runs_it_selects(selected):
+    _, runs, out = selected
+    assert runs == ["eq_F0.2", "eq_F1"], f"{runs}; {out[-300:]}"
 
 
-OLD_RUNS = []
-
-if __name__ == "__main__":
-    main()
+def test_runs_json_the_comparator_asks_no_reference_of_the_others(selected, new_run):
+    result = cd.compare_dirs(os.path.join(selected[0], FIGURE), new_run)
+    assert result.ok() and result.points > 0, result.report()

@@ -6,45 +6,29 @@ the published build/regress/<fig>/ must agree run by run, and
 tests/reference/ must stay untouched."""
 import os
 import subprocess
-import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "regression"))
-import compare_diagrams as cd  # noqa: E402
-from check import check  # noqa: E402
+import pytest
+
+import compare_diagrams as cd
+
+
+def make_variable(name):
+    """A variable the Makefile exports to `make test` (tests/regression/
+    regression.mk): from the environment when run by make, else asked of
+    make itself, so that pytest run by hand checks the same value."""
+    if name in os.environ:
+        return os.environ[name]
+    proc = subprocess.run(["make", "-s", "--no-print-directory",
+                           f"--eval=print-test-variable: ; @echo $({name})",
+                           "print-test-variable"], cwd=cd.ROOT, capture_output=True, text=True)
+    assert proc.returncode == 0, f"make cannot print {name}: {proc.stderr.strip()}"
+    return proc.stdout.strip()
 
 
 def make_regress(figure):
     return subprocess.Popen(["make", "--no-print-directory", f"regress-{figure}"], cwd=cd.ROOT,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-
-
-def finished(figure, proc, what):
-    out, _ = proc.communicate()
-    check(f"make regress-{figure}{what}: agrees with its reference",
-          proc.returncode == 0 and f"tests/reference/{figure}: agree (" in out
-          and "DIFFERENT" not in out,
-          out.strip()[-1500:])
-
-
-def published(figure):
-    """Every run of the published build/regress/<figure>/, one check each."""
-    reference = os.path.join(cd.REFERENCE_ROOT, figure)
-    try:
-        runs = cd.run_names(reference)
-    except cd.DiagramFileError as exc:
-        check(f"{figure}: reference set complete", False, str(exc))
-        return
-    for run in runs:
-        try:
-            result = cd.compare_dirs(reference, os.path.join(cd.REGRESS_ROOT, figure), runs=[run])
-        except cd.DiagramFileError as exc:
-            check(f"{figure}: {run} readable", False, str(exc))
-            continue
-        check(f"{figure}: {run} agrees with its reference at {result.points} labelled points "
-              f"(rtol {result.rtol:g}, atol {result.atol:g})", result.ok() and result.points > 0,
-              result.report())
 
 
 def snapshot(directory):
@@ -54,25 +38,73 @@ def snapshot(directory):
             for d, _, files in os.walk(directory) for f in files}
 
 
-def main():
-    figures = os.environ.get("REGRESS_QUICK", "").split()
-    if not check("REGRESS_QUICK names the figures to compare (set by the Makefile)",
-                 figures, "REGRESS_QUICK is empty or unset: run through `make test`"):
-        return
+@pytest.fixture(scope="module")
+def quick():
+    figures = make_variable("REGRESS_QUICK").split()
+    assert figures, "REGRESS_QUICK is empty: it names the figures `make test` compares"
+    return figures
+
+
+def test_regress_quick_names_the_figures_to_compare(quick):
+    """REGRESS_QUICK (set by the Makefile) is not empty (the fixture asserts it)."""
+    assert quick
+
+
+@pytest.fixture(scope="module")
+def regressed(quick):
+    """Every figure of REGRESS_QUICK through make regress-<fig>, the first
+    twice, 3 s apart: ([(figure, what, exit status, output)], snapshot of
+    tests/reference/ before, after)."""
     before = snapshot(cd.REFERENCE_ROOT)
-    first = make_regress(figures[0])
+    first = make_regress(quick[0])
     time.sleep(3.0)
-    second = make_regress(figures[0])
-    finished(figures[0], first, " (first of two, 3 s apart)")
-    finished(figures[0], second, " (second of two)")
-    published(figures[0])
-    for figure in figures[1:]:
-        finished(figure, make_regress(figure), "")
-        published(figure)
-    after = snapshot(cd.REFERENCE_ROOT)
-    check("the regression runs left tests/reference/ untouched", before == after,
-          f"changed: {sorted(set(before.items()) ^ set(after.items()))}")
+    second = make_regress(quick[0])
+    runs = []
+    for proc, what in ((first, " (first of two, 3 s apart)"), (second, " (second of two)")):
+        out, _ = proc.communicate()
+        runs.append((quick[0], what, proc.returncode, out))
+    for figure in quick[1:]:
+        proc = make_regress(figure)
+        out, _ = proc.communicate()
+        runs.append((figure, "", proc.returncode, out))
+    return runs, before, snapshot(cd.REFERENCE_ROOT)
 
 
-if __name__ == "__main__":
-    main()
+def test_make_regress_of_each_quick_figure_agrees_with_its_reference(regressed):
+    failed = [f"make regress-{figure}{what}: exit status {status}\n{out.strip()[-1500:]}"
+              for figure, what, status, out in regressed[0]
+              if not (status == 0 and f"tests/reference/{figure}: agree (" in out
+                      and "DIFFERENT" not in out)]
+    assert not failed, "\n\n".join(failed)
+
+
+def test_published_regress_runs_agree_with_their_reference_run_by_run(quick, regressed):
+    """Every run of the published build/regress/<figure>/, each compared on
+    its own."""
+    failed, compared = [], 0
+    for figure in quick:
+        reference = os.path.join(cd.REFERENCE_ROOT, figure)
+        try:
+            runs = cd.run_names(reference)
+        except cd.DiagramFileError as exc:
+            failed.append(f"{figure}: reference set incomplete: {exc}")
+            continue
+        for run in runs:
+            try:
+                result = cd.compare_dirs(reference, os.path.join(cd.REGRESS_ROOT, figure),
+                                         runs=[run])
+            except cd.DiagramFileError as exc:
+                failed.append(f"{figure}: {run} unreadable: {exc}")
+                continue
+            compared += 1
+            if not (result.ok() and result.points > 0):
+                failed.append(f"{figure}: {run} disagrees with its reference at "
+                              f"{result.points} labelled points (rtol {result.rtol:g}, "
+                              f"atol {result.atol:g}):\n{result.report()}")
+    assert not failed, "\n\n".join(failed)
+    assert compared > 0
+
+
+def test_the_regression_runs_leave_tests_reference_untouched(regressed):
+    _, before, after = regressed
+    assert before == after, f"changed: {sorted(set(before.items()) ^ set(after.items()))}"

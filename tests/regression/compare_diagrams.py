@@ -51,9 +51,8 @@ import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(ROOT, "drivers"))
-from mlgshimmy.shared import autoglue  # noqa: E402  (makes AUTO's python package importable)
-import reference_set  # noqa: E402
+from mlgshimmy.shared import autoglue  # noqa: E402  (PYTHONPATH=drivers; AUTO through init())
+import reference_set  # noqa: E402  (this directory: run as a script, or pytest's pythonpath)
 
 REFERENCE_ROOT = os.path.join(ROOT, "tests", "reference")
 REGRESS_ROOT = os.path.join(ROOT, "build", "regress")
