@@ -10,10 +10,12 @@
 # <inputs>, then `<tool> summary`.  <grid options> reach the shell only as
 # words quoted with shell_quote.  The grid is read only when <tool> is a goal
 # (never for `make clean` or another target); a rejected grid stops make with
-# the tool's message, which names the variable.
+# the tool's message, which names the variable.  ($(shell) of GNU make < 4.4
+# does not see exported variables: PYTHONPATH is passed explicitly.)
 define job_grid
 ifneq ($$(filter $(1),$$(MAKECMDGOALS)),)
-$(1)_RESULTS := $$(shell $$(PYTHON) -m mlgshimmy.studies.$(1) targets $(2) || echo $(1)_GRID_REJECTED)
+$(1)_RESULTS := $$(shell PYTHONPATH=$$(call shell_quote,$$(PYTHONPATH)) $$(PYTHON) \
+    -m mlgshimmy.studies.$(1) targets $(2) || echo $(1)_GRID_REJECTED)
 ifneq ($$(filter $(1)_GRID_REJECTED,$$($(1)_RESULTS)),)
 $$(error $(1): the grid is rejected (reason above))
 endif

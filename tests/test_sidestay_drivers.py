@@ -69,16 +69,11 @@ def test_sweep_grid_rejected_naming_the_variable(command, rho, mu, variable, wha
 
 
 # GNU make before 4.4 (Debian bookworm has 4.3) runs $(shell ...) without the
-# variables make exports, so mk/jobs.mk's `$(PYTHON) -m mlgshimmy.studies.sweep
-# targets` does not see mk/python.mk's PYTHONPATH: from a shell without
-# PYTHONPATH, `make sweep` (and `make atlas`) stop on "No module named
-# 'mlgshimmy'" instead of the grid's message.  The PYTHONPATH that make test
-# exports and tests/conftest.py sets would hide that here, so both cases are
-# run explicitly.
+# variables make exports: mk/jobs.mk passes PYTHONPATH to the grid's
+# `targets` itself.  The PYTHONPATH that make test exports and
+# tests/conftest.py sets would hide a regression here, so both cases run.
 @pytest.mark.parametrize("pythonpath", [
-    pytest.param(None, id="shell-without-PYTHONPATH", marks=pytest.mark.xfail(
-        strict=True, reason="mk/jobs.mk: $(shell) does not see the exported PYTHONPATH "
-                            "(GNU make < 4.4)")),
+    pytest.param(None, id="shell-without-PYTHONPATH"),
     pytest.param(DRIVERS, id="PYTHONPATH-drivers")])
 def test_make_sweep_with_a_repeated_point_stops_before_any_job_naming_sweep_rho(pythonpath):
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
