@@ -21,6 +21,7 @@ AUTO's own output goes to <rundir>/<name>.log; the console gets one line per
 run, and a failed run's RunError carries the tail of its log.
 """
 import atexit
+import importlib.util
 import os
 import shutil
 import signal
@@ -63,13 +64,26 @@ def init():
                               "AUTO_DIR to a built AUTO-07p tree)")
         os.environ["AUTO_DIR"] = where    # AUTO's own modules read it
         os.environ["OMP_NUM_THREADS"] = threads()
-        if os.path.join(where, "python") not in sys.path:
-            sys.path.insert(0, os.path.join(where, "python"))
         if "bool" not in vars(numpy):  # hasattr() would warn on numpy 1.24
             numpy.bool = numpy.bool_  # AUTO 0.9.2's Points.py still uses numpy.bool
-        import auto
-        _auto = auto
+        _auto = sys.modules.get("auto") or _import_package("auto", os.path.join(where, "python"))
     return _auto
+
+
+def _import_package(name: str, parent: str):
+    """Import the package <parent>/<name> as `name` (its modules import each
+    other as `from auto import ...`), leaving sys.path as it is."""
+    directory = os.path.join(parent, name)
+    spec = importlib.util.spec_from_file_location(
+        name, os.path.join(directory, "__init__.py"), submodule_search_locations=[directory])
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    try:
+        spec.loader.exec_module(module)
+    except BaseException:
+        del sys.modules[name]
+        raise
+    return module
 
 
 class RunError(RuntimeError):
