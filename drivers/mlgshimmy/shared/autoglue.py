@@ -428,6 +428,11 @@ def read_diagram(outputs, what, log=None):
     try:
         with open(outputs[0], "rb") as f:
             text = f.read()
+    except OSError as exc:
+        raise RunError(f"{what}: {outputs[0]} unreadable ({exc.strerror})", log) from exc
+    if not text.endswith(b"\n"):
+        raise RunError(f"{what}: {outputs[0]} is empty or cut short" + _full(outputs[0]), log)
+    try:
         bd = auto.bifDiag.bifDiag(*outputs)
         lengths = [len(branch) for branch in bd]
         labels = [lab for branch in bd for _, lab, _ in branches.labelled_points(branch)]
@@ -438,7 +443,7 @@ def read_diagram(outputs, what, log=None):
     except Exception as exc:  # any parser failure means an unreadable file
         raise RunError(f"{what}: {outputs[0]} unreadable ({type(exc).__name__}: {exc})"
                        + _full(outputs[0]), log) from exc
-    if not text.endswith(b"\n") or not lengths or min(lengths) == 0 or cut:
+    if not lengths or min(lengths) == 0 or cut:
         raise RunError(f"{what}: {outputs[0]} is empty or cut short"
                        + (f" (branch {cut[0]} has no end point)" if cut else "")
                        + _full(outputs[0]), log)

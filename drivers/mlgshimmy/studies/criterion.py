@@ -39,7 +39,9 @@ TYRE_LOADS = (15e3, 30e3, 45e3, 60e3)  # F_tyre_min [N]; 0 is the paper's laws
 # F* on a grid of 0.1, refined to 0.02 and then 0.005 around the minimum
 # (the resolution of Fig. 18's grid refinement, with a third of its loads)
 LOADS = mg.ENVELOPE_LOADS[::2]
-BASE = {"c_psi": mlgmodel.C_PSI_FIGURES, "F_tyre_min": 0.0, "eta_stage": 0.34}
+def base_assumption():
+    """The `figures` set's values of the varied assumptions (the library's c_psi)."""
+    return {"c_psi": mlgmodel.C_PSI_FIGURES, "F_tyre_min": 0.0, "eta_stage": 0.34}
 
 
 def assumption(group, x, variant, **overrides):
@@ -167,7 +169,7 @@ def lines(groups):
             by_variant.setdefault(item["variant"], []).append((item["x"], item))
         if group in varied:
             for v in by_variant:
-                by_variant[v].append((BASE[varied[group]], base[v]))
+                by_variant[v].append((base_assumption()[varied[group]], base[v]))
         out[group] = {v: sorted(pts, key=lambda t: t[0]) for v, pts in by_variant.items()}
     return out
 
