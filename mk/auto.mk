@@ -37,6 +37,27 @@ AUTO_CFLAGS = $(call auto_make_var,CFLAGS)
 AUTO_FC = $(call auto_make_var,FC)
 AUTO_FFLAGS = $(call auto_make_var,FFLAGS)
 AUTO_OPT = $(call auto_make_var,OPT)
+# The C compile of an equations file: AUTO's flags without the Fortran-only
+# -fallow-argument-mismatch (our AUTO build adds it to OPT, which run() also
+# passes to gcc: "cc1: warning: command-line option ... is valid for Fortran
+# but not for C"). gcc ignores the option, so the object code is the same.
+AUTO_C_ONLY = $(filter-out -fallow-argument-mismatch,$(1))
+
+# gfortran prints "Note: The following floating-point exceptions are
+# signalling: IEEE_UNDERFLOW_FLAG IEEE_DENORMAL" when AUTO's main program
+# STOPs after most orbit runs. What it prints is fixed when the main program
+# is compiled (-ffpe-summary=, passed to libgfortran by the _gfortran_set_options
+# call in main()); AUTO's lib/main.o is prebuilt, so the flag on our link
+# line would do nothing, and no GFORTRAN_* variable controls it. Instead
+# every equations executable is linked with -Wl,--wrap=_gfortran_set_options
+# and mk/fpe_summary.c, which passes the same options with the summary off:
+# what -ffpe-summary=none in main.o would have done. Nothing else changes
+# (no trapping, no flag is cleared).
+AUTO_QUIET_FPE := build/auto-link/fpe_summary.o
+AUTO_QUIET_LDFLAGS := -Wl,--wrap=_gfortran_set_options $(AUTO_QUIET_FPE)
+$(AUTO_QUIET_FPE): mk/fpe_summary.c | auto
+	@mkdir -p $(@D)
+	$(AUTO_CC) -O2 -Wall -Wextra -c $< -o $@
 
 # $(call auto_equations,<dir>/<name>,<source.c>,<link inputs>,<compile flags>)
 #
@@ -52,11 +73,11 @@ $(1).c: $(2)
 	cp $$< $$@
 
 $(1).o: $(1).c | auto
-	$$(AUTO_CC) $$(AUTO_CFLAGS) $$(AUTO_OPT) $(4) -MMD -MP -c $$< -o $$@
+	$$(AUTO_CC) $$(call AUTO_C_ONLY,$$(AUTO_CFLAGS) $$(AUTO_OPT)) $(4) -MMD -MP -c $$< -o $$@
 
-$(1).exe: $(1).o $(3) $(wildcard $(AUTO_DIR)/lib/*.o) | auto
+$(1).exe: $(1).o $(3) $(wildcard $(AUTO_DIR)/lib/*.o) $$(AUTO_QUIET_FPE) | auto
 	$$(AUTO_FC) -L$$(AUTO_DIR)/lib $$(AUTO_FFLAGS) $$(AUTO_OPT) $$< -o $$@ \
-	    $$(AUTO_DIR)/lib/*.o $(3) -lauto_c
+	    $$(AUTO_DIR)/lib/*.o $(3) -lauto_c $$(AUTO_QUIET_LDFLAGS)
 
 -include $(1).d
 endef
