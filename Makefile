@@ -43,7 +43,7 @@ export MLG_AUTO_THREADS := $(AUTO_THREADS)
 export MPLBACKEND := Agg
 export SOURCE_DATE_EPOCH := 0
 
-PACKAGES := gcc gfortran make liblapack-dev python3-numpy python3-matplotlib \
+PACKAGES := gcc gfortran make liblapack-dev python3-numpy python3-matplotlib pkgconf \
             libsundials-dev dpkg-dev
 PACKAGES_STAMP := build/.stamp-packages
 
