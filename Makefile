@@ -6,7 +6,8 @@
 #   make regress   run every figure with a reference and compare (tests/regression/)
 #   make refs      regenerate the reference diagrams in tests/reference/
 #   make setup     only the set-up steps
-#   make clean     remove build/
+#   make clean     remove build/ (but build/auto-dir, the AUTO_DIR you chose)
+#   make distclean remove build/ entirely
 #
 # Variables other makefiles (c/c.mk, ...) append to:
 #   TEST_PROGRAMS   test programs run by `make test`: C executables (give the
@@ -21,7 +22,9 @@
 #   REGRESS_QUICK   those of them `make test` also compares (fast ones)
 #
 # Settings (command line or environment):
-#   AUTO_DIR=<dir>  use an already built AUTO-07p instead of building one
+#   AUTO_DIR=<dir>  use an already built or installed AUTO-07p (e.g. Debian's:
+#                   /usr/lib/auto-07p) instead of building one; remembered
+#                   in build/auto-dir for later runs (make forget-auto)
 #   AUTO_SRC=<file> build AUTO-07p from this tarball, not the Debian source
 #   PYTHON          interpreter with numpy and matplotlib (/usr/bin/python3)
 #   AUTO_THREADS    OpenMP threads of each AUTO run (1; an OMP_NUM_THREADS in
@@ -55,7 +58,7 @@ BENCH_DEPS :=
 REGRESS_FIGURES :=
 REGRESS_QUICK :=
 
-.PHONY: all setup packages auto test figures bench clean
+.PHONY: all setup packages auto test figures bench clean distclean
 all: test
 
 include mk/auto.mk
@@ -110,5 +113,13 @@ bench: setup $(BENCH_DEPS) $(BENCH_PROGRAMS)
 	    case $$prog in *.py) $(PYTHON) "$$prog" ;; *) "$$prog" ;; esac; \
 	done
 
+# clean keeps build/auto-dir, the AUTO-07p chosen with AUTO_DIR (mk/auto.mk);
+# distclean removes it too.
 clean:
+	@if [ -f $(AUTO_CHOICE) ]; then \
+	    echo "clean: keeping $(AUTO_CHOICE) (AUTO_DIR=$$(cat $(AUTO_CHOICE)); make distclean removes it)"; \
+	    find build -mindepth 1 -maxdepth 1 ! -name $(notdir $(AUTO_CHOICE)) -exec rm -rf {} +; \
+	else rm -rf build; fi
+
+distclean:
 	rm -rf build
