@@ -1,5 +1,6 @@
 # mlg-shimmy: AUTO-07p plugin set for main landing gear shimmy.
 #
+#   make           the list of targets with typical times (make help, mk/help.mk)
 #   make test      set up (Debian packages, AUTO-07p), build and run all tests
 #   make figures   set up and produce every registered figure in build/figures/
 #   make bench     set up and run the benchmark programs
@@ -60,8 +61,11 @@ REGRESS_QUICK :=
 
 .PHONY: all setup packages auto test figures bench clean distclean
 all: test
+# plain `make` prints the targets (mk/help.mk) instead of running the tests
+.DEFAULT_GOAL := help
 
 include mk/auto.mk
+include mk/help.mk
 -include c/c.mk
 -include c/simulate/simulate.mk
 -include models/models.mk
