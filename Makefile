@@ -1,12 +1,14 @@
 # mlg-shimmy: AUTO-07p plugin set for main landing gear shimmy.
 #
+#   make           the list of targets with typical times (make help, mk/help.mk)
 #   make test      set up (Debian packages, AUTO-07p), build and run all tests
 #   make figures   set up and produce every registered figure in build/figures/
 #   make bench     set up and run the benchmark programs
 #   make regress   run every figure with a reference and compare (tests/regression/)
 #   make refs      regenerate the reference diagrams in tests/reference/
 #   make setup     only the set-up steps
-#   make clean     remove build/
+#   make clean     remove build/ (but build/auto-dir, the AUTO_DIR you chose)
+#   make distclean remove build/ entirely
 #
 # Variables other makefiles (c/c.mk, ...) append to:
 #   TEST_DEPS       files the tests need built first (C test programs, the
@@ -19,7 +21,9 @@
 #   REGRESS_QUICK   those of them `make test` also compares (fast ones)
 #
 # Settings (command line or environment):
-#   AUTO_DIR=<dir>  use an already built AUTO-07p instead of building one
+#   AUTO_DIR=<dir>  use an already built or installed AUTO-07p (e.g. Debian's:
+#                   /usr/lib/auto-07p) instead of building one; remembered
+#                   in build/auto-dir for later runs (make forget-auto)
 #   AUTO_SRC=<file> build AUTO-07p from this tarball, not the Debian source
 #   PYTHON          interpreter with numpy and matplotlib (/usr/bin/python3)
 #   AUTO_THREADS    OpenMP threads of each AUTO run (1; an OMP_NUM_THREADS in
@@ -45,7 +49,7 @@ export MPLBACKEND := Agg
 export SOURCE_DATE_EPOCH := 0
 
 PACKAGES := gcc gfortran make liblapack-dev python3-numpy python3-matplotlib \
-            python3-scipy python3-pytest libsundials-dev dpkg-dev
+            python3-scipy python3-pytest pkgconf libsundials-dev dpkg-dev
 PACKAGES_STAMP := build/.stamp-packages
 
 TEST_DEPS :=
@@ -55,11 +59,14 @@ BENCH_DEPS :=
 REGRESS_FIGURES :=
 REGRESS_QUICK :=
 
-.PHONY: all setup packages auto test figures bench clean
+.PHONY: all setup packages auto test figures bench clean distclean
 all: test
+# plain `make` prints the targets (mk/help.mk) instead of running the tests
+.DEFAULT_GOAL := help
 
 include mk/python.mk
 include mk/auto.mk
+include mk/help.mk
 include c/c.mk
 include c/simulate/simulate.mk
 include models/models.mk
@@ -110,5 +117,13 @@ bench: setup $(BENCH_DEPS) $(BENCH_PROGRAMS)
 	    case $$prog in *.py) $(PYTHON) "$$prog" ;; *) "$$prog" ;; esac; \
 	done
 
+# clean keeps build/auto-dir, the AUTO-07p chosen with AUTO_DIR (mk/auto.mk);
+# distclean removes it too.
 clean:
+	@if [ -f $(AUTO_CHOICE) ]; then \
+	    echo "clean: keeping $(AUTO_CHOICE) (AUTO_DIR=$$(cat $(AUTO_CHOICE)); make distclean removes it)"; \
+	    find build -mindepth 1 -maxdepth 1 ! -name $(notdir $(AUTO_CHOICE)) -exec rm -rf {} +; \
+	else rm -rf build; fi
+
+distclean:
 	rm -rf build

@@ -50,8 +50,62 @@ $(MLG_BENCH): tests/bench/bench_vector_field.c $(MLG_LIB)
 
 BENCH_PROGRAMS += $(MLG_BENCH)
 
-# Shared library for the Python drivers (mlgshimmy.shared.mlgmodel, via ctypes).
+# The version: c/mlg_version.h is its one source (MLG_VERSION_MAJOR/MINOR/PATCH).
+mlg_version_part = $(shell sed -n 's/^.define MLG_VERSION_$(1)  *\([0-9][0-9]*\) *$$/\1/p' c/mlg_version.h)
+MLG_VERSION_MAJOR := $(call mlg_version_part,MAJOR)
+MLG_VERSION_MINOR := $(call mlg_version_part,MINOR)
+MLG_VERSION_PATCH := $(call mlg_version_part,PATCH)
+MLG_VERSION := $(MLG_VERSION_MAJOR).$(MLG_VERSION_MINOR).$(MLG_VERSION_PATCH)
+ifneq ($(words $(MLG_VERSION_MAJOR) $(MLG_VERSION_MINOR) $(MLG_VERSION_PATCH)),3)
+$(error c/mlg_version.h: cannot read MLG_VERSION_MAJOR/MINOR/PATCH (got '$(MLG_VERSION)'))
+endif
+
+# Shared library: the real file libmlg.so.MAJOR.MINOR.PATCH with the SONAME
+# libmlg.so.MAJOR, and the symlinks libmlg.so.MAJOR and libmlg.so beside it;
+# the Python drivers load build/lib/libmlg.so (mlgshimmy.shared.mlgmodel, ctypes).
+MLG_SONAME := libmlg.so.$(MLG_VERSION_MAJOR)
+MLG_SHARED_REAL := build/lib/libmlg.so.$(MLG_VERSION)
 MLG_SHARED := build/lib/libmlg.so
-$(MLG_SHARED): $(MLG_OBJECTS)
+$(MLG_SHARED_REAL): $(MLG_OBJECTS)
 	@mkdir -p $(@D)
-	$(CC) -shared $^ -lm -o $@
+	$(CC) -shared -Wl,-soname,$(MLG_SONAME) $^ -lm -o $@
+$(MLG_SHARED): $(MLG_SHARED_REAL)
+	ln -sfn $(notdir $<) build/lib/$(MLG_SONAME)
+	ln -sfn $(notdir $<) $@
+
+# The public headers, installed as $(INCLUDEDIR)/mlg/; the rest of c/ is internal.
+MLG_PUBLIC_HEADERS := c/mlg_model.h c/mlg_parameters.h c/mlg_version.h
+
+# make install [PREFIX=/usr/local] [DESTDIR=<staging root>]: the headers in
+# $(INCLUDEDIR)/mlg/, libmlg.so.$(MLG_VERSION) with its symlinks, libmlg.a
+# and $(PKGCONFIGDIR)/mlg.pc (docs/c-library.md). make uninstall removes them.
+PREFIX ?= /usr/local
+LIBDIR ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+.PHONY: install uninstall
+install: $(MLG_LIB) $(MLG_SHARED_REAL) $(MLG_PUBLIC_HEADERS) c/mlg.pc.in
+	install -d $(DESTDIR)$(INCLUDEDIR)/mlg $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR)
+	install -m 644 $(MLG_PUBLIC_HEADERS) $(DESTDIR)$(INCLUDEDIR)/mlg/
+	install -m 755 $(MLG_SHARED_REAL) $(DESTDIR)$(LIBDIR)/
+	ln -sfn libmlg.so.$(MLG_VERSION) $(DESTDIR)$(LIBDIR)/$(MLG_SONAME)
+	ln -sfn libmlg.so.$(MLG_VERSION) $(DESTDIR)$(LIBDIR)/libmlg.so
+	install -m 644 $(MLG_LIB) $(DESTDIR)$(LIBDIR)/
+	sed -e 's|@PREFIX@|$(PREFIX)|; s|@LIBDIR@|$(LIBDIR)|; s|@INCLUDEDIR@|$(INCLUDEDIR)|' \
+	    -e 's|@VERSION@|$(MLG_VERSION)|' c/mlg.pc.in > $(DESTDIR)$(PKGCONFIGDIR)/mlg.pc
+	@echo "install: mlg $(MLG_VERSION) under $(DESTDIR)$(PREFIX):" \
+	    "headers $(INCLUDEDIR)/mlg/, libraries $(LIBDIR)/, pkg-config mlg"
+uninstall:
+	rm -f $(addprefix $(DESTDIR)$(INCLUDEDIR)/mlg/,$(notdir $(MLG_PUBLIC_HEADERS))) \
+	    $(addprefix $(DESTDIR)$(LIBDIR)/,libmlg.so.$(MLG_VERSION) $(MLG_SONAME) libmlg.so libmlg.a) \
+	    $(DESTDIR)$(PKGCONFIGDIR)/mlg.pc
+	-rmdir $(DESTDIR)$(INCLUDEDIR)/mlg
+
+# The example program (c/examples/evaluate.c), built here against the
+# in-tree library so that `make test` keeps it compiling; tests/test_c_library.py
+# builds it against an installed copy through pkg-config.
+MLG_EXAMPLE := build/examples/evaluate
+$(MLG_EXAMPLE): c/examples/evaluate.c $(MLG_PUBLIC_HEADERS) $(MLG_LIB)
+	@mkdir -p $(@D)
+	$(CC) $(MLG_CFLAGS) $< $(MLG_LIB) -lm -o $@
+TEST_DEPS += $(MLG_EXAMPLE)

@@ -10,7 +10,8 @@
 #define MLG_MODEL_H
 
 #include <stddef.h>
-#include "parameters.h"
+#include "mlg_parameters.h"
+#include "mlg_version.h"
 
 /* State vector, in this order (SI units: rad, m, rad/s, m/s). */
 enum mlg_state_index {
@@ -34,7 +35,7 @@ enum { MLG_NDIR = MLG_NX + MLG_NPAR };
 
 /* PAR slots read and written by mlg_params_set_par / _get_par: PAR(1) to
  * PAR(MLG_PAR_CONSTANTS_FILE), which hold the continuation parameters and
- * the switches with an AUTO slot (parameters.h: the PAR layout). */
+ * the switches with an AUTO slot (mlg_parameters.h: the PAR layout). */
 enum { MLG_PAR_SLOTS = MLG_PAR_CONSTANTS_FILE };
 
 /* Values of the eom_terms switch (docs/model.md, section 8). */

@@ -1,30 +1,62 @@
 # AUTO-07p: where it lives, how it is built, and how equations files are
 # compiled and linked the way AUTO's run() does it, with extra libraries.
 #
-# AUTO_DIR=<dir>   use an already built AUTO-07p tree (skips the build)
-# AUTO_SRC=<file>  build from this source tarball instead of the Debian package
+# AUTO_DIR=<dir>   use this AUTO-07p: a built source tree, or an installed one
+#                  such as Debian's package auto-07p (AUTO_DIR=/usr/lib/auto-07p,
+#                  headers in /usr/include); checked by mk/check-auto.sh and
+#                  remembered in build/auto-dir, so that later runs without
+#                  AUTO_DIR use it too (make clean keeps it)
+# AUTO_SRC=<file>  build from this source tarball instead of the Debian source
+#
+# Which AUTO: AUTO_DIR if given (command line or environment), else the one
+# remembered in build/auto-dir, else the source build under build/auto/07p
+# (built the first time, saying so). AUTO_DIR=build/auto/07p or
+# `make forget-auto` returns to the source build. `make auto` prints which.
+AUTO_BUILT_DIR := $(CURDIR)/build/auto/07p
+AUTO_CHOICE := build/auto-dir
 
-ifdef AUTO_DIR
+ifneq ($(filter command line environment environment override,$(origin AUTO_DIR)),)
 override AUTO_DIR := $(abspath $(AUTO_DIR))
-AUTO_STAMP :=
-
-auto:
-	@for f in python/auto/__init__.py cmds/cmds.make include/auto_f2c.h lib/libauto_c.a; do \
-	    if [ ! -f "$(AUTO_DIR)/$$f" ]; then \
-	        echo "error: AUTO_DIR=$(AUTO_DIR) is not a built AUTO-07p tree (no $$f)" >&2; \
-	        echo "error: unset AUTO_DIR to build AUTO-07p under build/auto/" >&2; \
-	        exit 1; \
-	    fi; \
-	done
+AUTO_FROM := given
+else ifneq ($(wildcard $(AUTO_CHOICE)),)
+AUTO_DIR := $(abspath $(strip $(file < $(AUTO_CHOICE))))
+AUTO_FROM := remembered
 else
-AUTO_DIR := $(CURDIR)/build/auto/07p
+AUTO_DIR := $(AUTO_BUILT_DIR)
+AUTO_FROM := default
+endif
+# print which AUTO once, from the make the user started
+auto_say = $(if $(filter 0,$(MAKELEVEL)),echo $(1),:)
+
+.PHONY: forget-auto
+forget-auto:
+	rm -f $(AUTO_CHOICE)
+
+ifeq ($(AUTO_DIR),$(AUTO_BUILT_DIR))
 AUTO_STAMP := build/.stamp-auto
 
 auto: $(AUTO_STAMP)
+	@$(if $(filter given,$(AUTO_FROM)),rm -f $(AUTO_CHOICE))
+	@$(call auto_say,"auto: using AUTO-07p built from source in $(AUTO_DIR)")
 
 $(AUTO_STAMP): mk/build-auto.sh | $(PACKAGES_STAMP)
+	@echo "auto: no AUTO-07p chosen: building it from source under build/auto/ (about 80 s;" \
+	    "to use an installed one instead, e.g. Debian's auto-07p: make ... AUTO_DIR=/usr/lib/auto-07p)"
 	mk/build-auto.sh build/auto $(if $(AUTO_SRC),$(abspath $(AUTO_SRC)))
 	touch $@
+else
+AUTO_STAMP :=
+
+auto:
+	@$(if $(filter 0,$(MAKELEVEL)),mk/check-auto.sh,mk/check-auto.sh >/dev/null) $(AUTO_DIR)
+	@if [ "$(AUTO_FROM)" = given ] && [ "$$(cat $(AUTO_CHOICE) 2>/dev/null)" != "$(AUTO_DIR)" ]; then \
+	    mkdir -p $(dir $(AUTO_CHOICE)) && echo "$(AUTO_DIR)" > $(AUTO_CHOICE) && \
+	    echo "auto: remembered AUTO_DIR=$(AUTO_DIR) in $(AUTO_CHOICE): later runs use it" \
+	         "without AUTO_DIR (make forget-auto: back to the source build)"; \
+	elif [ "$(AUTO_FROM)" = remembered ]; then \
+	    $(call auto_say,"auto: ... as remembered in $(AUTO_CHOICE) (AUTO_DIR=<dir> to change," \
+	                    "make forget-auto for the source build)"); \
+	fi
 endif
 export AUTO_DIR
 
@@ -37,6 +69,39 @@ AUTO_CFLAGS = $(call auto_make_var,CFLAGS)
 AUTO_FC = $(call auto_make_var,FC)
 AUTO_FFLAGS = $(call auto_make_var,FFLAGS)
 AUTO_OPT = $(call auto_make_var,OPT)
+# The C compile of an equations file: AUTO's flags without the Fortran-only
+# ones that cmds.make's OPT holds and run() also passes to gcc ("cc1:
+# warning: command-line option ... is valid for Fortran but not for C"):
+# -fallow-argument-mismatch (our source build), -std=legacy (Debian's
+# package). gcc ignores them, so the object code is the same.
+AUTO_FORTRAN_ONLY := -fallow-argument-mismatch -std=legacy
+AUTO_C_ONLY = $(filter-out $(AUTO_FORTRAN_ONLY),$(1))
+
+# gfortran prints "Note: The following floating-point exceptions are
+# signalling: IEEE_UNDERFLOW_FLAG IEEE_DENORMAL" when AUTO's main program
+# STOPs after most orbit runs. What it prints is fixed when the main program
+# is compiled (-ffpe-summary=, passed to libgfortran by the _gfortran_set_options
+# call in main()); AUTO's lib/main.o is prebuilt, so the flag on our link
+# line would do nothing, and no GFORTRAN_* variable controls it. Instead
+# every equations executable is linked with -Wl,--wrap=_gfortran_set_options
+# and mk/fpe_summary.c, which passes the same options with the summary off:
+# what -ffpe-summary=none in main.o would have done. Nothing else changes
+# (no trapping, no flag is cleared).
+# Which AUTO the equations executables were built with: rewritten only when
+# AUTO_DIR changes, so that switching AUTO recompiles and relinks them (an
+# installed AUTO's lib/*.o can be older than an executable built with another).
+AUTO_USED := build/auto-link/auto-dir
+$(AUTO_USED): FORCE
+	@mkdir -p $(@D)
+	@if [ "$$(cat $@ 2>/dev/null)" != "$(AUTO_DIR)" ]; then echo "$(AUTO_DIR)" > $@; fi
+.PHONY: FORCE
+FORCE:
+
+AUTO_QUIET_FPE := build/auto-link/fpe_summary.o
+AUTO_QUIET_LDFLAGS := -Wl,--wrap=_gfortran_set_options $(AUTO_QUIET_FPE)
+$(AUTO_QUIET_FPE): mk/fpe_summary.c $(AUTO_USED) | auto
+	@mkdir -p $(@D)
+	$(AUTO_CC) -O2 -Wall -Wextra -c $< -o $@
 
 # $(call auto_equations,<dir>/<name>,<source.c>,<link inputs>,<compile flags>)
 #
@@ -51,12 +116,12 @@ $(1).c: $(2)
 	@mkdir -p $$(@D)
 	cp $$< $$@
 
-$(1).o: $(1).c | auto
-	$$(AUTO_CC) $$(AUTO_CFLAGS) $$(AUTO_OPT) $(4) -MMD -MP -c $$< -o $$@
+$(1).o: $(1).c $$(AUTO_USED) | auto
+	$$(AUTO_CC) $$(call AUTO_C_ONLY,$$(AUTO_CFLAGS) $$(AUTO_OPT)) $(4) -MMD -MP -c $$< -o $$@
 
-$(1).exe: $(1).o $(3) $(wildcard $(AUTO_DIR)/lib/*.o) | auto
+$(1).exe: $(1).o $(3) $(wildcard $(AUTO_DIR)/lib/*.o) $$(AUTO_QUIET_FPE) $$(AUTO_USED) | auto
 	$$(AUTO_FC) -L$$(AUTO_DIR)/lib $$(AUTO_FFLAGS) $$(AUTO_OPT) $$< -o $$@ \
-	    $$(AUTO_DIR)/lib/*.o $(3) -lauto_c
+	    $$(AUTO_DIR)/lib/*.o $(3) -lauto_c $$(AUTO_QUIET_LDFLAGS)
 
 -include $(1).d
 endef

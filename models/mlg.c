@@ -2,7 +2,7 @@
  * library (c/mlg_model.h).  Built by the Makefile (c/c.mk, mk/auto.mk) into
  * build/models/mlg.exe, linked with build/lib/libmlg.a.
  *
- * PAR layout: c/parameters.h and docs/model.md 2.1 (PAR(1-10) continuation
+ * PAR layout: c/mlg_parameters.h and docs/model.md 2.1 (PAR(1-10) continuation
  * parameters, PAR(11) the period, PAR(13-14) switches, PAR(15) the constants
  * file, PAR(21-28) the measures of MLG_MEASURES written by PVLS).
  *
@@ -118,7 +118,7 @@ int stpnt(integer ndim, doublereal t, doublereal *u, doublereal *par)
     return 0;
 }
 
-/* One measure of MLG_MEASURES (c/parameters.h) on the current solution u. */
+/* One measure of MLG_MEASURES (c/mlg_parameters.h) on the current solution u. */
 enum measure_kind { AMP, MEAN, FREQ };
 static doublereal measure(enum measure_kind kind, int state, const doublereal *u,
                           const doublereal *par)

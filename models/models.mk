@@ -2,3 +2,64 @@
 # Drivers run it with e='<repo>/build/models/mlg'.
 MLG_MODEL := build/models/mlg
 $(eval $(call auto_equations,$(MLG_MODEL),models/mlg.c,$(MLG_LIB),-I$(CURDIR)/c))
+
+# make demo [DEMO_DIR=build/demo]: a run directory for AUTO's own workflow,
+# as in AUTO's demos: `auto mlg.auto`, `@r mlg`, `@sv mlg` (docs/auto-workflow.md).
+# AUTO's run() and @r compile <e>.c and link <e>.o with AUTO's commands only,
+# which know neither c/'s headers nor the library. So make builds them here:
+# mlg.c (models/mlg.c), then mlg.o = the model compiled with AUTO's flags
+# and partially linked (ld -r) with the whole library, then mlg.exe with
+# AUTO's link line; run() and @r then find both up to date and use them.
+# Should they relink (an AUTO newer than mlg.exe, mlg.exe deleted), their
+# own link line works, since mlg.o holds the library. Rerun make demo after
+# editing mlg.c there, or after AUTO's cl() / @cl (they delete *.o, *.exe).
+DEMO_DIR ?= build/demo
+DEMO := $(patsubst %/,%,$(DEMO_DIR))
+DEMO_FILES := $(addprefix $(DEMO)/,mlg.c mlg.o mlg.exe c.mlg mlg.auto auto.env)
+
+$(DEMO)/mlg.c: models/mlg.c
+$(DEMO)/c.mlg: constants/c.mlg
+$(DEMO)/mlg.auto: models/mlg.auto
+$(DEMO)/mlg.c $(DEMO)/c.mlg $(DEMO)/mlg.auto:
+	@mkdir -p $(@D)
+	cp $< $@
+
+$(DEMO)/.obj/mlg.o: $(DEMO)/mlg.c $(AUTO_USED) | auto
+	@mkdir -p $(@D)
+	$(AUTO_CC) $(call AUTO_C_ONLY,$(AUTO_CFLAGS) $(AUTO_OPT)) -I$(CURDIR)/c -MMD -MP -c $< -o $@
+-include $(DEMO)/.obj/mlg.d
+
+$(DEMO)/mlg.o: $(DEMO)/.obj/mlg.o $(MLG_OBJECTS)
+	ld -r -o $@ $^
+
+$(DEMO)/mlg.exe: $(DEMO)/mlg.o $(wildcard $(AUTO_DIR)/lib/*.o) $(AUTO_QUIET_FPE) $(AUTO_USED) | auto
+	$(AUTO_FC) -L$(AUTO_DIR)/lib $(AUTO_FFLAGS) $(AUTO_OPT) $< -o $@ \
+	    $(AUTO_DIR)/lib/*.o -lauto_c $(AUTO_QUIET_LDFLAGS)
+
+# auto.env: AUTO_DIR and PATH for AUTO's commands, as AUTO's own
+# cmds/auto.env.sh sets them, plus .bin/ with `auto` (AUTO's launcher, or
+# Debian's auto-07p) and the `python`/`python3` it runs: $(PYTHON), which
+# has numpy. OMP_NUM_THREADS as the drivers' (AUTO_THREADS): results depend on it.
+$(DEMO)/auto.env: $(AUTO_USED) | auto
+	@mkdir -p $(@D)/.bin
+	@launcher=$(AUTO_DIR)/bin/auto; [ -x "$$launcher" ] || launcher=$$(command -v auto-07p) || \
+	    { echo "demo: no AUTO launcher ($(AUTO_DIR)/bin/auto or auto-07p)" >&2; exit 1; }; \
+	python=$$(command -v $(PYTHON)) || { echo "demo: no $(PYTHON)" >&2; exit 1; }; \
+	ln -sfn "$$launcher" $(@D)/.bin/auto && ln -sfn "$$python" $(@D)/.bin/python && \
+	ln -sfn "$$python" $(@D)/.bin/python3
+	@printf '%s\n' \
+	    "# Source in this directory (. ./auto.env) for AUTO-07p's commands, as after" \
+	    "# AUTO's own cmds/auto.env.sh: auto (AUTO's CLUI), @r, @sv, @cl, ... of the" \
+	    "# AUTO-07p make used. Written by make demo (models/models.mk)." \
+	    "AUTO_DIR=$(AUTO_DIR)" \
+	    "PATH=$(abspath $(DEMO))/.bin:\$$AUTO_DIR/cmds:\$$PATH" \
+	    "OMP_NUM_THREADS=$(AUTO_THREADS)   # one thread, as the drivers: results depend on it" \
+	    "export AUTO_DIR PATH OMP_NUM_THREADS" > $@
+	@echo "demo: wrote $@ (AUTO_DIR=$(AUTO_DIR))"
+
+.PHONY: demo
+demo: $(DEMO_FILES)
+	@echo "demo: $(DEMO)/ is an AUTO-07p run directory for the MLG model. In it:"
+	@echo "    cd $(DEMO) && . ./auto.env"
+	@echo "    auto mlg.auto          # Fig. 7 at F* = 1: Hopf point at V = 346.1 m/s, orbits (about 2 s)"
+	@echo "    @r mlg && @sv mlg      # straight rolling from the STPNT with c.mlg, saved as b.mlg, s.mlg, d.mlg"

@@ -60,7 +60,7 @@ static void usage(FILE *stream)
         "  --c-psi X             torsional damping [N m s/rad]\n"
         "  --strut-variant 0|1   F_keta stage order (0 monotone, 1 as printed)\n"
         "  --param NAME=X        any parameter, constant or switch by its name in\n"
-        "                        c/parameters.h (e.g. rho=0.1, eom_terms=2)\n"
+        "                        c/mlg_parameters.h (e.g. rho=0.1, eom_terms=2)\n"
         "  --t-end X             final time [s] (default 15)\n"
         "  --dt-out X            output interval [s] (default 1e-3); at most --t-end,\n"
         "                        and at most 1e8 samples up to --t-end\n"

@@ -1,0 +1,97 @@
+"""AUTO's own workflow in the run directory of `make demo`
+(docs/auto-workflow.md): `auto mlg.auto` (AUTO's launcher, through the
+directory's auto.env) reproduces Fig. 7's Hopf point at F* = 1 and its
+periodic orbits, and `@r mlg` / `@sv mlg` run and save straight rolling from
+c.mlg, both with the executable make built (AUTO must not rebuild it: its
+own link line has no room for the library). AUTO's launcher exits 0 even
+when the script fails, so the test reads the files it writes.
+
+Run: /usr/bin/python3 -m pytest -q tests/test_demo.py   (about 10 s)
+"""
+import os
+import pathlib
+import re
+import subprocess
+
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+V_HOPF = 346.1          # m/s, the paper's Fig. 7 (the `figures` set is calibrated to it)
+HB, EP, UZ = 3, 9, -4   # AUTO's point types in b-files
+
+
+def clean_env():
+    """The environment without a make of ours around it (AUTO_DIR kept:
+    the AUTO the test run uses)."""
+    return {k: v for k, v in os.environ.items()
+            if k not in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS", "MAKEOVERRIDES")}
+
+
+@pytest.fixture(scope="module")
+def demo(tmp_path_factory):
+    """make demo into a scratch directory (DEMO_DIR), not build/demo."""
+    where = tmp_path_factory.mktemp("demo") / "demo"
+    proc = subprocess.run(["make", "--no-print-directory", "demo", f"DEMO_DIR={where}"],
+                          cwd=ROOT, env=clean_env(), capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    for name in ("mlg.c", "mlg.o", "mlg.exe", "c.mlg", "mlg.auto", "auto.env"):
+        assert (where / name).is_file(), name
+    return where
+
+
+def in_demo(demo, command):
+    """`command` in a shell that sourced the directory's auto.env."""
+    proc = subprocess.run(["bash", "-c", f". ./auto.env && {command}"], cwd=demo,
+                          env=clean_env(), capture_output=True, text=True, timeout=300)
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+def built(demo):
+    return {name: (demo / name).stat().st_mtime_ns for name in ("mlg.o", "mlg.exe")}
+
+
+def points(bfile):
+    """(branch, type, label, first ICP value) of every labelled point of a b-file."""
+    rows = []
+    for line in bfile.read_text().splitlines():
+        f = line.split()
+        if len(f) > 4 and f[0] != "0" and f[3] != "0":
+            rows.append((abs(int(f[0])), int(f[2]), int(f[3]), float(f[4])))
+    return rows
+
+
+def test_auto_script_reproduces_fig07_hopf_point(demo):
+    before = built(demo)
+    status, out = in_demo(demo, "auto mlg.auto")
+    assert "Traceback" not in out, out
+    bfile = demo / "b.fig07"
+    assert bfile.is_file() and (demo / "s.fig07").is_file(), out
+    pts = points(bfile)
+    hopf = [v for br, ty, lab, v in pts if br == 1 and ty == HB]
+    assert len(hopf) == 1, pts
+    assert abs(hopf[0] - V_HOPF) <= 1e-3 * V_HOPF, hopf      # 1e-3 relative
+    assert re.search(r"Hopf point HB: V = 346\.1\d* m/s", out), out
+    # the orbits: a second branch from the Hopf point, ending at V = 600
+    orbit_ends = [v for br, ty, lab, v in pts if br == 2 and ty in (EP, UZ)]
+    assert orbit_ends and abs(orbit_ends[-1] - 600.0) <= 1e-6, pts
+    # AUTO used the executable make built, and no compiler ran
+    assert built(demo) == before
+    assert "gcc " not in out and "gfortran " not in out
+    assert not list(demo.glob("fort.*"))
+
+
+def test_at_r_and_at_sv(demo):
+    before = built(demo)
+    status, out = in_demo(demo, "@r mlg && @sv mlg")
+    assert status == 0, out
+    assert "Saving fort.7 as b.mlg ... done" in out
+    hopf = [v for br, ty, lab, v in points(demo / "b.mlg") if ty == HB]
+    assert len(hopf) == 1 and abs(hopf[0] - V_HOPF) <= 1e-3 * V_HOPF, hopf
+    assert built(demo) == before
+
+
+def test_c_mlg_keeps_dsmax_near_2():
+    """c.mlg alone (as @r mlg reads it) steps at most 2 m/s, the advice for
+    straight rolling in V."""
+    text = (ROOT / "constants" / "c.mlg").read_text()
+    assert float(re.search(r"DSMAX\s*=\s*([0-9.eE+-]+)", text).group(1)) <= 2.0
