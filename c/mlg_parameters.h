@@ -52,8 +52,8 @@
 #define MLG_PAR_CONSTANTS_FILE 15
 
 /* Solution measures written by PVLS (models/mlg.c) into PAR(21) onwards,
- * in this order; constants/c.mlg names them and drivers/continuation.py lists
- * them through drivers/mlgmodel.py.
+ * in this order; constants/c.mlg names them and mlgshimmy.shared.mlgmodel lists
+ * them (the drivers read the names from the library).
  * X(name, kind, state, unit, description); kind AMP: (max - min)/2 of the
  * state over the solution, MEAN: its mean, FREQ: 1/T (0 on equilibria). */
 #define MLG_MEASURES_FIRST_PAR 21

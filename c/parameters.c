@@ -8,7 +8,7 @@
 
 /* c_psi of the `figures` set: the value that puts the zero-freeplay Hopf
  * point at F* = 1 at the paper's V = 346.1 m/s, found by AUTO continuation of that
- * Hopf point in (V, c_psi): `make calibrate` (drivers/calibrate_c_psi.py). */
+ * Hopf point in (V, c_psi): `make calibrate` (mlgshimmy.studies.calibrate_c_psi). */
 const double MLG_C_PSI_FIGURES = 724.0034;
 
 mlg_params mlg_params_table(void)

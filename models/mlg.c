@@ -104,7 +104,7 @@ int func(integer ndim, const doublereal *u, const integer *icp, const doublereal
 
 /* Straight rolling for the parameters below.  AUTO applies the PAR and U
  * values of the constants file after STPNT, so a run at other parameters
- * passes the matching equilibrium in U (drivers/mlgmodel.py computes it). */
+ * passes the matching equilibrium in U (mlgshimmy.shared.mlgmodel computes it). */
 int stpnt(integer ndim, doublereal t, doublereal *u, doublereal *par)
 {
     mlg_params p = mlg_params_figures();

@@ -43,7 +43,15 @@ _auto = None
 
 
 def auto_dir() -> str:
-    return os.environ.get("AUTO_DIR", os.path.join(paths.BUILD, "auto", "07p"))
+    """AUTO_DIR if set, else the AUTO make was told to use (build/auto-dir,
+    mk/auto.mk), else the tree make builds (build/auto/07p)."""
+    if os.environ.get("AUTO_DIR"):
+        return os.environ["AUTO_DIR"]
+    try:
+        with open(os.path.join(paths.BUILD, "auto-dir")) as chosen:
+            return chosen.read().strip()
+    except OSError:
+        return os.path.join(paths.BUILD, "auto", "07p")
 
 
 def threads() -> str:

@@ -33,12 +33,22 @@ def path(figure: str, part: Optional[str] = None) -> str:
 
 
 def _auto_version() -> Optional[str]:
-    auto_dir = os.environ.get("AUTO_DIR", os.path.join(paths.BUILD, "auto", "07p"))
+    """The first line of the AUTO tree's CHANGELOG (a source build), else
+    the Debian package's version (an installed AUTO ships none)."""
+    from mlgshimmy.shared import autoglue   # AUTO itself is not imported
+    where = autoglue.auto_dir()
     try:
-        with open(os.path.join(auto_dir, "CHANGELOG")) as log:
+        with open(os.path.join(where, "CHANGELOG")) as log:
             return log.readline().strip().rstrip(":")
     except OSError:
+        pass
+    proc = subprocess.run(["dpkg-query", "-S", where], capture_output=True, text=True)
+    package = proc.stdout.split(":")[0].strip() if proc.returncode == 0 else ""
+    if not package:
         return None
+    version = subprocess.run(["dpkg-query", "-W", "-f=${Version}", package],
+                             capture_output=True, text=True).stdout.strip()
+    return f"{package} {version}" if version else None
 
 
 def _git_commit() -> Optional[str]:
