@@ -23,8 +23,9 @@
 # Without slurmdbd, finished tasks are recorded by jobcomp/filetxt in
 # $SLURM_STATE_DIR/log/jobcomp.log (`sacct -c`).
 #
-# Exit status: 0 ok, 1 failure, 2 usage, 77 the packages are missing and cannot be
-# installed (not root, or apt-get failed): tests skip on 77 only.
+# Exit status: 0 ok, 1 failure, 2 usage, 77 cannot be set up here: the packages are
+# missing and cannot be installed (apt-get failed, or not root), or `start` is not run
+# as root. Tests skip on 77 only, with the message.
 #
 # Never purge or autoremove libmunge2 or munge afterwards: Debian's SUNDIALS pulls
 # openmpi -> pmix -> munge, and an autoremove takes the SUNDIALS libraries with it.
@@ -106,7 +107,10 @@ install_packages() {
 
 start() {
     install_packages   # exits 77 if they are missing and cannot be installed
-    [ "$(id -u)" = 0 ] || die "start needs root (slurmd runs jobs as their users)"
+    if [ "$(id -u)" != 0 ]; then   # slurmd runs jobs as their users: only root can
+        echo "slurm-single-node: start needs root (slurmd runs jobs as their users)" >&2
+        exit 77
+    fi
     local H pid
     H=$(hostname -s)
     if pid=$(alive "$D/slurmctld.pid" slurmctld); then
