@@ -38,9 +38,11 @@ parallel: runs here, in the foreground, stage after stage: `parallel --joblog
 status: every line of every stage and the assembly with its state: from the task's
   marks (array-task.sh writes DIR/marks/stage<k>/<line>: exit status, start, end, host,
   job id), squeue (-t all), and sacct, or, without accounting, the jobcomp/filetxt log;
-  for parallel, from the job logs.  Every line that did not complete is listed with its
-  stage, array index, line number, state and command.  Exit status 0 when everything
-  completed, 3 while tasks are pending or running, 1 otherwise.
+  for parallel, from the job logs.  Counts per stage, then every line that failed, was
+  cancelled or killed, never ran, or is running, with its stage, array index, line
+  number, state, exit status, reason, job id, log and command (--all: pending and
+  completed lines too; --json: all of it).  Exit status 0 when everything completed,
+  3 while tasks are pending or running, 1 otherwise.
 resume: slurm: resubmits, in the same directory and from the same job files, only the
   array indices that hold lines which did not complete (each such task skips its lines
   marked done), every later stage's incomplete lines, and the assembly; parallel: runs
@@ -663,7 +665,7 @@ def status(manifest):
     return report, code
 
 
-def print_status(manifest, report, code):
+def print_status(manifest, report, code, every=False):
     counts = sum(len(step["entries"]) for step in report if step["stage"] != "assemble")
     print(f"{manifest['dir']}: {manifest['scheduler']}, {manifest['name']}, "
           f"{len(manifest['stages'])} stage(s), {counts} lines"
@@ -680,7 +682,7 @@ def print_status(manifest, report, code):
         print(f"{label}{jobs}: " + ", ".join(f"{n} {state}" for state, n in tally.items())
               + longest)
         for entry in step["entries"]:
-            if entry["state"] == DONE:
+            if not every and entry["state"] in (DONE, "PENDING"):
                 continue
             detail = [f"index {entry['index']}", f"line {entry['line']}"]
             if "exit" in entry:
@@ -772,6 +774,8 @@ def main(argv=None):
     look = commands.add_parser("status", help="the state of every line of a submission")
     look.add_argument("dir")
     look.add_argument("--json", action="store_true", help="the report as JSON")
+    look.add_argument("--all", action="store_true",
+                      help="list pending and completed lines too (default: the others)")
     look.add_argument("--wait", action="store_true",
                       help="poll until no task is pending or running")
     look.add_argument("--timeout", type=float, default=3600, help="seconds for --wait")
@@ -808,7 +812,7 @@ def main(argv=None):
                 print(json.dumps({"dir": manifest["dir"], "code": code, "steps": report},
                                  indent=1))
             else:
-                print_status(manifest, report, code)
+                print_status(manifest, report, code, every=args.all)
             return code
         rc = resume(manifest, options, getattr(args, "dry_run", False))
         if manifest["scheduler"] == "parallel":
