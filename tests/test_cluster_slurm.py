@@ -10,8 +10,10 @@ import json
 import os
 import shutil
 import socket
+import stat
 import subprocess
 import sys
+import tempfile
 import time
 
 import pytest
@@ -42,9 +44,24 @@ def running(pid, name):
         return False
 
 
+def state_directory():
+    """build/test-slurm-<pid>, or a new directory under /var/tmp where a directory above
+    build/ is not searchable by every user (munge's socket needs that)."""
+    build = os.path.join(ROOT, "build")
+    os.makedirs(build, exist_ok=True)
+    path = build
+    while path != os.path.dirname(path):
+        if not os.stat(path).st_mode & stat.S_IXOTH:
+            state = tempfile.mkdtemp(prefix="mlg-test-slurm-", dir="/var/tmp")
+            os.chmod(state, 0o755)
+            return state
+        path = os.path.dirname(path)
+    return os.path.join(build, f"test-slurm-{os.getpid()}")
+
+
 @pytest.fixture(scope="module")
 def slurm():
-    state = os.path.join(ROOT, "build", f"test-slurm-{os.getpid()}")
+    state = state_directory()
     ctld, slurmd = free_ports(2)
     environment = dict(os.environ, SLURM_STATE_DIR=state, SLURMCTLD_PORT=str(ctld),
                        SLURMD_PORT=str(slurmd))

@@ -83,6 +83,16 @@ stop() {
     stop_one "$D/munge/munged.pid" munged
 }
 
+# munged wants its socket reachable by every user: each directory above it searchable
+searchable_by_all() {
+    local dir=$1
+    while [ "$dir" != / ]; do
+        [ "$(stat -c %A "$dir" | cut -c10)" = x ] || [ "$(stat -c %A "$dir" | cut -c10)" = t ] \
+            || { echo "$dir"; return 1; }
+        dir=$(dirname "$dir")
+    done
+}
+
 port_free() {   # true if nothing listens on 127.0.0.1:$1
     ! (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null
 }
@@ -123,6 +133,9 @@ start() {
     done
     mkdir -p "$D"
     D=$(cd "$D" && pwd)
+    local closed
+    closed=$(searchable_by_all "$D") \
+        || die "$closed is not searchable by every user, which munge needs for its socket: set SLURM_STATE_DIR to a directory under searchable ones (e.g. under /var/tmp)"
     install -d -m 0755 "$D/ctld" "$D/slurmd" "$D/log"
     # munge: a private key, socket and pid file. munged wants its directory owned by
     # munge and searchable by every user (clients connect to the socket in it).
