@@ -197,7 +197,7 @@ def test_a_failed_task_cancels_the_rest_and_resume_redoes_only_it(tmp_path, slur
     assert nothing.returncode == 0 and "nothing to resume" in nothing.stdout
 
 
-def test_k_lines_per_task_with_export_none(tmp_path, slurm):
+def test_k_lines_per_task_with_export_none_time_and_memory(tmp_path, slurm):
     work = tmp_path / "work"
     work.mkdir()
     lines = tmp_path / "lines.txt"
@@ -207,7 +207,8 @@ def test_k_lines_per_task_with_export_none(tmp_path, slurm):
     directory = submitted(tool(
         ["submit", "--name", "bundle", "--scheduler", "slurm", "--stage", lines,
          "--per-task", 2, "--env", f"MLG_RUN_ROOT={tmp_path}/runs", "--env",
-         "MLG_AUTO_THREADS=3", "--out", tmp_path / "out", "--", "--export=NONE"],
+         "MLG_AUTO_THREADS=3", "--out", tmp_path / "out", "--", "--export=NONE",
+         "--mem=100M", "--time=0:05:00"],
         work, slurm, env={"NOT_CARRIED": "here"}))
     code, text = wait(directory, slurm)
     assert code == 0, text

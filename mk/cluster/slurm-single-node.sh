@@ -16,6 +16,7 @@
 #   SLURM_STATE_DIR  the state directory (default build/slurm of this repository); its
 #                    parents must be searchable by the munge user (not under a 0700 dir)
 #   NCPUS            CPUs of the node (default: nproc)
+#   MEMORY_MB        its memory for sbatch --mem (default: 90 % of MemTotal)
 #   SLURMCTLD_PORT, SLURMD_PORT   ports (default 6817, 6818; refused if in use)
 #
 # Clients (sbatch, squeue, sacct, mlgshimmy.shared.jobs.submit) find this cluster through
@@ -121,8 +122,10 @@ start() {
         echo "slurm-single-node: start needs root (slurmd runs jobs as their users)" >&2
         exit 77
     fi
-    local H pid
+    local H pid MEMORY
     H=$(hostname -s)
+    # without RealMemory the node has 1 MB and every sbatch --mem is refused; 90 % of it
+    MEMORY=${MEMORY_MB:-$(awk '/^MemTotal:/ { print int($2 / 1024 * 0.9) }' /proc/meminfo)}
     if pid=$(alive "$D/slurmctld.pid" slurmctld); then
         echo "slurm-single-node: already running in $D (slurmctld $pid); stop it first" >&2
         echo "export SLURM_CONF=$D/slurm.conf"
@@ -181,7 +184,7 @@ SlurmctldPidFile=$D/slurmctld.pid
 SlurmdPidFile=$D/slurmd.pid
 SlurmctldLogFile=$D/log/slurmctld.log
 SlurmdLogFile=$D/log/slurmd.log
-NodeName=$H NodeAddr=127.0.0.1 CPUs=$NCPUS State=UNKNOWN
+NodeName=$H NodeAddr=127.0.0.1 CPUs=$NCPUS RealMemory=$MEMORY State=UNKNOWN
 PartitionName=debug Nodes=$H Default=YES MaxTime=INFINITE State=UP
 CONF
     export SLURM_CONF=$D/slurm.conf
