@@ -112,3 +112,7 @@ bench: setup $(BENCH_DEPS) $(BENCH_PROGRAMS)
 
 clean:
 	rm -rf build
+
+# Cluster submissions (docs/cluster.md): make submit-<fig>, submit-sweep, submit-atlas;
+# read last, after the figures and grids it submits are defined.
+-include mk/cluster/submit.mk
