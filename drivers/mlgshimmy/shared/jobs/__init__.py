@@ -7,11 +7,11 @@ drivers' command line and job lines (cli), and the one atomic writer
     jobs.run_figure(fig, compute, plot, parts=...); jobs.Needs([...], f)
 """
 from mlgshimmy.shared.jobs.atomic import write_atomic, write_json, write_text
-from mlgshimmy.shared.jobs.cache import (Branch, MissingResult, loaded, path, provenance, read,
-                                         stored, write)
+from mlgshimmy.shared.jobs.cache import (BadResult, Branch, MissingResult, loaded, path,
+                                         provenance, read, stored, write)
 from mlgshimmy.shared.jobs.cli import job_line, run_figure, variant_option
 from mlgshimmy.shared.jobs.parts import Needs, Parts
 
-__all__ = ["Branch", "MissingResult", "Needs", "Parts", "job_line", "loaded", "path",
+__all__ = ["BadResult", "Branch", "MissingResult", "Needs", "Parts", "job_line", "loaded", "path",
            "provenance", "read", "run_figure", "stored", "variant_option", "write",
            "write_atomic", "write_json", "write_text"]

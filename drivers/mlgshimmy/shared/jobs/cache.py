@@ -9,7 +9,9 @@ the reproduction numbers read it; no AUTO import, so a redraw needs none.
     result = cache.read("fig10")      # raises MissingResult naming `make fig10`
 """
 import datetime
+import hashlib
 import json
+import math
 import os
 import subprocess
 from typing import Any, Callable, Optional
@@ -83,14 +85,48 @@ def _plain(value: Any) -> Any:
     return value
 
 
+class BadResult(RuntimeError):
+    """A cached result that fails its checks (cut, edited, or another's)."""
+
+
+def _not_a_number(value: Any, where: str = "data") -> Optional[str]:
+    """Where in value a NaN sits (None if nowhere).  Infinity is allowed: the
+    drivers store it for "none up to the end of the range" (a window point
+    that no load reaches, e.g.)."""
+    if isinstance(value, float):
+        return where if math.isnan(value) else None
+    if isinstance(value, dict):
+        items = value.items()
+    elif isinstance(value, list):
+        items = enumerate(value)
+    else:
+        return None
+    for key, item in items:
+        found = _not_a_number(item, f"{where}[{key!r}]")
+        if found:
+            return found
+    return None
+
+
+def checksum(data: Any) -> str:
+    """sha256 of the data as stored (canonical JSON: sorted keys)."""
+    return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()
+
+
 def write(figure: str, data: Any, parameter_set: str = "figures",
           part: Optional[str] = None) -> str:
-    """Store data (dicts, lists, arrays, numbers, strings; NaN and inf as
-    Python's json writes and reads them) with its provenance, as the
-    figure's result or one part of it, atomically; returns the path."""
+    """Store data (dicts, lists, arrays, numbers, strings, inf; a NaN is
+    refused, naming where it is) with its provenance, the figure's and the
+    part's names and a checksum, as the figure's result or one part of it,
+    atomically; returns the path."""
+    plain = _plain(data)
+    nan = _not_a_number(plain)
+    if nan:
+        raise BadResult(f"{figure}: {'part ' + part if part else 'result'} not cached: "
+                        f"{nan} is NaN")
     target = write_json(path(figure, part),
                         {"figure": figure, "part": part, "provenance": provenance(parameter_set),
-                         "data": _plain(data)})
+                         "sha256": checksum(plain), "data": plain})
     print(f"{figure}: {'part ' + part if part else 'result'} cached in "
           f"{os.path.relpath(target, paths.ROOT)}", flush=True)
     return target
@@ -122,13 +158,27 @@ def compute_once(figure: str, compute: Callable[[], Any], parameter_set: str = "
 
 
 def read(figure: str, part: Optional[str] = None) -> Any:
-    """The data of a figure's cached result (or of one part of it)."""
+    """The data of a figure's cached result (or of one part of it), checked:
+    whole JSON, the figure's and the part's names, the checksum.  A file
+    that fails raises BadResult naming it and what to run."""
+    where = path(figure, part)
+    remedy = f"remove it and run `make {figure}`"
     try:
-        with open(path(figure, part)) as source:
-            return json.load(source)["data"]
+        with open(where) as source:
+            stored = json.load(source)
     except FileNotFoundError:
-        raise MissingResult(f"{figure}: no cached result {path(figure, part)} "
+        raise MissingResult(f"{figure}: no cached result {where} "
                             f"(run `make {figure}`)") from None
+    except (ValueError, UnicodeDecodeError) as exc:
+        raise BadResult(f"{figure}: {where} is not a whole result ({exc}); {remedy}") from None
+    if not isinstance(stored, dict) or "data" not in stored:
+        raise BadResult(f"{figure}: {where} holds no result; {remedy}")
+    if stored.get("figure") != figure or stored.get("part") != part:
+        raise BadResult(f"{figure}: {where} is the cached {stored.get('figure')!r} part "
+                        f"{stored.get('part')!r}, not {figure!r} part {part!r}; {remedy}")
+    if stored.get("sha256") != checksum(stored["data"]):
+        raise BadResult(f"{figure}: {where} fails its checksum (edited or damaged); {remedy}")
+    return stored["data"]
 
 
 class Branch:

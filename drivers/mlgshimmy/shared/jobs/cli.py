@@ -94,3 +94,6 @@ def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[C
     except (RuntimeError, ValueError) as exc:
         message = str(exc)   # a MissingResult already names its figure
         sys.exit(message if message.startswith(f"{figure}:") else f"{figure}: {message}")
+    except OSError as exc:   # a full disk, a directory that cannot be written
+        sys.exit(f"{figure}: {exc.strerror}: {exc.filename or ''} (nothing half-written is "
+                 "left: every result is written beside and renamed)")
