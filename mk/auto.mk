@@ -91,11 +91,7 @@ AUTO_C_ONLY = $(filter-out $(AUTO_FORTRAN_ONLY),$(1))
 # AUTO_DIR changes, so that switching AUTO recompiles and relinks them (an
 # installed AUTO's lib/*.o can be older than an executable built with another).
 AUTO_USED := build/auto-link/auto-dir
-$(AUTO_USED): FORCE
-	@mkdir -p $(@D)
-	@if [ "$$(cat $@ 2>/dev/null)" != "$(AUTO_DIR)" ]; then echo "$(AUTO_DIR)" > $@; fi
-.PHONY: FORCE
-FORCE:
+$(call stamp,$(AUTO_USED),$(AUTO_DIR))
 
 AUTO_QUIET_FPE := build/auto-link/fpe_summary.o
 AUTO_QUIET_LDFLAGS := -Wl,--wrap=_gfortran_set_options $(AUTO_QUIET_FPE)

@@ -75,3 +75,14 @@ def test_the_plot_step_says_one_line(tmp_path):
     assert proc.returncode == 1
     assert proc.stderr.strip().splitlines() == [
         f"fig07: {path} fails its checksum (edited or damaged); remove it and run `make fig07`"]
+
+
+def test_the_provenance_names_what_the_result_was_computed_with(root, monkeypatch):
+    monkeypatch.setenv("MLG_AUTO_THREADS", "3")
+    jobs.write("figZ", {"x": 2})
+    stored = json.loads(result(root).read_text())["provenance"]
+    assert stored["auto_threads"] == "3" and stored["auto_dir"]
+    assert stored["parameter_set"] == "figures" and stored["git_commit"]
+    model = os.path.join(jobs.cache.paths.BUILD, "models", "mlg.exe")
+    if os.path.exists(model):
+        assert len(stored["model_sha256"]) == 64

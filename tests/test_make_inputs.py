@@ -131,3 +131,13 @@ def test_make_deletes_a_target_whose_recipe_failed():
     proc = subprocess.run(["make", "-pn", "-f", os.path.join(ROOT, "Makefile"), "help"],
                           cwd=ROOT, capture_output=True, text=True)
     assert "\n.DELETE_ON_ERROR:" in proc.stdout
+
+
+def test_a_result_depends_on_the_thread_count(clone):
+    make(clone, "-n", *OLD, "fig07")
+    os.makedirs(clone / "build" / "fig07", exist_ok=True)
+    (clone / "build" / "fig07" / "result.json").write_text("{}")
+    assert compute_lines(make(clone, "-n", *OLD, "fig07")) == []
+    assert compute_lines(make(clone, "-n", *OLD, "fig07", "AUTO_THREADS=2")) == ["fig07"]
+    (clone / "build" / "fig07" / "result.json").write_text("{}")
+    assert compute_lines(make(clone, "-n", *OLD, "fig07", "AUTO_THREADS=2")) == []

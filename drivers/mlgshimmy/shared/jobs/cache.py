@@ -64,9 +64,23 @@ def _git_commit() -> Optional[str]:
     return (head + ("+dirty" if dirty else "")) or None
 
 
+def _sha256(path: str) -> Optional[str]:
+    try:
+        with open(path, "rb") as f:
+            return hashlib.sha256(f.read()).hexdigest()
+    except OSError:
+        return None
+
+
 def provenance(parameter_set: str) -> dict:
+    """What a result was computed with: the parameter set, the commit, the
+    AUTO (its tree and version), the model executable as linked (sha256)
+    and the AUTO runs' thread count."""
+    from mlgshimmy.shared import autoglue   # AUTO itself is not imported
     return {"parameter_set": parameter_set, "git_commit": _git_commit(),
-            "auto_version": _auto_version(),
+            "auto_version": _auto_version(), "auto_dir": autoglue.auto_dir(),
+            "auto_threads": os.environ.get("MLG_AUTO_THREADS", "1"),
+            "model_sha256": _sha256(os.path.join(paths.BUILD, "models", "mlg.exe")),
             "written": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")}
 
 
