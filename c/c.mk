@@ -17,7 +17,7 @@ $(MLG_OBJECTS): build/obj/%.o: c/%.c $(MLG_HEADERS)
 # 1.7 times faster), chosen at run time on CPUs that have it (jacobian_dispatch.c);
 # -ffp-contract=off (as -std=c11 implies): no fused multiply-add, so that both
 # builds round alike.  MLG_AVX2=no builds the generic one only.
-MLG_AVX2 ?= $(if $(filter x86_64-%,$(shell $(CC) -dumpmachine)),yes,no)
+MLG_AVX2 ?= $(if $(filter x86_64-%,$(shell $(call shell_quote,$(CC)) -dumpmachine)),yes,no)
 ifeq ($(MLG_AVX2),yes)
 MLG_JACOBIAN_AVX2 := build/obj/vector_field_jacobian_avx2.o
 $(MLG_JACOBIAN_AVX2): c/vector_field_jacobian.c $(MLG_HEADERS)

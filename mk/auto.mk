@@ -61,9 +61,11 @@ endif
 export AUTO_DIR
 
 # The compiler settings AUTO's run() reads from $(AUTO_DIR)/cmds/cmds.make.
-# Recursively expanded: only evaluated in recipes, after AUTO is built.
-auto_make_var = $(subst $$(AUTO_DIR),$(AUTO_DIR),$(shell \
-    sed -n 's/^$(1)[[:space:]]*=[[:space:]]*//p' $(AUTO_DIR)/cmds/cmds.make | head -n1))
+# Recursively expanded: only evaluated in recipes, after AUTO is built (a dry
+# run before it is built prints the commands without AUTO's settings).
+auto_make_var = $(if $(wildcard $(AUTO_DIR)/cmds/cmds.make),$(subst $$(AUTO_DIR),$(AUTO_DIR),\
+    $(shell sed -n 's/^$(1)[[:space:]]*=[[:space:]]*//p' \
+        $(call shell_quote,$(AUTO_DIR)/cmds/cmds.make) | head -n1)))
 AUTO_CC = $(call auto_make_var,CC)
 AUTO_CFLAGS = $(call auto_make_var,CFLAGS)
 AUTO_FC = $(call auto_make_var,FC)

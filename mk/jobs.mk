@@ -14,7 +14,7 @@
 # does not see exported variables: PYTHONPATH is passed explicitly.)
 define job_grid
 ifneq ($$(filter $(1),$$(MAKECMDGOALS)),)
-$(1)_RESULTS := $$(shell PYTHONPATH=$$(call shell_quote,$$(PYTHONPATH)) $$(PYTHON) \
+$(1)_RESULTS := $$(shell PYTHONPATH=$$(call shell_quote,$$(PYTHONPATH)) $$(call shell_quote,$$(PYTHON)) \
     -m mlgshimmy.studies.$(1) targets $(2) || echo $(1)_GRID_REJECTED)
 ifneq ($$(filter $(1)_GRID_REJECTED,$$($(1)_RESULTS)),)
 $$(error $(1): the grid is rejected (reason above))

@@ -12,7 +12,7 @@ shell_quote = '$(subst ','\'',$(1))'
 # text changes (so its time says when), while make reads its makefiles: no
 # shell sees the text, and `make -n` is exact about what depends on it.
 stamp = $(if $(filter-out $(strip $(2)),$(strip $(file < $(1))))$(if $(wildcard $(1)),,x),\
-    $(shell mkdir -p $(dir $(1)))$(file > $(1),$(strip $(2))))
+    $(shell mkdir -p $(call shell_quote,$(dir $(1))))$(file > $(1),$(strip $(2))))
 
 # `make -n` runs recipe lines that call $(MAKE); those check DRY_RUN so that
 # a dry run prints what it would do instead of doing it.
