@@ -454,6 +454,9 @@ def compare_dirs(reference_dir, run_dir, runs=None, rtol=None, atol=None, raw=Fa
     reference.  None tolerances come
     from tolerances(); raw compares every labelled point as stored (no
     labels.json rules)."""
+    if not os.path.isdir(reference_dir):
+        raise DiagramFileError(f"{reference_dir}: no such reference directory "
+                               "(`make refs-<fig>` creates it)")
     if not os.path.isdir(run_dir):
         raise DiagramFileError(f"{run_dir}: no such run directory"
                                + (" (a file)" if os.path.exists(run_dir) else ""))
