@@ -94,14 +94,14 @@ test: setup $(TEST_DEPS) $(TEST_PROGRAMS)
 	$(PYTHON) tests/run_tests.py --timeout $(TEST_TIMEOUT) $(TEST_PROGRAMS)
 
 figures: setup $(FIGURES)
-	@if [ -z "$(strip $(FIGURES))" ]; then \
+	@set -e; if [ -z "$(strip $(FIGURES))" ]; then \
 	    echo "figures: no figures are registered yet (FIGURES is empty)"; \
 	else \
 	    echo "figures: $(strip $(FIGURES)) -> build/figures/"; \
 	fi
 
 bench: setup $(BENCH_DEPS) $(BENCH_PROGRAMS)
-	@if [ -z "$(strip $(BENCH_PROGRAMS))" ]; then \
+	@set -e; if [ -z "$(strip $(BENCH_PROGRAMS))" ]; then \
 	    echo "bench: no benchmark programs are registered yet (BENCH_PROGRAMS is empty)"; \
 	fi
 	@echo "bench: the figure suite (-j1 against -j2, about 25 min on 2 idle cores) is \`make bench-figures\`"

@@ -9,7 +9,7 @@ override AUTO_DIR := $(abspath $(AUTO_DIR))
 AUTO_STAMP :=
 
 auto:
-	@for f in python/auto/__init__.py cmds/cmds.make include/auto_f2c.h lib/libauto_c.a; do \
+	@set -e; for f in python/auto/__init__.py cmds/cmds.make include/auto_f2c.h lib/libauto_c.a; do \
 	    if [ ! -f "$(AUTO_DIR)/$$f" ]; then \
 	        echo "error: AUTO_DIR=$(AUTO_DIR) is not a built AUTO-07p tree (no $$f)" >&2; \
 	        echo "error: unset AUTO_DIR to build AUTO-07p under build/auto/" >&2; \
