@@ -32,6 +32,17 @@
 # (AUTO-07p is ready) and $(call auto_equations,...) from mk/auto.mk.
 
 SHELL := /bin/bash
+
+# Paths with spaces are not supported: make splits targets, prerequisites and
+# $(abspath ...) on them (a clone under "My Files/" gave ~15 "overriding
+# recipe" warnings and "No rule to make target ..."). Refused here, before any
+# rule is read, naming the path.
+ifneq ($(words x$(CURDIR)x),1)
+$(error the tree's path '$(CURDIR)' contains a space: make cannot handle paths with spaces; clone or move it to a path without spaces)
+endif
+refuse_space = $(if $(filter-out 1,$(words x$($(1))x)),$(error $(1)='$($(1))' contains a space: make cannot handle paths with spaces; give a path without spaces))
+$(foreach v,MLG_RUN_ROOT AUTO_DIR AUTO_SRC REGRESS_ROOT REFS_ROOT,$(call refuse_space,$(v)))
+
 PYTHON ?= /usr/bin/python3
 AUTO_THREADS ?= 1
 ifeq ($(shell [[ "$(AUTO_THREADS)" =~ ^[1-9][0-9]*$$ ]] && echo ok),)
