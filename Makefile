@@ -34,6 +34,17 @@
 # (AUTO-07p is ready) and $(call auto_equations,...) from mk/auto.mk.
 
 SHELL := /bin/bash
+
+# Paths with spaces are not supported: make splits targets, prerequisites and
+# $(abspath ...) on them (a clone under "My Files/" gave ~15 "overriding
+# recipe" warnings and "No rule to make target ..."). Refused here, before any
+# rule is read, naming the path.
+ifneq ($(words x$(CURDIR)x),1)
+$(error the tree's path '$(CURDIR)' contains a space: make cannot handle paths with spaces; clone or move it to a path without spaces)
+endif
+refuse_space = $(if $(filter-out 1,$(words x$($(1))x)),$(error $(1)='$($(1))' contains a space: make cannot handle paths with spaces; give a path without spaces))
+$(foreach v,MLG_RUN_ROOT AUTO_DIR AUTO_SRC REGRESS_ROOT REFS_ROOT,$(call refuse_space,$(v)))
+
 PYTHON ?= /usr/bin/python3
 # a recipe that fails leaves no target behind that looks done
 .DELETE_ON_ERROR:
@@ -101,14 +112,14 @@ test: setup $(TEST_DEPS)
 	$(PYTHON) -m pytest $(PYTEST_ARGS)
 
 figures: setup $(FIGURES)
-	@if [ -z "$(strip $(FIGURES))" ]; then \
+	@set -e; if [ -z "$(strip $(FIGURES))" ]; then \
 	    echo "figures: no figures are registered yet (FIGURES is empty)"; \
 	else \
 	    echo "figures: $(strip $(FIGURES)) -> build/figures/"; \
 	fi
 
 bench: setup $(BENCH_DEPS) $(BENCH_PROGRAMS)
-	@if [ -z "$(strip $(BENCH_PROGRAMS))" ]; then \
+	@set -e; if [ -z "$(strip $(BENCH_PROGRAMS))" ]; then \
 	    echo "bench: no benchmark programs are registered yet (BENCH_PROGRAMS is empty)"; \
 	fi
 	@echo "bench: the figure suite (-j1 against -j2, about 25 min on 2 idle cores) is \`make bench-figures\`"

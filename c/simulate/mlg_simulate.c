@@ -9,6 +9,14 @@
  *
  * Any evaluation outside the model's domain (nonzero mlg_status) stops the
  * run with an error message and exit status 1.
+ *
+ * Budgets: the summary keeps every sample of the last second in memory
+ * (11 doubles, 88 bytes, each) and --out writes at most 280 bytes a sample.
+ * A run whose buffer would exceed the memory budget (default 1024 MB,
+ * --max-memory MB or MLG_SIMULATE_MAX_MEMORY_MB) or whose CSV would exceed
+ * the output budget (default 1024 MB, --max-output MB or
+ * MLG_SIMULATE_MAX_OUTPUT_MB) is refused before it starts, exit status 2,
+ * naming the options and the budget (1 MB = 2^20 bytes).
  */
 #define _POSIX_C_SOURCE 199309L
 #include <errno.h>
@@ -33,6 +41,7 @@ static const char *const STATE_NAMES[MLG_NX] = {
 typedef struct {
     mlg_params p;
     double t_end, dt_out, rtol, atol, psi0, delta0;
+    double max_memory_mb, max_output_mb;    /* budgets (file comment) */
     int lmm;                    /* CV_BDF or CV_ADAMS */
     const char *out;
 } options;
@@ -70,7 +79,12 @@ static void usage(FILE *stream)
         "  --psi0 X              perturbation of psi added to the equilibrium [rad]\n"
         "                        (default 1e-3)\n"
         "  --delta0 X            perturbation of delta [rad] (default 0)\n"
-        "  --out FILE            CSV output (default: none)\n");
+        "  --out FILE            CSV output (default: none)\n"
+        "  --max-memory MB       memory budget of the last second's samples (default\n"
+        "                        1024, or MLG_SIMULATE_MAX_MEMORY_MB): a run needing more\n"
+        "                        (88 bytes a sample) is refused before it starts\n"
+        "  --max-output MB       size budget of the --out CSV (default 1024, or\n"
+        "                        MLG_SIMULATE_MAX_OUTPUT_MB; at most 280 bytes a sample)\n");
 }
 
 static double parse_number(const char *option, const char *text)
@@ -117,10 +131,50 @@ static void refuse(const char *fmt, double a, double b)
 
 enum { MAX_SAMPLES = 100000000 };
 
+/* Budgets (file comment): defaults in MB, and the bytes one sample takes in
+ * the summary's buffer (tail) and at most in the CSV (write_row: "%.12g"
+ * time, 19 characters at most, then 10 ",%.17e", 26 at most, and '\n'). */
+#define DEFAULT_MAX_MEMORY_MB 1024.0
+#define DEFAULT_MAX_OUTPUT_MB 1024.0
+#define TAIL_SAMPLE_BYTES ((double)((1 + MLG_NX) * sizeof(double)))
+#define CSV_SAMPLE_BYTES (19.0 + MLG_NX * 26.0 + 1.0)
+#define MB (1024.0 * 1024.0)
+
+/* Output samples after t = 0 (main's loop), and an upper bound on those the
+ * summary keeps: the last second's, with the t = 0 sample when t_end <= 1. */
+static double output_samples(double t_end, double dt_out)
+{
+    return ceil(t_end / dt_out - 1e-9);
+}
+
+static double tail_samples(double t_end, double dt_out)
+{
+    return fmin(output_samples(t_end, dt_out), floor(fmin(1.0, t_end) / dt_out) + 2.0) + 1.0;
+}
+
+/* A budget in MB: > 0 and finite, else exit status 2 naming where it came from. */
+static double parse_budget(const char *what, const char *text)
+{
+    double value = parse_number(what, text);
+    if (!(value > 0.0 && isfinite(value))) {
+        fprintf(stderr, "mlg_simulate: %s %s must be > 0 and finite (MB)\n", what, text);
+        exit(2);
+    }
+    return value;
+}
+
+static double budget_from_env(const char *name, double fallback)
+{
+    const char *text = getenv(name);
+    return text != NULL && *text != '\0' ? parse_budget(name, text) : fallback;
+}
+
 static options parse_options(int argc, char **argv)
 {
     options o = {.t_end = 15.0, .dt_out = 1e-3, .rtol = 1e-8, .atol = 1e-10,
                  .psi0 = 1e-3, .delta0 = 0.0, .lmm = CV_BDF, .out = NULL};
+    o.max_memory_mb = budget_from_env("MLG_SIMULATE_MAX_MEMORY_MB", DEFAULT_MAX_MEMORY_MB);
+    o.max_output_mb = budget_from_env("MLG_SIMULATE_MAX_OUTPUT_MB", DEFAULT_MAX_OUTPUT_MB);
     o.p = mlg_params_figures();
     o.p.V = 300.0;
     o.p.Fstar = 0.2;
@@ -183,6 +237,8 @@ static options parse_options(int argc, char **argv)
         else if (strcmp(opt, "--psi0") == 0) o.psi0 = parse_number(opt, arg);
         else if (strcmp(opt, "--delta0") == 0) o.delta0 = parse_number(opt, arg);
         else if (strcmp(opt, "--out") == 0) o.out = arg;
+        else if (strcmp(opt, "--max-memory") == 0) o.max_memory_mb = parse_budget(opt, arg);
+        else if (strcmp(opt, "--max-output") == 0) o.max_output_mb = parse_budget(opt, arg);
         else {
             fprintf(stderr, "mlg_simulate: unknown option %s\n", opt);
             usage(stderr);
@@ -210,6 +266,26 @@ static options parse_options(int argc, char **argv)
     if (!(o.atol > 0.0 && isfinite(o.atol))) refuse("--atol %g must be > 0 and finite", o.atol, 0);
     if (!isfinite(o.psi0)) refuse("--psi0 %g must be finite", o.psi0, 0);
     if (!isfinite(o.delta0)) refuse("--delta0 %g must be finite", o.delta0, 0);
+
+    double kept = tail_samples(o.t_end, o.dt_out);
+    if (kept * TAIL_SAMPLE_BYTES > o.max_memory_mb * MB) {
+        fprintf(stderr, "mlg_simulate: --t-end %g with --dt-out %g keeps %.0f samples of the run's "
+                        "last second in memory (%.0f MB for the settled-oscillation summary), "
+                        "over the memory budget of %g MB: give a larger --dt-out, or raise "
+                        "the budget with --max-memory MB (or MLG_SIMULATE_MAX_MEMORY_MB)\n",
+                o.t_end, o.dt_out, kept, ceil(kept * TAIL_SAMPLE_BYTES / MB), o.max_memory_mb);
+        exit(2);
+    }
+    double rows = output_samples(o.t_end, o.dt_out) + 1.0;
+    if (o.out != NULL && rows * CSV_SAMPLE_BYTES > o.max_output_mb * MB) {
+        fprintf(stderr, "mlg_simulate: --out %s with --t-end %g and --dt-out %g writes %.0f "
+                        "samples, up to %.0f MB of CSV, over the output budget of %g MB: give "
+                        "a larger --dt-out or a shorter --t-end, or raise the budget with "
+                        "--max-output MB (or MLG_SIMULATE_MAX_OUTPUT_MB)\n",
+                o.out, o.t_end, o.dt_out, rows, ceil(rows * CSV_SAMPLE_BYTES / MB),
+                o.max_output_mb);
+        exit(2);
+    }
     return o;
 }
 
@@ -260,6 +336,19 @@ typedef struct {
     size_t n, cap;
     double *t, *u;              /* u[MLG_NX * k + i] */
 } tail;
+
+/* Room for n samples up front (the budget checked for it in parse_options),
+ * so that the buffer is allocated once, not doubled. */
+static void tail_reserve(tail *s, size_t n)
+{
+    s->t = malloc(n * sizeof *s->t);
+    s->u = malloc(n * MLG_NX * sizeof *s->u);
+    if (s->t == NULL || s->u == NULL) {
+        fprintf(stderr, "mlg_simulate: out of memory (%zu samples of the last second)\n", n);
+        exit(1);
+    }
+    s->cap = n;
+}
 
 static void tail_add(tail *s, double t, const double *u)
 {
@@ -385,12 +474,13 @@ int main(int argc, char **argv)
     check_flag(CVodeSetStopTime(cvode, o.t_end), "CVodeSetStopTime");
 
     tail settled = {0};
+    tail_reserve(&settled, (size_t)tail_samples(o.t_end, o.dt_out));
     double t_tail = fmax(0.0, o.t_end - 1.0);
     if (t_tail == 0.0)
         tail_add(&settled, 0.0, u0);
 
     double start = seconds_now();
-    long n_out = (long)ceil(o.t_end / o.dt_out - 1e-9);
+    long n_out = (long)output_samples(o.t_end, o.dt_out);
     for (long k = 1; k <= n_out; k++) {
         double t_want = fmin(k * o.dt_out, o.t_end), t;
         int flag = CVode(cvode, t_want, y, &t, CV_NORMAL);

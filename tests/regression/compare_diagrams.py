@@ -14,7 +14,18 @@ reference (of those the set's runs.json selects, if it has one):
 - the same number of branches, with the same branch numbers and columns;
 - per branch, the same sequence of special-point types (EP, HB, LP, UZ, ...);
 - at every labelled point, every column agrees: |ours - ref| <= rtol*|ref| + atol
-  (where the sequences differ: at the points before the first changed type).
+  (where the sequences differ: at the points before the first changed type);
+- per branch, the same stability: AUTO marks each point stable or unstable by
+  the sign of PT (negative = stable); the branch's stable and unstable
+  segments come in the same order, and each change of stability lies at the
+  same place: the first column (the continued parameter) at the first point
+  of the new segment agrees within the local step (the larger of the two
+  steps into that point, ours and the reference's) plus rtol*|ref| + atol,
+  since AUTO locates a change between two computed points only to within
+  the step.  A change next to a labelled point that labels.json leaves out
+  (or between the first and last such point of one rule on the branch) is
+  not compared: the segment goes on as before it;
+- no value anywhere (labelled or not, either side) is NaN or infinite.
 Point counts, step sizes and timings are never compared.
 
 A column <x>_mean (psi_mean, ...) vanishes by symmetry on a symmetric gear:
@@ -29,7 +40,9 @@ position is numerically arbitrary, with the reason; they are left out of
 both sides:
     {"ignore": [{"run": "hopf_down", "type": "LP", "reason": "..."},
                 {"run": "po*", "type": "TR", "from": {"V": 560}, "reason": "..."}]}
-("run" is a shell pattern; "from"/"to" bound a column's value).
+("run" is a shell pattern; "from"/"to" bound a column's value; the keys
+run, type and reason are required, type is an AUTO point type, and a column
+that a run's branch does not have is an error).
 
 The report opens with every special point (HB, LP, BP, PD, TR, ...):
 reference -> ours in its first column (the continued parameter), the
@@ -37,13 +50,17 @@ relative change, and the column that changed most; then the table of values
 outside the tolerance (run, branch, label, type, column, reference, ours,
 relative error). --figure FIG compares tests/reference/FIG with RUN_DIR
 (default build/regress/FIG, where `make regress` publishes its runs).
-Exit status: 0 agree, 1 differences (a run of the reference the figure no
-longer writes is one), 2 a reference file missing or unreadable, or one of
-ours unreadable (named).
+Exit status: 0 agree; 1 differences (a run of the reference that the figure
+no longer writes is one); 2 nothing to compare, named on stderr: a reference
+file or RUN_DIR missing or unreadable, one of ours unreadable, no AUTO-07p at
+AUTO_DIR (auto.parseB reads the b-files), or a usage error: a malformed
+labels.json or tolerances.json (a rule naming a column the run does not
+have, an unknown key, a negative tolerance).
 """
 import argparse
 import fnmatch
 import json
+import math
 import os
 import sys
 
@@ -67,12 +84,28 @@ class DiagramFileError(Exception):
     """A b-file or reference directory that is missing or cannot be read."""
 
 
+class SettingsError(DiagramFileError):
+    """A malformed labels.json or tolerances.json (a usage error; names the
+    file and what is wrong)."""
+
+
+def parse_b():
+    """AUTO's auto.parseB, through the drivers' one way to AUTO
+    (autoglue.init: AUTO_DIR, default build/auto/07p) on first use;
+    DiagramFileError if there is no AUTO-07p there."""
+    try:
+        return autoglue.init().parseB
+    except autoglue.AutoMissing as exc:
+        raise DiagramFileError(f"{exc} (its auto.parseB reads the b-files)") from None
+
+
 def read_branches(path):
     """The branches of one b-file, fully parsed by auto.parseB."""
+    parser = parse_b()
     if not os.path.isfile(path):
         raise DiagramFileError(f"{path}: no such file")
     try:
-        branches = autoglue.init().parseB.parseBR(path)
+        branches = parser.parseBR(path)
         for branch in branches:  # AUTO parses lazily: force it here
             branch.coordarray  # noqa: B018
     except Exception as exc:  # any parser failure means an unreadable file
@@ -97,16 +130,38 @@ def sequence(points):
     return " ".join(f"{ty}{label}" for _, label, ty in points)
 
 
+def segments(branch):
+    """[(index of its first point, stable)] of a branch's stability segments,
+    from AUTO's PT signs (parseB's stability(): the signed number of each
+    segment's last point, negative = stable)."""
+    out, start = [], 0
+    for end in branch.stability():
+        out.append((start, end < 0))
+        start = abs(end)
+    return out
+
+
+def stability_text(branch, segs, limit=8):
+    """'U from V = 0 (point 1), S from V = 2 (point 2), ...'."""
+    name, x = branch.coordnames[0], branch.coordarray[0]
+    parts = [f"{'S' if stable else 'U'} from {name} = {x[i]:.6g} (point {i + 1})"
+             for i, stable in segs[:limit]]
+    if len(segs) > limit:
+        parts.append(f"... {len(segs) - limit} more")
+    return ", ".join(parts)
+
+
 class Comparison:
     """Differences between two diagrams: structural problems (text), value
     rows (run, branch, label, type, column, reference, ours, rel. error) and
     the special points compared (run, label, type, column, reference, ours,
     rel. change, (column changed most, its rel. change))."""
 
-    def __init__(self, rtol=RTOL, atol=ATOL, ignore=()):
+    def __init__(self, rtol=RTOL, atol=ATOL, ignore=(), rules_file=LABEL_FILE):
         self.rtol, self.atol, self.ignore = rtol, atol, list(ignore)
+        self.rules_file = rules_file
         self.problems, self.rows, self.special = [], [], []
-        self.points = self.values = 0
+        self.points = self.values = self.changes = 0
 
     def ok(self):
         return not self.problems and not self.rows
@@ -123,16 +178,99 @@ class Comparison:
         for number, (a, b) in enumerate(zip(ref, ours), 1):
             self.branches(f"{run} branch {number}", run, a, b)
 
-    def ignored(self, run, branch, index, ty):
-        """True if a labels.json rule leaves this labelled point out."""
-        for rule in self.ignore:
+    def ignoring_rule(self, run, branch, index, ty):
+        """The number of the labels.json rule that leaves this labelled
+        point out, or None."""
+        for number, rule in enumerate(self.ignore, 1):
             if not fnmatch.fnmatchcase(run, rule["run"]) or rule["type"] != ty:
                 continue
             values = dict(zip(branch.coordnames, branch.coordarray[:, index]))
             if all(values[c] >= v for c, v in rule.get("from", {}).items()) and \
                     all(values[c] <= v for c, v in rule.get("to", {}).items()):
-                return True
-        return False
+                return number
+        return None
+
+    def ignored(self, run, branch, index, ty):
+        """True if a labels.json rule leaves this labelled point out."""
+        return self.ignoring_rule(run, branch, index, ty) is not None
+
+    def check_rules(self, where, run, branch):
+        """SettingsError if a rule for this run bounds a column the branch
+        does not have (it would never match, or fail)."""
+        for number, rule in enumerate(self.ignore, 1):
+            if not fnmatch.fnmatchcase(run, rule["run"]):
+                continue
+            for bound in ("from", "to"):
+                for column in rule.get(bound, {}):
+                    if column not in branch.coordnames:
+                        raise SettingsError(
+                            f"{self.rules_file}: rule {number} (run {rule['run']!r}, type "
+                            f"{rule['type']}) bounds column {column!r} in {bound!r}, which "
+                            f"{where} does not have (its columns: "
+                            f"{', '.join(branch.coordnames)})")
+
+    def stability(self, run, branch):
+        """The branch's stability segments (segments()) without the changes
+        next to a labelled point that labels.json leaves out, or between the
+        first and the last such point of one rule: there the segment goes on
+        as before the change."""
+        spans = {}
+        for index, _, ty in labelled_points(branch):
+            number = self.ignoring_rule(run, branch, index, ty)
+            if number is not None:
+                first, last = spans.get(number, (index, index))
+                spans[number] = (min(first, index), max(last, index))
+        kept = []
+        for start, stable in segments(branch):
+            if kept and any(start >= first and start - 1 <= last
+                            for first, last in spans.values()):
+                continue  # a change between points start - 1 and start, left out
+            if not kept or stable != kept[-1][1]:
+                kept.append((start, stable))
+        return kept
+
+    def compare_stability(self, where, run, ref, ours, floor):
+        """Segments in the same order, each change within the local step
+        (module docstring); a difference names where it is."""
+        ref_segs, our_segs = self.stability(run, ref), self.stability(run, ours)
+        name, x_ref, x_ours = ref.coordnames[0], ref.coordarray[0], ours.coordarray[0]
+        word = {True: "stable", False: "unstable", None: "no further segment"}
+        for k in range(max(len(ref_segs), len(our_segs))):
+            a = ref_segs[k] if k < len(ref_segs) else None
+            b = our_segs[k] if k < len(our_segs) else None
+            if a is None or b is None or a[1] != b[1]:
+                at = (f"from {name} = {x_ours[b[0]]:.6g} (point {b[0] + 1}): ours "
+                      f"{word[b[1]]}" if b else "ours: " + word[None])
+                there = (f"reference {word[a[1]]} from {name} = {x_ref[a[0]]:.6g} "
+                         f"(point {a[0] + 1})" if a else "reference: " + word[None])
+                self.problems.append(
+                    f"{where}: stability differs {at}, {there}; segments ours "
+                    f"[{stability_text(ours, our_segs)}], reference "
+                    f"[{stability_text(ref, ref_segs)}]")
+                return
+            if k == 0:
+                continue
+            i, j = a[0], b[0]
+            step = max(abs(x_ref[i] - x_ref[i - 1]), abs(x_ours[j] - x_ours[j - 1]))
+            allowed = step + self.rtol * abs(x_ref[i]) + floor
+            self.changes += 1
+            if not abs(x_ours[j] - x_ref[i]) <= allowed:
+                self.problems.append(
+                    f"{where}: stability change to {word[b[1]]} at {name} = {x_ours[j]:.6g} "
+                    f"(point {j + 1}), reference {name} = {x_ref[i]:.6g} (point {i + 1}): "
+                    f"{abs(x_ours[j] - x_ref[i]):.3g} apart, more than the local step "
+                    f"{step:.3g} (+ tolerance)")
+
+    def non_finite(self, where, side, branch):
+        """A problem naming the first NaN or infinite value of a branch."""
+        bad = ~numpy.isfinite(branch.coordarray)
+        if bad.any():
+            index = int(numpy.flatnonzero(bad.any(axis=0))[0])
+            column = int(numpy.flatnonzero(bad[:, index])[0])
+            self.problems.append(
+                f"{where}: {int(bad.sum())} non-finite value(s) in {side}, the first "
+                f"{branch.coordnames[column]} = {branch.coordarray[column, index]} at point "
+                f"{index + 1} ({branch.coordnames[0]} = {branch.coordarray[0, index]:.6g})")
 
     def floors(self, branch):
         """Per column the absolute tolerance: atol, or for <x>_mean
@@ -152,6 +290,9 @@ class Comparison:
             self.problems.append(f"{where}: columns {ours.coordnames}, "
                                  f"reference {ref.coordnames}")
             return
+        self.check_rules(where, run, ref)
+        self.non_finite(where, "ours", ours)
+        self.non_finite(where, "the reference", ref)
         ref_points = [p for p in labelled_points(ref) if not self.ignored(run, ref, p[0], p[2])]
         our_points = [p for p in labelled_points(ours)
                       if not self.ignored(run, ours, p[0], p[2])]
@@ -178,6 +319,7 @@ class Comparison:
                 first = (value - expected) / abs(expected) if expected else 0.0
                 self.special.append((run, label, ty, column, expected, value, first,
                                      max(changes) if changes else None))
+        self.compare_stability(where, run, ref, ours, floors[0])
 
     def summary(self):
         """One line per special point: reference -> ours in the first column."""
@@ -222,34 +364,74 @@ def run_names(reference_dir):
         raise DiagramFileError(str(exc)) from exc
 
 
+RULE_KEYS = ("run", "type", "reason", "from", "to")
+
+
 def ignore_rules(reference_dir):
-    """The labels.json rules of a reference set ([] without one)."""
+    """The labels.json rules of a reference set ([] without one);
+    SettingsError naming the file and the rule if one is malformed.  The
+    columns a rule bounds are checked against each run it applies to
+    (Comparison.check_rules)."""
     path = os.path.join(reference_dir, LABEL_FILE)
     if not os.path.exists(path):
         return []
+    shape = ('expected {"ignore": [{"run": ..., "type": ..., "reason": ..., '
+             '"from": {column: value}, "to": {column: value}}, ...]}')
     try:
         with open(path) as f:
-            rules = json.load(f)["ignore"]
-        for rule in rules:
-            if not (rule["run"] and rule["type"] and rule["reason"]):
-                raise ValueError("run, type and reason must be given")
-        return rules
-    except (ValueError, KeyError, TypeError) as exc:
-        raise DiagramFileError(f"{path}: expected {{\"ignore\": [{{\"run\": ..., \"type\": ..., "
-                               f"\"reason\": ...}}, ...]}} ({exc})") from exc
+            text = json.load(f)
+    except (OSError, ValueError) as exc:
+        raise SettingsError(f"{path}: {shape} ({exc})") from exc
+    if not isinstance(text, dict) or not isinstance(text.get("ignore"), list):
+        raise SettingsError(f"{path}: {shape} (no \"ignore\" list)")
+    types = set(parse_b().all_point_types)
+    for number, rule in enumerate(text["ignore"], 1):
+        what = f"{path}: rule {number}"
+        if not isinstance(rule, dict):
+            raise SettingsError(f"{what} is not an object: {shape}")
+        unknown = sorted(set(rule) - set(RULE_KEYS))
+        if unknown:
+            raise SettingsError(f"{what}: unknown key(s) {', '.join(map(repr, unknown))} "
+                                f"(known: {', '.join(RULE_KEYS)})")
+        for key in ("run", "type", "reason"):
+            if not (isinstance(rule.get(key), str) and rule[key]):
+                raise SettingsError(f"{what}: {key!r} must be given, a non-empty string")
+        if rule["type"] not in types:
+            raise SettingsError(f"{what}: type {rule['type']!r} is not an AUTO point type "
+                                f"({' '.join(sorted(types - {'No Label'}))})")
+        for bound in ("from", "to"):
+            values = rule.get(bound, {})
+            if not isinstance(values, dict) or not all(
+                    isinstance(c, str) and isinstance(v, (int, float))
+                    and not isinstance(v, bool) and math.isfinite(v) for c, v in values.items()):
+                raise SettingsError(f"{what}: {bound!r} must map column names to finite "
+                                    f"numbers, got {values!r}")
+    return text["ignore"]
 
 
 def tolerances(reference_dir):
-    """(rtol, atol): the defaults, overridden by reference_dir/tolerances.json."""
+    """(rtol, atol): the defaults, overridden by reference_dir/tolerances.json;
+    SettingsError for an unknown key or a value that is not a finite number
+    >= 0."""
     path = os.path.join(reference_dir, TOLERANCE_FILE)
     if not os.path.exists(path):
         return RTOL, ATOL
     try:
         with open(path) as f:
             values = json.load(f)
-        return float(values.get("rtol", RTOL)), float(values.get("atol", ATOL))
-    except (ValueError, AttributeError, TypeError) as exc:
-        raise DiagramFileError(f"{path}: expected {{\"rtol\": R, \"atol\": A}} ({exc})") from exc
+    except (OSError, ValueError) as exc:
+        raise SettingsError(f"{path}: expected {{\"rtol\": R, \"atol\": A}} ({exc})") from exc
+    if not isinstance(values, dict):
+        raise SettingsError(f"{path}: expected {{\"rtol\": R, \"atol\": A}}, got {values!r}")
+    unknown = sorted(set(values) - {"rtol", "atol"})
+    if unknown:
+        raise SettingsError(f"{path}: unknown key(s) {', '.join(map(repr, unknown))} "
+                            "(known: rtol, atol)")
+    for key, value in values.items():
+        if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                or not (math.isfinite(value) and value >= 0):
+            raise SettingsError(f"{path}: {key!r} must be a finite number >= 0, got {value!r}")
+    return float(values.get("rtol", RTOL)), float(values.get("atol", ATOL))
 
 
 def compare_dirs(reference_dir, run_dir, runs=None, rtol=None, atol=None, raw=False):
@@ -259,10 +441,17 @@ def compare_dirs(reference_dir, run_dir, runs=None, rtol=None, atol=None, raw=Fa
     reference.  None tolerances come
     from tolerances(); raw compares every labelled point as stored (no
     labels.json rules)."""
+    if not os.path.isdir(reference_dir):
+        raise DiagramFileError(f"{reference_dir}: no such reference directory "
+                               "(`make refs-<fig>` creates it)")
+    if not os.path.isdir(run_dir):
+        raise DiagramFileError(f"{run_dir}: no such run directory"
+                               + (" (a file)" if os.path.exists(run_dir) else ""))
     default_rtol, default_atol = tolerances(reference_dir)
     result = Comparison(default_rtol if rtol is None else rtol,
                         default_atol if atol is None else atol,
-                        [] if raw else ignore_rules(reference_dir))
+                        [] if raw else ignore_rules(reference_dir),
+                        os.path.join(reference_dir, LABEL_FILE))
     if runs is None:
         runs = run_names(reference_dir)
         try:
@@ -301,13 +490,17 @@ def main(argv=None):
     what = f"{os.path.relpath(run_dir)} vs {os.path.relpath(reference_dir)}"
     try:
         result = compare_dirs(reference_dir, run_dir, args.runs, args.rtol, args.atol)
+    except SettingsError as exc:
+        print(f"compare: {what}: usage error: {exc}", file=sys.stderr)
+        return 2
     except DiagramFileError as exc:
         print(f"compare: {what}: error: {exc}", file=sys.stderr)
         return 2
     tol = f"rtol {result.rtol:g}, atol {result.atol:g}"
     if result.ok():
         print(f"compare: {what}: agree ({result.points} labelled points, "
-              f"{result.values} values within {tol})")
+              f"{result.values} values within {tol}; {result.changes} stability changes "
+              "within the local step)")
         return 0
     print(f"compare: {what}: DIFFERENT ({len(result.problems)} structural, "
           f"{len(result.rows)} of {result.values} values outside {tol})")

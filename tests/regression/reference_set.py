@@ -17,8 +17,11 @@ it (manifest, and every b-file equal to the run's), then exchanges the two
 directories in one rename (renameat2 RENAME_EXCHANGE) and deletes the old
 one. Killed at any moment, it leaves <fig>/ the complete old set or the
 complete new one; leftovers of a killed replace (dot-directories) are
-removed by the next one.
+removed by the next one. A replace that fails (a full disk: the new set does
+not fit) removes its partial copy itself and says so in one line, the old
+set left as it was; exit status 2.
 """
+import errno
 import argparse
 import ctypes
 import fnmatch
@@ -41,6 +44,13 @@ STOP_AT = os.environ.get("MLG_REFS_KILL_AT")
 
 class SetError(Exception):
     """A reference set that does not match its manifest (names the file)."""
+
+
+def os_error_text(exc):
+    """'No space left on device writing <path>' for an OSError."""
+    path = exc.filename2 if getattr(exc, "filename2", None) else exc.filename
+    what = exc.strerror or str(exc)
+    return f"{what} writing {path}" if path else what
 
 
 def _step(name):
@@ -145,11 +155,16 @@ def exchange(a, b):
 
 
 def publish(new, target):
-    """Put directory `new` in place of `target` atomically; the old one is deleted."""
+    """Put directory `new` in place of `target` atomically; the old one is
+    deleted.  An OSError means `target` is as it was (`new` too)."""
     if os.path.isdir(target):
         exchange(new, target)
         _step("exchanged")
-        shutil.rmtree(new)
+        try:
+            shutil.rmtree(new)
+        except OSError as exc:
+            raise SetError(f"{target}: replaced, but the old one (now {new}) could not be "
+                           f"removed: {os_error_text(exc)}") from exc
     else:
         os.rename(new, target)
 
@@ -177,7 +192,28 @@ def replace(figure, run_dir, root=REFERENCE_ROOT):
     if not runs:
         raise SetError(f"{run_dir}: the figure wrote no b-files (that {SELECTION} selects)")
     new = os.path.join(root, f".{figure}.new-{os.getpid()}")
-    os.makedirs(new)
+    try:
+        os.makedirs(new)
+        _fill(new, target, run_dir, runs, cd)
+        publish(new, target)
+    except BaseException as exc:
+        # `new` is the partial new set, or after the exchange the old one
+        # that publish could not delete: either way it goes
+        shutil.rmtree(new, ignore_errors=True)
+        if not isinstance(exc, OSError):
+            raise
+        # an OSError: nothing was published, the old set is as it was
+        full = exc.errno in (errno.ENOSPC, errno.EDQUOT)
+        raise SetError(f"{target}: the new set {'did not fit' if full else 'was not written'} "
+                       f"({os_error_text(exc)}); {target} "
+                       f"{'left as it was' if os.path.isdir(target) else 'not created'}, the "
+                       f"partial copy {new} removed") from exc
+    return [run_name(r) for r in runs]
+
+
+def _fill(new, target, run_dir, runs, cd):
+    """Copy the runs and the old set's settings files into `new`, write its
+    manifest and verify it against the run directory."""
     for rel in runs:
         os.makedirs(os.path.join(new, os.path.dirname(rel)), exist_ok=True)
         shutil.copyfile(os.path.join(run_dir, rel), os.path.join(new, rel))
@@ -189,12 +225,13 @@ def replace(figure, run_dir, root=REFERENCE_ROOT):
     write_manifest(new)
     _step("manifest")
     verify(new)
-    result = cd.compare_dirs(new, run_dir, rtol=0.0, atol=0.0, raw=True)
+    try:
+        result = cd.compare_dirs(new, run_dir, rtol=0.0, atol=0.0, raw=True)
+    except cd.DiagramFileError as exc:
+        raise SetError(f"{new}: cannot compare the copied set with {run_dir}: {exc}") from exc
     if not result.ok():
         raise SetError(f"{new}: the copied set differs from {run_dir}:\n{result.report()}")
     _step("verified")
-    publish(new, target)
-    return [run_name(r) for r in runs]
 
 
 def main(argv=None):

@@ -38,15 +38,17 @@ export REGRESS_QUICK REGRESS_FIGURES
 # says so and runs the shell code <on failure>.  The caller writes $(MAKE) in
 # its recipe line so that make sees a recursive call and passes its jobserver
 # on (a $(MAKE) only inside this variable runs the figure's parts at -j1).
-private_run = mkdir -p $(1) && scratch=$$(mktemp -d $(abspath $(1))/.$(2).XXXXXX) && \
-    { MLG_RUN_ROOT=$$scratch $(3) --no-print-directory $(2) $(REGRESS_WITH_$(2)) || \
-      { echo "$(2): failed; its runs are kept in $$scratch" >&2; $(4); }; }
+# Used after `set -e`: a failed mkdir or mktemp (read-only tree, no inode)
+# stops the recipe with its own message; nothing runs with an empty $scratch.
+private_run = mkdir -p $(1); scratch=$$(mktemp -d $(abspath $(1))/.$(2).XXXXXX); \
+    MLG_RUN_ROOT=$$scratch $(3) --no-print-directory $(2) $(REGRESS_WITH_$(2)) || \
+      { echo "$(2): failed; its runs are kept in $$scratch" >&2; $(4); }
 
 .PHONY: regress refs
 regress: setup
-	@if [ -z "$(strip $(REGRESS_FIGURES))" ]; then \
+	@set -e; if [ -z "$(strip $(REGRESS_FIGURES))" ]; then \
 	    echo "regress: no figures are registered (REGRESS_FIGURES is empty)"; exit 1; fi
-	@failed=; for fig in $(REGRESS_FIGURES); do \
+	@set -e; failed=; for fig in $(REGRESS_FIGURES); do \
 	    $(MAKE) --no-print-directory regress-$$fig || failed="$$failed $$fig"; \
 	done; \
 	if [ -n "$$failed" ]; then echo "regress: DIFFERENT or failed:$$failed"; exit 1; fi; \
@@ -55,14 +57,15 @@ regress: setup
 # A figure that stops (a run that fails its driver's checks) is still compared
 # as far as it got, so the table shows how far its finished runs moved.
 regress-%: setup
-	@$(call private_run,$(REGRESS_ROOT),$*,$(MAKE),stopped=1); \
+	@set -e; stopped=; $(call private_run,$(REGRESS_ROOT),$*,$(MAKE),stopped=1); \
 	if [ -n "$$stopped" ]; then \
 	    echo "$*: its runs up to the stop, against $(REFERENCE_ROOT)/$*:"; \
-	    $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$*; exit 1; fi; \
-	$(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$*; status=$$?; \
-	$(PYTHON) $(REFERENCE_SET) publish $$scratch/$* $(REGRESS_ROOT)/$* || exit 1; \
+	    $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$* || true; exit 1; fi; \
+	status=0; $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$* || status=$$?; \
+	$(PYTHON) $(REFERENCE_SET) publish $$scratch/$* $(REGRESS_ROOT)/$*; \
 	mkdir -p $(REGRESS_ROOT)/figures; \
-	for f in $$scratch/figures/*; do [ -e "$$f" ] && mv -f "$$f" $(REGRESS_ROOT)/figures/; done; \
+	for f in $$scratch/figures/*; do \
+	    if [ -e "$$f" ]; then mv -f "$$f" $(REGRESS_ROOT)/figures/; fi; done; \
 	rm -rf $$scratch; \
 	echo "regress-$*: runs in $(REGRESS_ROOT)/$*/"; exit $$status
 
@@ -70,7 +73,7 @@ refs: setup
 	@set -e; for fig in $(REGRESS_FIGURES); do $(MAKE) --no-print-directory refs-$$fig; done
 
 refs-%: setup
-	@$(call private_run,$(REFS_ROOT),$*,$(MAKE),exit 1); \
+	@set -e; $(call private_run,$(REFS_ROOT),$*,$(MAKE),exit 1); \
 	$(PYTHON) $(REFERENCE_SET) replace $* $$scratch/$* || \
 	    { echo "refs-$*: $(REFERENCE_ROOT)/$* left as it was; runs in $$scratch" >&2; exit 1; }; \
 	rm -rf $$scratch
