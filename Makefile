@@ -131,7 +131,7 @@ bench: setup $(BENCH_DEPS) $(BENCH_PROGRAMS)
 # clean keeps build/auto-dir, the AUTO-07p chosen with AUTO_DIR (mk/auto.mk);
 # distclean removes it too.
 clean:
-	@if [ -f $(AUTO_CHOICE) ]; then \
+	@set -e; if [ -f $(AUTO_CHOICE) ]; then \
 	    echo "clean: keeping $(AUTO_CHOICE) (AUTO_DIR=$$(cat $(AUTO_CHOICE)); make distclean removes it)"; \
 	    find build -mindepth 1 -maxdepth 1 ! -name $(notdir $(AUTO_CHOICE)) -exec rm -rf {} +; \
 	else rm -rf build; fi

@@ -49,7 +49,7 @@ AUTO_STAMP :=
 
 auto:
 	@$(if $(filter 0,$(MAKELEVEL)),mk/check-auto.sh,mk/check-auto.sh >/dev/null) $(AUTO_DIR)
-	@if [ "$(AUTO_FROM)" = given ] && [ "$$(cat $(AUTO_CHOICE) 2>/dev/null)" != "$(AUTO_DIR)" ]; then \
+	@set -e; if [ "$(AUTO_FROM)" = given ] && [ "$$(cat $(AUTO_CHOICE) 2>/dev/null)" != "$(AUTO_DIR)" ]; then \
 	    mkdir -p $(dir $(AUTO_CHOICE)) && echo "$(AUTO_DIR)" > $(AUTO_CHOICE) && \
 	    echo "auto: remembered AUTO_DIR=$(AUTO_DIR) in $(AUTO_CHOICE): later runs use it" \
 	         "without AUTO_DIR (make forget-auto: back to the source build)"; \

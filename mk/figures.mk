@@ -25,7 +25,7 @@ MODEL_INPUTS := constants/c.mlg $(wildcard constants/runs/c.*) $(MLG_MODEL).exe 
 define cached_figure
 $(eval $(call py_deps,$(or $(3),$(1)),figures.$(or $(3),$(1))))
 $(call result,$(1)): $$(PYDEPS_$(or $(3),$(1))) $(MODEL_INPUTS) $(2) | auto
-	$$(if $$(filter $(1),$$(FIGURES_WITH_PARTS)),$$(PYTHON) -m mlgshimmy.figures.$(1) rules && \
+	@set -e; $$(if $$(filter $(1),$$(FIGURES_WITH_PARTS)),$$(PYTHON) -m mlgshimmy.figures.$(1) rules; \
 	    $$(MAKE) --no-print-directory -f mk/parts.mk FIGURE=$(1) \
 	        INPUTS="$$(filter-out $$(DEPS_DIR)/%,$$^)")
 	$$(PYTHON) -m mlgshimmy.figures.$(or $(3),$(1)) $(4) --compute

@@ -42,7 +42,7 @@ $(DEMO)/mlg.exe: $(DEMO)/mlg.o $(wildcard $(AUTO_DIR)/lib/*.o) $(AUTO_QUIET_FPE)
 # has numpy. OMP_NUM_THREADS as the drivers' (AUTO_THREADS): results depend on it.
 $(DEMO)/auto.env: $(AUTO_USED) | auto
 	@mkdir -p $(@D)/.bin
-	@launcher=$(AUTO_DIR)/bin/auto; [ -x "$$launcher" ] || launcher=$$(command -v auto-07p) || \
+	@set -e; launcher=$(AUTO_DIR)/bin/auto; [ -x "$$launcher" ] || launcher=$$(command -v auto-07p) || \
 	    { echo "demo: no AUTO launcher ($(AUTO_DIR)/bin/auto or auto-07p)" >&2; exit 1; }; \
 	python=$$(command -v $(PYTHON)) || { echo "demo: no $(PYTHON)" >&2; exit 1; }; \
 	ln -sfn "$$launcher" $(@D)/.bin/auto && ln -sfn "$$python" $(@D)/.bin/python && \

@@ -7,13 +7,14 @@
   no comparison of `/<fig>`, no publish or move of `/figures/*`, no
   `reference_set.py replace` of `/<fig>`; tests/reference/ untouched;
 - every recipe line of Makefile, tests/regression/regression.mk, c/c.mk,
-  c/simulate/simulate.mk, models/models.mk and mk/auto.mk that runs more than
+  c/simulate/simulate.mk, models/models.mk and mk/**/*.mk that runs more than
   one shell command starts with `set -e` (a static check of the files).
 
 Run with: python3 -m pytest -q tests/test_make_fail_closed.py
 (after `make setup`: the regress/refs targets need its stamps)
 """
 import contextlib
+import glob
 import os
 import re
 import shutil
@@ -24,7 +25,9 @@ import pytest
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REFERENCE = os.path.join(ROOT, "tests", "reference", "fig07")
 MAKEFILES = ["Makefile", "tests/regression/regression.mk", "c/c.mk", "c/simulate/simulate.mk",
-             "models/models.mk", "mk/auto.mk"]
+             "models/models.mk"] + sorted(
+    os.path.relpath(p, ROOT) for p in glob.glob(os.path.join(ROOT, "mk", "**", "*.mk"),
+                                                recursive=True))
 
 
 def make(*args):
