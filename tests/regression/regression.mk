@@ -54,6 +54,19 @@ regress: setup
 	if [ -n "$$failed" ]; then echo "regress: DIFFERENT or failed:$$failed"; exit 1; fi; \
 	echo "regress: $(strip $(REGRESS_FIGURES)) agree with tests/reference/"
 
+ifneq ($(DRY_RUN),)
+# `make -n`: the figure's own dry run (its runs shown in build/regress/.dry-run/)
+# and what would follow; nothing is compared, published or replaced.
+regress-%: setup
+	@$(MAKE) --no-print-directory MLG_RUN_ROOT=$(abspath $(REGRESS_ROOT))/.dry-run $* \
+	    $(REGRESS_WITH_$*)
+	$(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* <private run root>/$*
+	$(PYTHON) $(REFERENCE_SET) publish <private run root>/$* $(REGRESS_ROOT)/$*
+refs-%: setup
+	@$(MAKE) --no-print-directory MLG_RUN_ROOT=$(abspath $(REFS_ROOT))/.dry-run $* \
+	    $(REGRESS_WITH_$*)
+	$(PYTHON) $(REFERENCE_SET) replace $* <private run root>/$*
+else
 # A figure that stops (a run that fails its driver's checks) is still compared
 # as far as it got, so the table shows how far its finished runs moved.
 regress-%: setup
@@ -77,3 +90,4 @@ refs-%: setup
 	$(PYTHON) $(REFERENCE_SET) replace $* $$scratch/$* || \
 	    { echo "refs-$*: $(REFERENCE_ROOT)/$* left as it was; runs in $$scratch" >&2; exit 1; }; \
 	rm -rf $$scratch
+endif
