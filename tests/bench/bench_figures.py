@@ -4,13 +4,16 @@ build/bench/j2) of an otherwise built tree, in one session; then every run
 directory of the two compared, every saved point of every b-file (the -j2
 suite must produce the same diagrams, bit for bit).  About 25 min on 2 idle
 cores: run it through `make bench-figures`, on a machine left otherwise
-idle; `--compare-only` repeats the comparison of the last two suites.
+idle; `--compare-only` repeats the comparison of the last two suites, and
+`--compare ROOT1 ROOT2` compares any two run roots (e.g. a suite before and
+after a change).
 
 The parallel work is the parts of Figs. 11, 13, 14 and 16 and the figures
 themselves; with more cores the wall time is bounded by the longest single
 part chain (Fig. 11's assembly after its slowest slice, Fig. 16's fold-seed
 part), so it levels off at a few minutes beyond about 8 cores.
 """
+import json
 import os
 import shutil
 import subprocess
@@ -68,18 +71,40 @@ def differences(one, two):
     return "\n".join(out)
 
 
-def compare(one, two):
-    """Exit status of comparing the run roots of the two suites."""
+def results(run_root):
+    """{relative path: data} of every cached result and part (result.json,
+    parts/*.json) under run_root; their provenance is left out."""
+    out = {}
+    for d, _, files in os.walk(run_root):
+        for name in files:
+            path = os.path.join(d, name)
+            if name == "result.json" or os.path.basename(d) == "parts" and name.endswith(".json"):
+                with open(path) as f:
+                    stored = json.load(f)
+                if isinstance(stored, dict) and "data" in stored:
+                    out[os.path.relpath(path, run_root)] = stored["data"]
+    return out
+
+
+def compare(one, two, what="-j2 vs -j1"):
+    """Exit status of comparing the run roots of two suites: every b-file's
+    points bitwise, and every cached result's data."""
     dirs = run_dirs(one)
     differ = {d: differences(os.path.join(one, d), os.path.join(two, d)) for d in dirs}
     differ = {d: report for d, report in differ.items() if report}
     missing = sorted(set(run_dirs(two)) ^ set(dirs))
-    print(f"bench_figures: {len(dirs)} run directories compared, -j2 vs -j1 (bitwise): "
+    print(f"bench_figures: {len(dirs)} run directories compared, {what} (bitwise): "
           + ("all agree" if not differ and not missing else
              f"DIFFERENT {sorted(differ)}, only in one {missing}"))
     for d, report in differ.items():
         print(f"--- {d}\n{report[:2000]}")
-    return 1 if differ or missing else 0
+    ours, theirs = results(one), results(two)
+    data_differ = sorted(k for k in set(ours) & set(theirs) if ours[k] != theirs[k])
+    data_missing = sorted(set(ours) ^ set(theirs))
+    print(f"bench_figures: {len(set(ours) & set(theirs))} cached results and parts compared, "
+          f"{what}: " + ("all agree" if not data_differ and not data_missing else
+                        f"DIFFERENT {data_differ}, only in one {data_missing}"))
+    return 1 if differ or missing or data_differ or data_missing else 0
 
 
 def main():
@@ -87,6 +112,8 @@ def main():
     if sys.argv[1:] == ["--compare-only"]:
         sys.exit(compare(os.path.join(ROOT, "build", "bench", "j1"),
                          os.path.join(ROOT, "build", "bench", "j2")))
+    if sys.argv[1:2] == ["--compare"] and len(sys.argv) == 4:   # two suites of your own
+        sys.exit(compare(sys.argv[2], sys.argv[3], f"{sys.argv[2]} vs {sys.argv[3]}"))
     serial, one = suite(1)
     print(f"bench_figures: make -j1 figures {serial / 60:.1f} min", flush=True)
     parallel, two = suite(2)
