@@ -31,7 +31,7 @@ ifndef PYDEPS_RULE_$(1)
 PYDEPS_RULE_$(1) := 1
 $(DEPS_DIR)/$(1).d:
 	@mkdir -p $$(@D)
-	$$(PYTHON) -m mlgshimmy.shared.jobs.depends PYDEPS_$(1) $$@ mlgshimmy.$(2) > $$@
+	@$$(PYTHON) -m mlgshimmy.shared.jobs.depends PYDEPS_$(1) $$@ mlgshimmy.$(2) > $$@
 ifeq ($(PY_DEPS_WANTED),yes)
 -include $(DEPS_DIR)/$(1).d
 endif

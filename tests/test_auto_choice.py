@@ -29,10 +29,9 @@ def usable_auto():
 
 @pytest.fixture
 def tree(tmp_path):
-    """A scratch tree with the Makefile and mk/ only (the other makefiles
-    are optional includes)."""
-    shutil.copy(ROOT / "Makefile", tmp_path / "Makefile")
-    shutil.copytree(ROOT / "mk", tmp_path / "mk")
+    """A scratch copy of the sources, nothing built."""
+    shutil.copytree(ROOT, tmp_path, dirs_exist_ok=True,
+                    ignore=shutil.ignore_patterns("build", ".git", "__pycache__"))
     return tmp_path
 
 

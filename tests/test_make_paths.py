@@ -63,4 +63,4 @@ def test_clone_under_a_directory_with_a_space_is_refused(tmp_path):
 def test_paths_without_spaces_still_work():
     status, out, err = make("-n", "fig07", env={"MLG_RUN_ROOT": "build/x_y"})
     assert status == 0, err
-    assert "drivers/fig07.py" in out, out
+    assert "mlgshimmy.figures.fig07" in out, out
