@@ -45,8 +45,10 @@ $(foreach v,MLG_RUN_ROOT AUTO_DIR AUTO_SRC REGRESS_ROOT REFS_ROOT,$(call refuse_
 
 PYTHON ?= /usr/bin/python3
 AUTO_THREADS ?= 1
-ifeq ($(shell [[ "$(AUTO_THREADS)" =~ ^[1-9][0-9]*$$ ]] && echo ok),)
-$(error AUTO_THREADS=$(AUTO_THREADS) must be a whole number >= 1 (threads of each AUTO run))
+# A whole number >= 1, checked by make itself (no shell sees the value): one
+# word, nothing left when its digits are removed, no leading 0.
+ifneq ($(words $(AUTO_THREADS))|$(subst 0,,$(subst 1,,$(subst 2,,$(subst 3,,$(subst 4,,$(subst 5,,$(subst 6,,$(subst 7,,$(subst 8,,$(subst 9,,$(AUTO_THREADS)))))))))))|$(filter 0%,$(AUTO_THREADS)),1||)
+$(error AUTO_THREADS='$(AUTO_THREADS)' must be a whole number >= 1 (threads of each AUTO run))
 endif
 TEST_TIMEOUT ?= 600
 export PYTHON
