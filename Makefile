@@ -50,8 +50,10 @@ PYTHON ?= /usr/bin/python3
 .DELETE_ON_ERROR:
 shell_quote = '$(subst ','\'',$(1))'
 AUTO_THREADS ?= 1
-ifeq ($(shell [[ $(call shell_quote,$(AUTO_THREADS)) =~ ^[1-9][0-9]*$$ ]] && echo ok),)
-$(error AUTO_THREADS=$(AUTO_THREADS) must be a whole number >= 1 (threads of each AUTO run))
+# A whole number >= 1, checked by make itself (no shell sees the value): one
+# word, nothing left when its digits are removed, no leading 0.
+ifneq ($(words $(AUTO_THREADS))|$(subst 0,,$(subst 1,,$(subst 2,,$(subst 3,,$(subst 4,,$(subst 5,,$(subst 6,,$(subst 7,,$(subst 8,,$(subst 9,,$(AUTO_THREADS)))))))))))|$(filter 0%,$(AUTO_THREADS)),1||)
+$(error AUTO_THREADS='$(AUTO_THREADS)' must be a whole number >= 1 (threads of each AUTO run))
 endif
 PYTEST_ARGS ?=
 export PYTHON
