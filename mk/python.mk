@@ -4,9 +4,9 @@
 #   $(PYTHON) -m mlgshimmy.<room>.<module> ...   a driver (PYTHONPATH set here)
 #   $(eval $(call py_deps,<name>,<module>))    $(PYDEPS_<name>): the files of
 #                                              the module's import closure
-#   $(call shell_quote,<text>)                 <text> as one single-quoted word
+#   $(call stamp,<file>,<text>)                <file> holds <text> (below)
+# (shell_quote, the one way a value reaches a shell, is in ../Makefile.)
 export PYTHONPATH := $(CURDIR)/drivers$(if $(PYTHONPATH),:$(PYTHONPATH))
-shell_quote = '$(subst ','\'',$(1))'
 
 # $(call stamp,<file>,<text>): <file> holds <text>, rewritten only when the
 # text changes (so its time says when), while make reads its makefiles: no
