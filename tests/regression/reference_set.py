@@ -12,7 +12,7 @@ settings files it had (tolerances.json, labels.json, runs.json) and
 MANIFEST: one line "<sha256>  <path>" per file. A file missing, extra or
 changed is an error naming it.
 
-replace writes the new set beside the old one (.<fig>.new-<pid>), verifies
+replace writes the new set beside the old one (.<fig>.new-<pid>-<random>), verifies
 it (manifest, and every b-file equal to the run's), then exchanges the two
 directories in one rename (renameat2 RENAME_EXCHANGE) and deletes the old
 one. Killed at any moment, it leaves <fig>/ the complete old set or the
@@ -21,9 +21,9 @@ removed by the next one. A replace that fails (a full disk: the new set does
 not fit) removes its partial copy itself and says so in one line, the old
 set left as it was; exit status 2.
 """
-import errno
 import argparse
 import ctypes
+import errno
 import fnmatch
 import hashlib
 import json
@@ -31,6 +31,7 @@ import os
 import shutil
 import signal
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -173,7 +174,7 @@ def remove_leftovers(root, figure):
     """Directories left by a killed replace of `figure` whose process is gone."""
     for entry in os.listdir(root):
         if entry.startswith(f".{figure}.new-"):
-            pid = entry.rsplit("-", 1)[1]
+            pid = entry[len(f".{figure}.new-"):].split("-")[0]
             if pid.isdigit() and os.path.exists(f"/proc/{pid}") and int(pid) != os.getpid():
                 continue
             shutil.rmtree(os.path.join(root, entry), ignore_errors=True)
@@ -191,9 +192,9 @@ def replace(figure, run_dir, root=REFERENCE_ROOT):
     runs = [rel for rel in run_files(run_dir) if run_name(rel) in selected]
     if not runs:
         raise SetError(f"{run_dir}: the figure wrote no b-files (that {SELECTION} selects)")
-    new = os.path.join(root, f".{figure}.new-{os.getpid()}")
+    # created here, under a name no one can foresee (the pid for remove_leftovers)
+    new = tempfile.mkdtemp(prefix=f".{figure}.new-{os.getpid()}-", dir=root)
     try:
-        os.makedirs(new)
         _fill(new, target, run_dir, runs, cd)
         publish(new, target)
     except BaseException as exc:
