@@ -41,3 +41,11 @@ def test_citation_names_the_paper():
                               "main landing gear")
     assert [a["family-names"] for a in paper["authors"]] == [
         "Howcroft", "Lowenberg", "Neild", "Krauskopf"]
+
+
+def test_the_python_package_has_the_library_version():
+    import mlgshimmy
+    header = (ROOT / "c" / "mlg_version.h").read_text()
+    parts = [re.search(rf"#define MLG_VERSION_{p} (\d+)", header).group(1)
+             for p in ("MAJOR", "MINOR", "PATCH")]
+    assert mlgshimmy.__version__ == ".".join(parts)

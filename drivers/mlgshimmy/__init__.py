@@ -7,4 +7,4 @@
 Figures and studies import the shared layer, never each other; the shared
 layer imports neither (tests/test_rooms.py).  drivers/README.md has the map.
 """
-__version__ = "0.9.0"
+__version__ = "0.1.0"   # as c/mlg_version.h (tests/test_release_files.py)
