@@ -29,6 +29,7 @@
 #   AUTO_THREADS    OpenMP threads of each AUTO run (1; an OMP_NUM_THREADS in
 #                   the environment is not used: results depend on it)
 #   PYTEST_ARGS     extra pytest options for `make test` (e.g. -k jacobian)
+#   TEST_JOBS       pytest workers of `make test` (2; one test file per worker)
 #
 # Useful for rules in included makefiles: $(AUTO_DIR), $(PYTHON), `| auto`
 # (AUTO-07p is ready) and $(call auto_equations,...) from mk/auto.mk.
@@ -56,13 +57,17 @@ ifneq ($(words $(AUTO_THREADS))|$(subst 0,,$(subst 1,,$(subst 2,,$(subst 3,,$(su
 $(error AUTO_THREADS='$(AUTO_THREADS)' must be a whole number >= 1 (threads of each AUTO run))
 endif
 PYTEST_ARGS ?=
+TEST_JOBS ?= 2
+ifneq ($(words $(TEST_JOBS))|$(subst 0,,$(subst 1,,$(subst 2,,$(subst 3,,$(subst 4,,$(subst 5,,$(subst 6,,$(subst 7,,$(subst 8,,$(subst 9,,$(TEST_JOBS)))))))))))|$(filter 0%,$(TEST_JOBS)),1||)
+$(error TEST_JOBS='$(TEST_JOBS)' must be a whole number >= 1 (pytest workers))
+endif
 export PYTHON
 export MLG_AUTO_THREADS := $(AUTO_THREADS)
 export MPLBACKEND := Agg
 export SOURCE_DATE_EPOCH := 0
 
 PACKAGES := gcc gfortran make liblapack-dev python3-numpy python3-matplotlib \
-            python3-scipy python3-pytest pkgconf libsundials-dev dpkg-dev
+            python3-scipy python3-pytest python3-pytest-xdist pkgconf libsundials-dev dpkg-dev
 PACKAGES_STAMP := build/.stamp-packages
 
 TEST_DEPS :=
@@ -111,7 +116,7 @@ TEST_DEPS += $(SMOKE).exe
 # Every test, Python and C (tests/test_c_programs.py runs the C programs),
 # on pytest: `make test PYTEST_ARGS='-k jacobian'` selects by name.
 test: setup $(TEST_DEPS)
-	$(PYTHON) -m pytest $(PYTEST_ARGS)
+	$(PYTHON) -m pytest -n $(TEST_JOBS) --dist loadfile $(PYTEST_ARGS)
 
 figures: setup $(FIGURES)
 	@set -e; if [ -z "$(strip $(FIGURES))" ]; then \
