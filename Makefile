@@ -98,7 +98,10 @@ setup: packages auto
 
 packages: $(PACKAGES_STAMP)
 
-$(PACKAGES_STAMP): mk/install-packages.sh
+# the list itself is an input: a package added to it is installed on the next run
+PACKAGES_LIST := build/.packages-list
+$(call stamp,$(PACKAGES_LIST),$(PACKAGES))
+$(PACKAGES_STAMP): mk/install-packages.sh $(PACKAGES_LIST)
 	mk/install-packages.sh $(PACKAGES)
 	@mkdir -p $(@D)
 	touch $@
