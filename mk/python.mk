@@ -11,8 +11,11 @@ export PYTHONPATH := $(CURDIR)/drivers$(if $(PYTHONPATH),:$(PYTHONPATH))
 # $(call stamp,<file>,<text>): <file> holds <text>, rewritten only when the
 # text changes (so its time says when), while make reads its makefiles: no
 # shell sees the text, and `make -n` is exact about what depends on it.
-stamp = $(if $(filter-out $(strip $(2)),$(strip $(file < $(1))))$(if $(wildcard $(1)),,x),\
-    $(shell mkdir -p $(call shell_quote,$(dir $(1))))$(file > $(1),$(strip $(2))))
+# Only when a goal may build: `make help AUTO_THREADS=2` or a redraw with
+# another AUTO_DIR must not mark every result out of date.
+STAMP_GOALS := $(filter-out help clean distclean forget-auto %-plot,$(or $(MAKECMDGOALS),help))
+stamp = $(if $(STAMP_GOALS),$(if $(filter-out $(strip $(2)),$(strip $(file < $(1))))$(if \
+    $(wildcard $(1)),,x),$(shell mkdir -p $(call shell_quote,$(dir $(1))))$(file > $(1),$(strip $(2)))))
 
 # `make -n` runs recipe lines that call $(MAKE); those check DRY_RUN so that
 # a dry run prints what it would do instead of doing it.
