@@ -17,24 +17,12 @@ import pytest
 
 import compare_diagrams as cd
 import reference_set as rs
+import helpers
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 FIGURE = "fig07"
 STEPS = ("copying", "manifest", "verified", "exchanged")
 SETS = sorted(glob.glob(os.path.join(cd.REFERENCE_ROOT, "*")))
-
-
-def make_variable(name):
-    """A variable the Makefile exports to `make test` (tests/regression/
-    regression.mk): from the environment when run by make, else asked of
-    make itself, so that pytest run by hand checks the same value."""
-    if name in os.environ:
-        return os.environ[name]
-    proc = subprocess.run(["make", "-s", "--no-print-directory",
-                           f"--eval=print-test-variable: ; @echo $({name})",
-                           "print-test-variable"], cwd=cd.ROOT, capture_output=True, text=True)
-    assert proc.returncode == 0, f"make cannot print {name}: {proc.stderr.strip()}"
-    return proc.stdout.strip()
 
 
 @pytest.mark.parametrize("directory", SETS, ids=os.path.basename)
@@ -49,7 +37,7 @@ def test_stored_set_matches_its_manifest(directory):
 @pytest.fixture(scope="module")
 def registered():
     """REGRESS_FIGURES: the figures `make regress` runs."""
-    figures = set(make_variable("REGRESS_FIGURES").split())
+    figures = set(helpers.make_variable("REGRESS_FIGURES").split())
     assert figures, "REGRESS_FIGURES is empty: it names the figures `make regress` runs"
     return figures
 

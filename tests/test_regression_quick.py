@@ -11,19 +11,7 @@ import time
 import pytest
 
 import compare_diagrams as cd
-
-
-def make_variable(name):
-    """A variable the Makefile exports to `make test` (tests/regression/
-    regression.mk): from the environment when run by make, else asked of
-    make itself, so that pytest run by hand checks the same value."""
-    if name in os.environ:
-        return os.environ[name]
-    proc = subprocess.run(["make", "-s", "--no-print-directory",
-                           f"--eval=print-test-variable: ; @echo $({name})",
-                           "print-test-variable"], cwd=cd.ROOT, capture_output=True, text=True)
-    assert proc.returncode == 0, f"make cannot print {name}: {proc.stderr.strip()}"
-    return proc.stdout.strip()
+import helpers
 
 
 def make_regress(figure):
@@ -40,7 +28,7 @@ def snapshot(directory):
 
 @pytest.fixture(scope="module")
 def quick():
-    figures = make_variable("REGRESS_QUICK").split()
+    figures = helpers.make_variable("REGRESS_QUICK").split()
     assert figures, "REGRESS_QUICK is empty: it names the figures `make test` compares"
     return figures
 

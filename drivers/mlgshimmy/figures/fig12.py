@@ -147,10 +147,5 @@ def plot(result):
     draw.save(fig, result["name"])
 
 
-def main():
-    variant, name, rest = jobs.variant_option("fig12", __doc__.splitlines()[0])
-    jobs.run_figure(name, lambda: compute(name, variant), plot, argv=rest)
-
-
 if __name__ == "__main__":
-    main()
+    jobs.run_variant_figure("fig12", __doc__.splitlines()[0], compute, plot)

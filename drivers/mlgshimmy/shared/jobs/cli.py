@@ -35,6 +35,15 @@ def variant_option(figure: str, doc: str):
     return variant, figure if variant == 0 else f"{figure}_v{variant}", rest
 
 
+def run_variant_figure(figure: str, doc: str, compute: Callable, plot: Callable) -> None:
+    """run_figure for a figure with a --strut-variant option (variant_option):
+    compute(name, variant), the cached result named <figure> or
+    <figure>_v<variant>."""
+    variant, name, rest = variant_option(figure, doc)
+    run_figure(name, lambda: compute(name, variant), plot, argv=rest,
+               module=f"mlgshimmy.figures.{figure}")
+
+
 def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[Callable] = None,
                parameter_set: str = "figures", argv: Optional[Sequence[str]] = None,
                module: Optional[str] = None) -> None:
