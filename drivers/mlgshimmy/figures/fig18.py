@@ -70,7 +70,8 @@ def runs(where="fig18", **model):
         points.append(mg.window_points(Fstar, **model))
         p = points[-1]
         mg.progress(where, f"F* = {Fstar:.2f}: a {p['a']}, b {p['b']}, c {p['c']:.5g} "
-                           f"(V {p['V_c']:.3g}), pitchfork {p['p']:.5g}")
+                           f"(V {'-' if p['V_c'] is None else format(p['V_c'], '.3g')}), "
+                           f"pitchfork {p['p']:.5g}")
     grid = numpy.array([[region(p["Fstar"], k, p["b"], **model) for k in MAP_KAPPA]
                         for p in points])
     mg.progress(where, "region map done")

@@ -298,10 +298,11 @@ def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN
     """(y_fp, V): the smallest (or, with highest, the largest) y_fp at which
     the mode `band` changes stability for some V in [V_MIN, V_LIMIT] -- a
     turning point in y_fp of its Hopf curve or its end at V_LIMIT; optimised
-    on a V grid refined three times.  (inf or -inf, nan) if it never does.
+    on a V grid refined three times.  (inf or -inf, None) if it never does
+    (no speed: the cache refuses NaN).
     `model`: parameter overrides, as for growth."""
     sign = -1.0 if highest else 1.0
-    best = (sign * numpy.inf, numpy.nan)
+    best = (sign * numpy.inf, None)
     for _ in range(4):
         for V in speeds:
             found = yfp_crossings(Fstar, V, band, first_only=not highest, **model)
@@ -383,7 +384,7 @@ def window_points(Fstar, **model):
     c, V_c = extreme_yfp_crossing(Fstar, "low", **model)
     real = yfp_crossings(Fstar, 0.5 * V_LIMIT, "real", **model)
     p = real[0] if real else numpy.inf
-    first = min((a, "high", V_a), (c, "low", V_c), (p, "real", numpy.nan), key=lambda t: t[0])
+    first = min((a, "high", V_a), (c, "low", V_c), (p, "real", None), key=lambda t: t[0])
     return {"Fstar": Fstar, "a": a, "b": b, "c": c, "p": p, "V_a": V_a, "V_b": V_b, "V_c": V_c,
             "first": first[0], "first_mode": first[1], "first_V": first[2]}
 

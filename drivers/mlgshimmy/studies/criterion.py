@@ -68,7 +68,8 @@ def first_unstable(Fstar, **overrides):
     if numpy.isfinite(y):   # the band that is unstable just beyond the crossing
         beyond = mg.growth(Fstar, y * (1 + 1e-6), V, **overrides)
         mode = max(mg.BANDS, key=lambda band: beyond[band])
-    return {"Fstar": float(Fstar), "first": float(y), "V": float(V), "eta": eta, "mode": mode}
+    return {"Fstar": float(Fstar), "first": float(y), "V": None if V is None else float(V),
+            "eta": eta, "mode": mode}
 
 
 def kappa_star(overrides):
