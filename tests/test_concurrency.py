@@ -22,7 +22,7 @@ def test_two_make_fig07_one_computation(tmp_path):
     first = make(tmp_path, "fig07")
     lock = tmp_path / ".locks" / "fig07.lock"
     deadline = time.monotonic() + 60
-    while not (lock.exists() and f"process" in lock.read_text()) and time.monotonic() < deadline:
+    while not (lock.exists() and "process" in lock.read_text()) and time.monotonic() < deadline:
         time.sleep(0.05)
     second = make(tmp_path, "fig07")
     out = [p.communicate(timeout=600)[0] for p in (first, second)]
