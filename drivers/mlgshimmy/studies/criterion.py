@@ -90,7 +90,7 @@ def read(name):
 def scan(group):
     results = []
     for item in GROUPS[group]:
-        jobs.append({**item, **kappa_star(item["overrides"])})
+        results.append({**item, **kappa_star(item["overrides"])})
         mg.progress("criterion", f"{group} {item['x']:g} (variant {item['variant']}): "
                                  f"kappa* = {results[-1]['kappa']:.4f} at F* = "
                                  f"{results[-1]['Fstar']:.3f}")
@@ -142,7 +142,7 @@ def auto_kappa(variant, scanned):
 def auto():
     results = []
     for item in read("strut"):
-        jobs.append(auto_kappa(item["variant"], item))
+        results.append(auto_kappa(item["variant"], item))
         mg.progress("criterion", f"AUTO, variant {item['variant']}: kappa* = "
                                  f"{results[-1]['kappa']:.4f} at F* = {results[-1]['Fstar']:.3f} "
                                  f"(scan {item['kappa']:.4f})")
