@@ -29,6 +29,9 @@
 #   AUTO_THREADS    OpenMP threads of each AUTO run (1; an OMP_NUM_THREADS in
 #                   the environment is not used: results depend on it)
 #   PYTEST_ARGS     extra pytest options for `make test` (e.g. -k jacobian)
+#   RHO, MU, EOM    a side-stay geometry (degrees; EOM the eom_terms level, 2
+#                   when an angle is given) for every figure and study, in its
+#                   own tree build/geometry/<tag>/ (mk/geometry.mk)
 #
 # Useful for rules in included makefiles: $(AUTO_DIR), $(PYTHON), `| auto`
 # (AUTO-07p is ready) and $(call auto_equations,...) from mk/auto.mk.
@@ -65,6 +68,7 @@ all: test
 .DEFAULT_GOAL := help
 
 include mk/python.mk
+include mk/geometry.mk
 include mk/auto.mk
 include mk/help.mk
 include c/c.mk

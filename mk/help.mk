@@ -62,6 +62,8 @@ C library and AUTO-07p (docs/c-library.md, docs/auto-workflow.md)
 Settings: AUTO_DIR=<dir> (an AUTO-07p tree or install, e.g. /usr/lib/auto-07p;
 remembered), AUTO_SRC=<tarball>, AUTO_THREADS (1), PYTHON (/usr/bin/python3),
 TEST_TIMEOUT (600 s), PREFIX, DESTDIR, DEMO_DIR (build/demo), MLG_RUN_ROOT.
+Side-stay geometry of any figure or study: RHO=<deg> MU=<deg> [EOM=0|1|2, default 2],
+e.g. make fig10 RHO=10 MU=10; its runs, tables and figures in build/geometry/<tag>/.
 endef
 export MLG_HELP
 
