@@ -63,7 +63,7 @@ class Geometry:
                 raise GeometryError(f"{name}={value:g}: the side-stay angle must be finite and "
                                     "within (-90, 90) degrees")
         if self.eom_terms not in EOM_LEVELS:
-            raise GeometryError(f"EOM={eom_terms}: must be 0 (as printed), 1 (side-stay "
+            raise GeometryError(f"EOM={eom_terms} must be 0 (as printed), 1 (side-stay "
                                 "corrections) or 2 (complete equations)")
 
     def __repr__(self) -> str:
@@ -139,8 +139,8 @@ def from_environment(environ: Mapping[str, str] = os.environ) -> Geometry:
     eom_text = environ.get(ENV_EOM, "").strip()
     if eom_text:
         if eom_text not in ("0", "1", "2"):
-            raise GeometryError(f"EOM={eom_text!r} ({ENV_EOM}): must be 0 (as printed), 1 "
-                                "(side-stay corrections) or 2 (complete equations)")
+            raise GeometryError(f"EOM={eom_text} must be 0 (as printed), 1 (side-stay "
+                                f"corrections) or 2 (complete equations) ({ENV_EOM})")
         eom = int(eom_text)
     else:
         eom = EOM_WITH_ANGLES if (rho is not None or mu is not None) else 0
