@@ -78,6 +78,7 @@ include mk/jobs.mk
 include mk/figures.mk
 include mk/magnitude.mk
 include mk/studies.mk
+include mk/geometries.mk
 -include tests/regression/regression.mk
 
 setup: packages auto
