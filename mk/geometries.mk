@@ -19,3 +19,15 @@ $(eval $(call job_grid,design_map,--rho=$(call shell_quote,$(DESIGN_RHO)) \
 .PHONY: design-map
 design-map: design_map
 
+# Figures at a non-zero side-stay geometry with a regression reference, beside
+# sidestay_rho10_mu10 (mk/studies.mk): `make fig10_rho10_mu10` makes
+# `fig10 RHO=10 MU=10 EOM=2` in its geometry tree and copies its runs to
+# $(RUN_ROOT)/fig10_rho10_mu10/, where `make regress-fig10_rho10_mu10` compares
+# them with tests/reference/fig10_rho10_mu10/ (`make refs-fig10_rho10_mu10`
+# writes that set).
+.PHONY: fig10_rho10_mu10
+fig10_rho10_mu10: $(AUTO_DRIVER_DEPS)
+	$(MAKE) --no-print-directory fig10 RHO=10 MU=10 EOM=2
+	rm -rf $(RUN_ROOT)/$@.tmp && cp -a $(RUN_ROOT)/geometry/rho10_mu10_eom2/fig10 $(RUN_ROOT)/$@.tmp
+	rm -rf $(RUN_ROOT)/$@ && mv $(RUN_ROOT)/$@.tmp $(RUN_ROOT)/$@
+REGRESS_FIGURES += fig10_rho10_mu10

@@ -18,6 +18,7 @@ DEG = draw.DEG
 V_MAX = ct.V_MAX
 V_GRID = ct.SPEED_SCAN
 COLUMNS = ("V", "psi_amp", "freq")
+HIGH_HZ = 8.0      # Hz: the high-frequency orbits (magnitude.BANDS)
 
 
 def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
@@ -45,9 +46,15 @@ def numbers(diagram):
     """The special points of Fig. 10 as {quantity: value}."""
     folds = sorted(V for _, _, V, _ in diagram.folds())
     out = {f"H{k + 1} [m/s]": v for k, (v, _) in enumerate(diagram.hopf)}
-    out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(folds)})
     if geometry.current().baseline:
+        out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(folds)})
         return out    # the paper's table as before
+    # with side-stay angles the low-frequency orbits fold too: S1 is the
+    # paper's S, the fold of least V of the high-frequency orbits (>= 8 Hz)
+    high = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] >= HIGH_HZ)
+    low = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] < HIGH_HZ)
+    out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(high)})
+    out.update({f"low-frequency fold {k + 1} [m/s]": v for k, v in enumerate(low)})
     for name, (_, run) in zip(diagram.names, diagram.parts):   # runs kept up to an MX
         for k, point in enumerate(run("MX")):
             out[f"{name}: stops (MX, {domain.stop_reason(point)}) at V [m/s]"
