@@ -30,6 +30,9 @@
 #                   the environment is not used: results depend on it)
 #   PYTEST_ARGS     extra pytest options for `make test` (e.g. -k jacobian)
 #   TEST_JOBS       pytest workers of `make test` (2; one test file per worker)
+#   RHO, MU, EOM    a side-stay geometry (degrees; EOM the eom_terms level, 2
+#                   when an angle is given) for every figure and study, in its
+#                   own tree build/geometry/<tag>/ (mk/geometry.mk)
 #
 # Useful for rules in included makefiles: $(AUTO_DIR), $(PYTHON), `| auto`
 # (AUTO-07p is ready) and $(call auto_equations,...) from mk/auto.mk.
@@ -83,6 +86,7 @@ all: test
 .DEFAULT_GOAL := help
 
 include mk/python.mk
+include mk/geometry.mk
 include mk/auto.mk
 include mk/help.mk
 include c/c.mk
@@ -92,6 +96,7 @@ include mk/jobs.mk
 include mk/figures.mk
 include mk/magnitude.mk
 include mk/studies.mk
+include mk/geometries.mk
 -include tests/regression/regression.mk
 
 setup: packages auto

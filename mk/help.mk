@@ -38,12 +38,14 @@ Studies
   calibrate                   2 s  the c_psi of the `figures` parameter set
   sidestay RHO=10 MU=10      30 s  side-stay angles [deg] against rho = mu = 0 (EOM=0|1|2)
   sweep                      20 s  critical speed over a (rho, mu) grid (SWEEP_RHO, SWEEP_MU: 3 x 3)
+  design-map                4 min  H1-H3, S, kappa*, y_tlk over (rho, mu) (DESIGN_RHO, DESIGN_MU: 5 x 5; -j2)
   atlas                    17 min  attractor atlas by simulation over (V, F*); -j2: 9 min
   torus                   > 7 min  torus points of Figs. 7 and 10: meshes, windows, curves
 
 Regression and benchmarks
   regress                  20 min  every figure with a reference set, compared with it; -j2: 10 min
   regress-<fig>               5 s  one of them (regress-fig07; regress-fig11: 11 min)
+  fig10_rho10_mu10           50 s  Fig. 10 at rho = mu = 10 deg, EOM 2, for its reference set
   refs, refs-<fig>                 regenerate reference sets, deliberately (as regress)
   bench                      15 s  the benchmark programs
   bench-figures            25 min  make -j1 figures against make -j2 figures
@@ -62,6 +64,8 @@ C library and AUTO-07p (docs/c-library.md, docs/auto-workflow.md)
 Settings: AUTO_DIR=<dir> (an AUTO-07p tree or install, e.g. /usr/lib/auto-07p;
 remembered), AUTO_SRC=<tarball>, AUTO_THREADS (1), PYTHON (/usr/bin/python3),
 TEST_TIMEOUT (600 s), PREFIX, DESTDIR, DEMO_DIR (build/demo), MLG_RUN_ROOT.
+Side-stay geometry of any figure or study: RHO=<deg> MU=<deg> [EOM=0|1|2, default 2],
+e.g. make fig10 RHO=10 MU=10; its runs, tables and figures in build/geometry/<tag>/.
 endef
 export MLG_HELP
 

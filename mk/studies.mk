@@ -3,19 +3,21 @@
 # and the c_psi calibration; included by ../Makefile after figures.mk.
 
 # Side-stay geometry (angles in degrees): make sidestay RHO=10 MU=10 [EOM=0|1|2]
-# (EOM: the eom_terms level, default 2, the complete equations)
+# (EOM: the eom_terms level, default 2, the complete equations).  The study
+# sets its own angles: it runs in the base tree (mk/geometry.mk AT_BASELINE),
+# not in the geometry tree that RHO and MU give every other target.
 EOM ?= 2
 .PHONY: sidestay sidestay_rho10_mu10 calibrate
 sidestay: $(AUTO_DRIVER_DEPS)
 	$(if $(and $(RHO),$(MU)),,$(error make sidestay needs RHO=<deg> MU=<deg>))
 	$(if $(filter-out 0 1 2,$(EOM))$(filter-out 1,$(words $(EOM))),$(error make sidestay: \
 	    EOM=$(EOM) must be 0 (as printed), 1 (side-stay corrections) or 2 (complete equations)))
-	$(PYTHON) -m mlgshimmy.studies.sidestay --rho $(call shell_quote,$(RHO)) \
+	$(AT_BASELINE) $(PYTHON) -m mlgshimmy.studies.sidestay --rho $(call shell_quote,$(RHO)) \
 	    --mu $(call shell_quote,$(MU)) --eom-terms $(EOM)
 
 # The non-zero geometry with a regression reference (tests/reference/).
 sidestay_rho10_mu10: $(AUTO_DRIVER_DEPS)
-	$(PYTHON) -m mlgshimmy.studies.sidestay --rho 10 --mu 10
+	$(AT_BASELINE) $(PYTHON) -m mlgshimmy.studies.sidestay --rho 10 --mu 10
 REGRESS_FIGURES += sidestay_rho10_mu10
 
 # The c_psi of the `figures` set (MLG_C_PSI_FIGURES in c/parameters.c).

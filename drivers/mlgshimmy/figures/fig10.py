@@ -7,7 +7,9 @@ import matplotlib.pyplot as plt
 
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import domain
 from mlgshimmy.shared import draw
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
@@ -16,22 +18,47 @@ DEG = draw.DEG
 V_MAX = ct.V_MAX
 V_GRID = ct.SPEED_SCAN
 COLUMNS = ("V", "psi_amp", "freq")
+HIGH_HZ = 8.0      # Hz: the high-frequency orbits (magnitude.BANDS)
 
 
 def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
-    """Straight rolling in V from V = 0 (run eq) and
+    """Straight rolling in V from V = 0 (0.5 m/s with side-stay angles:
+    geometry.start_speed; run eq) and
     continuation.speed_diagram: (equilibria, Diagram)."""
-    start = ct.Start(parameter_set, V=0.0, **values)
+    start = ct.Start(parameter_set, V=geometry.start_speed(), **values)
     eq = ct.equilibria(rundir, "eq", start, stop={"V": V_MAX})
-    return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID, allow_failed=allow_failed,
-                                figure="fig10", DS=0.05, DSMAX=1.0, NMX=2000)
+    return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID,
+                                allow_failed=allow_failed or not geometry.current().baseline,
+                                figure="fig10", DS=0.05, DSMAX=1.0, NMX=2000, **steps())
+
+
+def steps():
+    """AUTO constants of the orbit runs beyond the paper's: with side-stay
+    angles the links sit off-centre in the freeplay, and the low-frequency
+    orbits fold sharply (four folds between H1 and H2 at rho = mu = 10 deg)
+    where they first reach its edge on one side: steps down to 1e-9 (AUTO's
+    default DSMIN 1e-5 stops there, MX).  A run that still ends in MX is
+    kept up to there and named in the table (numbers)."""
+    return {} if geometry.current().baseline else {"DSMIN": 1e-9}
 
 
 def numbers(diagram):
     """The special points of Fig. 10 as {quantity: value}."""
     folds = sorted(V for _, _, V, _ in diagram.folds())
     out = {f"H{k + 1} [m/s]": v for k, (v, _) in enumerate(diagram.hopf)}
-    out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(folds)})
+    if geometry.current().baseline:
+        out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(folds)})
+        return out    # the paper's table as before
+    # with side-stay angles the low-frequency orbits fold too: S1 is the
+    # paper's S, the fold of least V of the high-frequency orbits (>= 8 Hz)
+    high = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] >= HIGH_HZ)
+    low = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] < HIGH_HZ)
+    out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(high)})
+    out.update({f"low-frequency fold {k + 1} [m/s]": v for k, v in enumerate(low)})
+    for name, (_, run) in zip(diagram.names, diagram.parts):   # runs kept up to an MX
+        for k, point in enumerate(run("MX")):
+            out[f"{name}: stops (MX, {domain.stop_reason(point)}) at V [m/s]"
+                + (f" {k + 1}" if k else "")] = point["V"]
     return out
 
 
@@ -47,15 +74,17 @@ def stored(eq, diagram):
 def compute():
     """The figure (`figures` set, and zero freeplay for reference) and the
     numbers of the `table` set (its failure leaves that column empty)."""
-    print("fig10: F* = 1, y_fp = 1 mm, eps = 0.1 mm (figures set)")
+    at = geometry.parameters()    # the side-stay geometry ({} at the paper's)
+    print("fig10: F* = 1, y_fp = 1 mm, eps = 0.1 mm (figures set)" + geometry.suffix())
     eq, freeplay = speed_diagram(paths.rundir("fig10"), "figures", Fstar=1.0, yfp=1.0,
-                                 eps_rel=0.1)
+                                 eps_rel=0.1, **at)
     print("fig10: zero freeplay, for reference")
-    zero_eq, zero = speed_diagram(paths.rundir("fig10/zero"), "figures", Fstar=1.0, yfp=0.0)
+    zero_eq, zero = speed_diagram(paths.rundir("fig10/zero"), "figures", Fstar=1.0, yfp=0.0,
+                                  **at)
     print("fig10: the same with the `table` set, for its numbers")
     try:
         table = numbers(speed_diagram(paths.rundir("fig10/table"), "table", allow_failed=True,
-                                      Fstar=1.0, yfp=1.0, eps_rel=0.1)[1])
+                                      Fstar=1.0, yfp=1.0, eps_rel=0.1, **at)[1])
     except (autoglue.RunError, RuntimeError) as exc:
         print(f"fig10: the `table` set failed, its column stays empty: {exc.brief}")
         table = {}

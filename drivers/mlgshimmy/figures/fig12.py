@@ -13,6 +13,7 @@ import numpy
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
@@ -28,7 +29,7 @@ VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
 def runs(parameter_set="figures", where="fig12", variant=0):
     """(straight rolling, pitchfork loads, yaw branches, Hopf loads, orbit runs)."""
     rundir = paths.rundir(where)
-    values = {**VALUES, "strut_variant": float(variant)}
+    values = {**VALUES, "strut_variant": float(variant), **geometry.parameters()}
     # The printed strut (variant 1) folds straight rolling twice in F* while
     # eta crosses its 1e-5 m stage switch (F* 0.63-0.70): steps must shrink
     # below AUTO's default DSMIN of 1e-5 there (constants/runs/c.stage_switch).
@@ -89,7 +90,8 @@ def freeplay_boundary(parameter_set, loads, variant=0):
     """psi_fp = y_fp / r_tlk(eta*) [rad] along straight rolling."""
     out = []
     for F in loads:
-        model = mlgmodel.Model(parameter_set, Fstar=F, strut_variant=variant, **VALUES)
+        model = mlgmodel.Model(parameter_set, Fstar=F, strut_variant=variant, **VALUES,
+                               **geometry.parameters())
         out.append(1e-3 * VALUES["yfp"] / model.r_tlk(model.equilibrium()["eta"]))
     return numpy.array(out)
 

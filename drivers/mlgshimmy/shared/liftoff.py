@@ -26,15 +26,16 @@ TOL_V = 2.0               # m/s: the edge speed's bisection interval
 TOL_F = 0.005             # the edge's ends in F* (on V = V_MAX)
 
 
-def lifts_off(csv, V, Fstar, case=freeplay.NOMINAL, t_end=T_END):
+def lifts_off(csv, V, Fstar, case=freeplay.NOMINAL, t_end=T_END, params=None):
     """Whether the run from straight rolling (psi + PSI0) at (V, F*) stops
     on a negative tyre load within t_end; a stop for another reason raises
-    SimulationError naming it."""
+    SimulationError naming it.  params: more model parameters for the
+    simulator ({name: value}, e.g. geometry.simulator_params())."""
     if not (V > 0 and Fstar > 0 and t_end > 0):
         raise ValueError(f"liftoff: V = {V}, Fstar = {Fstar} and t_end = {t_end} must be > 0")
     proc = simulator.run(csv, "--set", "figures", "--V", V, "--Fstar", Fstar,
                          *simulator.freeplay_args(case), "--t-end", t_end, "--dt-out", 1.0,
-                         "--psi0", PSI0)
+                         "--psi0", PSI0, params=params)
     if os.path.exists(csv):
         os.remove(csv)
     if proc.returncode == 0:

@@ -8,7 +8,9 @@ the curves of Hopf points and folds of cycles in (y_fp, V).
     curves = hopf_curves(rundir, "fixed")            # in (y_fp, V)
 
 Scalings (section III): shared.freeplay.  Everything is at
-F* = 1 unless Fstar is passed.
+F* = 1 unless Fstar is passed.  `**model` (where a function takes it)
+overrides parameters or constants of every model it builds by name, e.g.
+strut_variant=1, or a side-stay geometry (shared.geometry.parameters()).
 """
 import functools
 import os
@@ -21,6 +23,7 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
+from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared.freeplay import EPSILON, SCALINGS
 
@@ -48,11 +51,12 @@ def progress(figure, text):
     print(f"{figure}: {text}", flush=True)
 
 
-def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="magnitude"):
+def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="magnitude",
+                 **model):
     """continuation.speed_diagram over V_SCAN at this y_fp (runs
     <tag>_hb<i>, <tag>_po<i>, i from 0), with UZ labels at the speeds `uzr`
     and the weighted small first steps the orbits here need."""
-    return ct.speed_diagram(rundir, "figures", values(scaling, yfp, Fstar), V_SCAN,
+    return ct.speed_diagram(rundir, "figures", values(scaling, yfp, Fstar, **model), V_SCAN,
                             tag=f"{tag}_", first=0, gap=HOPF_GAP, figure=f"{figure}: {tag}",
                             about={"scaling": scaling, "yfp": yfp},
                             UZR={"V": list(uzr)} if uzr else {}, DS=1e-4, DSMAX=DSMAX_V,
@@ -71,20 +75,21 @@ def stable_orbits(diagram, V):
     return found
 
 
-def yfp_thresholds(scaling, V, Fstar=FSTAR):
+def yfp_thresholds(scaling, V, Fstar=FSTAR, **model):
     """[(y_fp, kind, omega)]: where straight rolling changes stability in y_fp
     at speed V (eigenvalue scan over YFP_MIN..YFP_MAX)."""
     grid = numpy.geomspace(YFP_MIN, YFP_MAX, 241)
     return spectrum.stability_changes("figures", "yfp", grid, V=V, Fstar=Fstar,
-                                      **SCALINGS[scaling])
+                                      **SCALINGS[scaling], **model)
 
 
-def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude"):
+def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude", **model):
     """A periodic orbit at fixed V continued in y_fp both ways over
     [YFP_MIN, YFP_MAX], across the Hopf points of straight rolling in y_fp
     (continuation.follow_orbits; runs stop 0.1% either side of them).
     Returns (down, up): the lists of runs in each direction, in order."""
-    hopf = {y: w / (2 * numpy.pi) for y, kind, w in yfp_thresholds(scaling, V) if kind == "HB"}
+    hopf = {y: w / (2 * numpy.pi) for y, kind, w in yfp_thresholds(scaling, V, **model)
+            if kind == "HB"}
     return tuple(ct.follow_orbits(rundir, lambda n, d=direction: f"{tag}_{d}{n}", point, "yfp",
                                   hopf, lambda y: 1e-3 * y, (YFP_MIN, YFP_MAX),
                                   figure=f"{figure}: {tag}", DS=ds, DSMAX=1.0, NMX=1000,
@@ -92,7 +97,8 @@ def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude"):
                  for direction, ds in (("down", -0.005), ("up", 0.005)))
 
 
-def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="magnitude"):
+def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="magnitude",
+                **model):
     """Curves of Hopf points of straight rolling in (y_fp, V), V in
     [V_MIN, V_MAX], y_fp in [YFP_MIN, YFP_MAX], each continued both ways
     from a Hopf point found at one of the seed y_fp values; a seed Hopf point
@@ -100,7 +106,7 @@ def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="ma
     frequency along a curve is 1/T (PAR(11), printed)."""
     curves = []
     for yfp in seeds:
-        vals = values(scaling, yfp, Fstar)
+        vals = values(scaling, yfp, Fstar, **model)
         for V, _ in spectrum.hopf_scan("figures", "V", V_SCAN, **vals):
             if any(_on_curve(c, yfp, V) for c in curves):
                 continue
@@ -166,7 +172,7 @@ def linear_fit(x, y):
     return s0, residual, float(s), float(c)
 
 
-def orbits_in_yfp(rundir, diagram, figure="magnitude"):
+def orbits_in_yfp(rundir, diagram, figure="magnitude", **model):
     """{V: (run down, run up)}: the stable orbit at each of V_ORBITS in
     `diagram` continued in y_fp.  Raises RunError unless exactly one stable
     orbit carries the UZ label at that speed."""
@@ -177,7 +183,8 @@ def orbits_in_yfp(rundir, diagram, figure="magnitude"):
             raise autoglue.RunError(f"{figure}: {len(found)} stable orbits at V = {V:g} "
                                     f"(y_fp = {diagram.yfp:g}), expected one")
         run, lab = found[0]
-        result[V] = orbit_in_yfp(rundir, f"orbit_V{V:g}", run(lab), diagram.scaling, V, figure)
+        result[V] = orbit_in_yfp(rundir, f"orbit_V{V:g}", run(lab), diagram.scaling, V, figure,
+                                 **model)
     return result
 
 
@@ -221,7 +228,7 @@ def stored_diagram(diagram):
             "turns": [(run[0]["V"][0], min(run[0]["V"])) for run in diagram.branches]}
 
 
-def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_ORBITS):
+def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_ORBITS, **model):
     """The parts of a figure made of diagrams in V (jobs.Parts): one per
     y_fp, named <prefix>y<y_fp>, computing the stored diagram (runs
     <prefix>y<y_fp>_hb<i>, _po<i>, in the part's own run directory
@@ -230,10 +237,11 @@ def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_OR
     def job(y, name):
         def run():
             rundir = paths.rundir(os.path.join(figure, name))
-            d = diagram_in_V(rundir, f"{prefix}y{y:g}", scaling, y, uzr=uzr, figure=figure)
+            d = diagram_in_V(rundir, f"{prefix}y{y:g}", scaling, y, uzr=uzr, figure=figure,
+                             **model)
             out = {"diagram": stored_diagram(d)}
             if y == orbits_at:
-                out["orbits"] = stored_orbits(orbits_in_yfp(rundir, d, figure))
+                out["orbits"] = stored_orbits(orbits_in_yfp(rundir, d, figure, **model))
             return out
         return run
     names = {y: f"{prefix}y{y:g}" + ("_orbits" if y == orbits_at else "") for y in freeplays}
@@ -270,17 +278,36 @@ ENVELOPE_LOADS = numpy.round(numpy.arange(0.1, 2.0001, 0.05), 3)
 def straight_rolling(parameter_set, Fstar, overrides):
     """The straight-rolling state at load F* with the parameter overrides
     ((name, value) pairs).  It is the same for every V > 0 (docs/model.md
-    4.20) and every freeplay (the torque links carry no load at psi = 0),
-    so the scans below solve it once per load."""
+    4.20), and at rho = mu = 0 for every freeplay (the torque links carry
+    no load at psi = 0), so the scans below solve it once per load there
+    (rolling_state)."""
     return mlgmodel.Model(parameter_set, Fstar=Fstar, **dict(overrides)).equilibrium()
+
+
+def rolling_state(Fstar, yfp, scaling="fixed", parameter_set="figures", **model):
+    """straight_rolling at this freeplay.  At rho = mu = 0 it is solved once
+    per load.  With side-stay angles (rho or mu in `model` non-zero)
+    straight rolling twists the links (docs/model.md 8.7): its state depends
+    on the freeplay, and at light load several equilibria coexist, so it is
+    the one continued from zero freeplay (shared.rolling; NoRollingState
+    beyond a fold in y_fp)."""
+    if model.get("rho", 0.0) or model.get("mu", 0.0):
+        return rolling.state(parameter_set, Fstar, yfp, SCALINGS[scaling], **model)
+    return straight_rolling(parameter_set, Fstar, tuple(sorted(model.items())))
 
 
 def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
     """{band: largest real part of the eigenvalues of straight rolling whose
     frequency |Im|/2pi lies in the band} (-inf if none), and "any": the
     largest real part of all.  `model` overrides parameters or constants by
-    name (e.g. strut_variant=1, c_psi=410)."""
-    u = straight_rolling(parameter_set, Fstar, tuple(sorted(model.items())))
+    name (e.g. strut_variant=1, c_psi=410, a side-stay geometry).  Where
+    straight rolling has ended at a fold in y_fp (side-stay angles: the
+    links jump across the freeplay, a real eigenvalue has crossed zero)
+    "real" and "any" are +inf, the oscillatory bands -inf."""
+    try:
+        u = rolling_state(Fstar, yfp, scaling, parameter_set, **model)
+    except rolling.NoRollingState:
+        return {"any": numpy.inf, **{band: -numpy.inf for band in BANDS}, "real": numpy.inf}
     model = mlgmodel.Model(parameter_set, **values(scaling, yfp, Fstar, V=V), **model)
     model.check()
     return spectrum.growth(model, BANDS, u)
@@ -313,6 +340,22 @@ def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN
         step = speeds[1] - speeds[0]
         speeds = numpy.linspace(max(V_MIN, best[1] - step), min(V_LIMIT, best[1] + step), 9)
     return best
+
+
+def least_unstable(Fstar, **model):
+    """At one load: the smallest y_fp [mm] with straight rolling unstable for
+    some V <= V_LIMIT ("first"), that speed ("V"), the static compression
+    eta* [m] there and the band that is unstable just beyond it ("mode";
+    None if none is for y_fp up to YFP_MAX): what kappa* minimises (eq. 17;
+    studies.criterion, studies.design_map)."""
+    y, V = extreme_yfp_crossing(Fstar, "any", **model)
+    eta = rolling_state(Fstar, y if numpy.isfinite(y) else YFP_MAX, **model)["eta"]
+    mode = None
+    if numpy.isfinite(y):   # the band that is unstable just beyond the crossing
+        beyond = growth(Fstar, y * (1 + 1e-6), V, **model)
+        mode = max(BANDS, key=lambda band: beyond[band])
+    return {"Fstar": float(Fstar), "first": float(y), "V": None if V is None else float(V),
+            "eta": eta, "mode": mode}
 
 
 def window_point_curve(rundir, tag, yfp, Fstar, stop, dsmax=0.02, **model):

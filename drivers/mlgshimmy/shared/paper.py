@@ -7,6 +7,7 @@ ours_* map a quantity (e.g. "H1 [m/s]") to a value; quantities the paper
 does not print are listed with "-" in its column."""
 import os
 
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs.atomic import write_text
 
@@ -25,19 +26,30 @@ def _cell(value):
 
 
 def report(figure, ours, ours_table=None):
-    """Print and store the table; returns its text."""
+    """Print and store the table; returns its text.  At a side-stay
+    geometry (shared.geometry) the table says so and has a column of the
+    baseline's numbers (rho = mu = 0, printed equations) where its figure
+    has been computed (make <fig> without RHO, MU)."""
     paper = PAPER.get(figure, {})
     ours_table = ours_table or {}
-    rows = [("quantity", "paper", "ours (figures)", "ours (table)", "rel. error")]
+    at = geometry.current()
+    base = None if at.baseline else (geometry.baseline_numbers(figure) or {})
+    rows = [("quantity", "paper", "ours (figures)", "ours (table)", "rel. error")
+            + (("baseline (figures)",) if base is not None else ())]
     for quantity in list(paper) + [q for q in ours if q not in paper]:
         value, printed = ours.get(quantity), paper.get(quantity)
         error = (f"{(value - printed) / printed:+.2%}"
                  if value is not None and printed is not None else "-")
         rows.append((quantity, _cell(printed), _cell(value), _cell(ours_table.get(quantity)),
-                     error))
-    widths = [max(len(row[k]) for row in rows) for k in range(5)]
+                     error) + ((_cell(base.get(quantity)),) if base is not None else ()))
+    widths = [max(len(row[k]) for row in rows) for k in range(len(rows[0]))]
     lines = ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in rows]
-    text = f"{figure}: paper vs ours (rel. error of the figures set)\n" + "\n".join(lines) + "\n"
+    head = f"{figure}: paper vs ours (rel. error of the figures set)"
+    if base is not None:
+        head += (f"\n{figure}: at {at.describe()}; the paper and the baseline column: "
+                 "rho = mu = 0, eom_terms = 0"
+                 + ("" if base else f" (baseline not computed: make {figure})"))
+    text = head + "\n" + "\n".join(lines) + "\n"
     write_text(os.path.join(paths.tables_dir(), f"{figure}.txt"), text)
     print(text, end="")
     return text

@@ -23,6 +23,7 @@ from mlgshimmy.shared import attractor
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import floquet
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import simulator
 from mlgshimmy.shared import spectrum
@@ -85,7 +86,8 @@ def simulated_rate(values, v, psi0, span=SIM_T, rtol=None):
         csv = os.path.join(tmp, "run.csv")
         simulator.simulate(csv, "--set", "figures", "--V", v, "--Fstar", values["Fstar"],
                            "--yfp", values["yfp"], "--eps-abs", eps, "--eps-rel", 0,
-                           "--t-end", span[1], "--psi0", psi0, *tolerance)
+                           "--t-end", span[1], "--psi0", psi0, *tolerance,
+                           params={k: repr(values[k]) for k in geometry.KEYS if k in values})
         data = numpy.loadtxt(csv, delimiter=",", skiprows=1, usecols=(0, 1))
     fit = attractor.spread_trend(data[:, 0], data[:, 1], span[0], span[1], SPAN)
     return fit["rate"], fit["first"], fit["last"]

@@ -23,6 +23,7 @@ import numpy
 
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import draw
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
@@ -61,19 +62,15 @@ AXES = {"strut": "strut variant", "stage": r"stage switch $\eta_s$ [m] (variant 
 
 def first_unstable(Fstar, **overrides):
     """At one load: the smallest y_fp [mm] with straight rolling unstable for
-    some V <= V_LIMIT, that speed, and the static compression eta* [m]."""
-    y, V = mg.extreme_yfp_crossing(Fstar, "any", **overrides)
-    eta = mg.straight_rolling("figures", Fstar, tuple(sorted(overrides.items())))["eta"]
-    mode = None
-    if numpy.isfinite(y):   # the band that is unstable just beyond the crossing
-        beyond = mg.growth(Fstar, y * (1 + 1e-6), V, **overrides)
-        mode = max(mg.BANDS, key=lambda band: beyond[band])
-    return {"Fstar": float(Fstar), "first": float(y), "V": None if V is None else float(V),
-            "eta": eta, "mode": mode}
+    some V <= V_LIMIT, that speed, and the static compression eta* [m]
+    (magnitude.least_unstable)."""
+    return mg.least_unstable(Fstar, **overrides)
 
 
 def kappa_star(overrides):
-    """{kappa, Fstar, V, eta} at the minimum over the envelope's loads."""
+    """{kappa, Fstar, V, eta} at the minimum over the envelope's loads, at the
+    side-stay geometry of the run (shared.geometry)."""
+    overrides = {**overrides, **geometry.parameters()}
     kappa, best = mg.kappa_star(lambda F: first_unstable(F, **overrides), LOADS, finer=(5, 4))
     return {"kappa": kappa, "Fstar": best["Fstar"], "V": best["V"],
             "eta": best["eta"], "mode": best["mode"]}
@@ -118,10 +115,11 @@ def auto_kappa(variant, scanned):
         raise autoglue.RunError(f"variant {variant}: the scan's minimum lies at V = "
                                 f"{scanned['V']:.3f}, not on V = {mg.V_LIMIT}")
     stop = (mg.ENVELOPE_LOADS[0], mg.ENVELOPE_LOADS[-1])
-    start = mg.extreme_yfp_crossing(mg.FSTAR, "high", strut_variant=float(variant))[0]
+    model = {"strut_variant": float(variant), **geometry.parameters()}
+    start = mg.extreme_yfp_crossing(mg.FSTAR, "high", **model)[0]
     curve = mg.window_point_curve(paths.rundir(os.path.join("criterion", "auto")),
                                   f"a_v{variant}", start, mg.FSTAR, stop, dsmax=0.005,
-                                  strut_variant=float(variant))
+                                  **model)
     pieces = {}
     for direction, run in curve.items():
         if isinstance(run, autoglue.RunError):
@@ -215,6 +213,8 @@ def report():
         rows.append(f"  variant {c['variant']}: scan {c['scan']:.5f}, AUTO {c['kappa']:.5f} "
                     f"at F* = {c['Fstar']:.4f} ({c['points']} points), relative difference "
                     f"{c['relative difference']:+.2e}")
+    if not geometry.current().baseline:
+        rows.insert(0, f"at {geometry.describe()}")
     text = "\n".join(rows)
     print(text)
     jobs.write_text(os.path.join(paths.tables_dir(), "criterion.txt"), text + "\n")
@@ -236,7 +236,7 @@ def custom(assignments):
         if overrides[name] is None:
             raise ValueError(f"{text!r}: expected NAME=VALUE with a number")
     try:
-        mlgmodel.Model("figures", **overrides).check()
+        mlgmodel.Model("figures", **overrides, **geometry.parameters()).check()
     except KeyError as exc:
         raise ValueError(f"unknown parameter: {exc}") from exc
     result = kappa_star(overrides)

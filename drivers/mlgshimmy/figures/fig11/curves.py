@@ -5,7 +5,7 @@ curves stop in MX at one point (mx_ends)."""
 import numpy
 
 from mlgshimmy.figures.fig11.orbits import slice_rundir
-from mlgshimmy.figures.fig11.plane import FREEPLAY, F_MAX, F_MIN, SLICES, STOP, V_MAX, V_SCAN
+from mlgshimmy.figures.fig11.plane import GEOMETRY, MODEL, F_MAX, F_MIN, SLICES, STOP, V_MAX, V_SCAN
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
@@ -21,7 +21,7 @@ def curves(rundir, parameter_set="figures"):
     pitchfork loads (at three speeds: they do not depend on V) and the
     zero-freeplay Hopf curve."""
     out = {"hopf": [], "fold": [], "zero": []}
-    points = ct.hopf_points(rundir, "hb", parameter_set, "V", V_SCAN, Fstar=1.0, **FREEPLAY)
+    points = ct.hopf_points(rundir, "hb", parameter_set, "V", V_SCAN, Fstar=1.0, **MODEL)
     for k, point in enumerate(points):
         for sign in (1, -1):
             out["hopf"].append(ct.hopf_curve(
@@ -36,7 +36,8 @@ def curves(rundir, parameter_set="figures"):
             out["fold"].append(ct.fold_curve(
                 rundir, f"fold{k + 1}{'+-'[sign < 0]}", point, ("V", "Fstar"), stop=STOP,
                 DS=0.05 * sign, DSMAX=1.0, NMX=400, allow_mx=True))
-    zero, = ct.hopf_points(rundir, "hb_zero", parameter_set, "V", V_SCAN, Fstar=1.0, yfp=0.0)
+    zero, = ct.hopf_points(rundir, "hb_zero", parameter_set, "V", V_SCAN, Fstar=1.0, yfp=0.0,
+                           **GEOMETRY)
     for sign in (1, -1):
         out["zero"].append(ct.hopf_curve(rundir, f"hopf_zero{'+-'[sign < 0]}", zero,
                                          ("Fstar", "V"), stop=STOP, DS=0.02 * sign,
@@ -44,7 +45,7 @@ def curves(rundir, parameter_set="figures"):
     out["pitchfork"] = []
     for V in (5.0, 50.0, 300.0):
         loads = [f for f, kind, _ in spectrum.stability_changes(
-            parameter_set, "Fstar", numpy.linspace(F_MIN, F_MAX, 800), V=V, **FREEPLAY)
+            parameter_set, "Fstar", numpy.linspace(F_MIN, F_MAX, 800), V=V, **MODEL)
             if kind == "BP"]
         print(f"fig11: pitchforks at V = {V:g}: F* = " + ", ".join(f"{f:.6f}" for f in loads))
         out["pitchfork"].append(loads)

@@ -4,6 +4,7 @@ import numpy
 import os
 
 from mlgshimmy.figures.fig11.plane import FREEPLAY, V_MAX
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import liftoff
 from mlgshimmy.shared import paths
 
@@ -22,7 +23,8 @@ def liftoff_speed(Fstar):
     off at load F*, bisected from LIFTOFF_FROM up to V_MAX; None if none
     does at V_MAX."""
     csv = os.path.join(liftoff_rundir(), f"F{Fstar:.2f}.csv")
-    V = liftoff.edge_speed(csv, Fstar, LIFTOFF_FROM, V_MAX, case=FREEPLAY)
+    V = liftoff.edge_speed(csv, Fstar, LIFTOFF_FROM, V_MAX, case=FREEPLAY,
+                           params=geometry.simulator_params())
     print(f"fig11: lift-off at F* = {Fstar:.2f}: "
           + (f"from V = {V:.1f} m/s" if V else f"none up to V = {V_MAX:g} m/s"), flush=True)
     return {"Fstar": float(Fstar), "V": V}
@@ -61,7 +63,8 @@ def liftoff_end(parts, part):
                            "the outermost lift-off load: extend LIFTOFF_LOADS")
     csv = os.path.join(liftoff_rundir(), f"{part}.csv")
     Fstar = liftoff.edge_load(csv, V_MAX, speeds[outside]["Fstar"], speeds[inside]["Fstar"],
-                              checked=True, case=FREEPLAY)
+                              checked=True, case=FREEPLAY,
+                              params=geometry.simulator_params())
     print(f"fig11: lift-off on V = {V_MAX:g} from F* = {Fstar:.4f}", flush=True)
     return {"Fstar": Fstar}
 

@@ -3,7 +3,7 @@ the large-amplitude family (not Hopf-born in range) followed from F* = 1,
 the eigenvalue grid of straight rolling, and which orbits are stable."""
 import numpy
 
-from mlgshimmy.figures.fig11.plane import (FREEPLAY, F_GRID, F_MAX, F_MIN, SLICES, V_GRID, V_MAX, V_MIN, V_SCAN)
+from mlgshimmy.figures.fig11.plane import (MODEL, F_GRID, F_MAX, F_MIN, SLICES, V_GRID, V_MAX, V_MIN, V_SCAN)
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
@@ -24,9 +24,9 @@ def large_seed(rundir, parameter_set="figures"):
     """The large-amplitude shimmy orbit at F* = 1: the orbits born at the
     last Hopf point of straight rolling there, continued to V = 300 m/s
     (its UZ1 label), where they are stable."""
-    hopf = spectrum.hopf_scan(parameter_set, "V", V_SCAN, Fstar=1.0, **FREEPLAY)
+    hopf = spectrum.hopf_scan(parameter_set, "V", V_SCAN, Fstar=1.0, **MODEL)
     point = ct.hopf_point(rundir, "large_hb", parameter_set, "V", hopf[-1][0], Fstar=1.0,
-                          **FREEPLAY)
+                          **MODEL)
     return ct.periodic_from(rundir, "large_seed", point, stop={"V": [V_MIN, 300.0]})
 
 
@@ -75,7 +75,7 @@ def large_upwards(Fstar):
 
 def straight_rolling_stable(parameter_set="figures"):
     """[F*, V] on F_GRID x V_GRID: True where straight rolling is stable."""
-    return spectrum.stable_on_grid(parameter_set, "Fstar", F_GRID, "V", V_GRID, **FREEPLAY)
+    return spectrum.stable_on_grid(parameter_set, "Fstar", F_GRID, "V", V_GRID, **MODEL)
 
 
 ORBIT_COLUMNS = ("V", "freq", "psi_amp")
@@ -90,7 +90,7 @@ def slice_diagram(Fstar, parameter_set="figures"):
     its folds of high-frequency orbits [(run name, label)] (to start fold
     curves from)."""
     print(f"fig11: slice F* = {Fstar:.4f}")
-    diagram = ct.speed_diagram(slice_rundir(Fstar), parameter_set, {"Fstar": Fstar, **FREEPLAY},
+    diagram = ct.speed_diagram(slice_rundir(Fstar), parameter_set, {"Fstar": Fstar, **MODEL},
                                V_SCAN, allow_failed=True, figure="fig11", DS=0.05, DSMAX=1.0,
                                NMX=2000)
     return {"branches": [b for run in diagram.branches

@@ -11,6 +11,7 @@ import matplotlib.pyplot as plt
 import numpy
 
 from mlgshimmy.shared import branches
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs.atomic import write_atomic
 
@@ -76,7 +77,9 @@ def surface(ax, quads, stable, alpha=(0.45, 0.85), light=(-0.4, -1.0, 1.2)):
 
 def save(fig, name):
     """Write $MLG_RUN_ROOT/figures/<name>.png and .pdf (each written beside
-    and renamed, so a reader never sees half a file) and close fig."""
+    and renamed, so a reader never sees half a file) and close fig.  A figure
+    made at a side-stay geometry says so in its title (geometry.stamp)."""
+    geometry.stamp(fig)
     written = [write_atomic(os.path.join(paths.figures_dir(), f"{name}.{ext}"),
                             lambda out, ext=ext: fig.savefig(out, format=ext, bbox_inches="tight"),
                             mode="wb")

@@ -14,7 +14,7 @@ import resource
 import numpy
 
 from mlgshimmy.shared import attractor
-from mlgshimmy.shared import freeplay, simulator
+from mlgshimmy.shared import freeplay, geometry, simulator
 from mlgshimmy.shared import mlgmodel
 
 FREEPLAY = freeplay.NOMINAL      # y_fp = 1 mm, eps = 0.1 mm (Fig. 11)
@@ -29,8 +29,12 @@ DT_OUT = 1e-3                    # sampling [s]: 25 samples per 40 Hz period
 
 
 def simulator_args(v, fstar, psi0, t_end):
+    """The simulator's options for one start, at the side-stay geometry of
+    the run (shared.geometry; none at the paper's)."""
+    at = [word for name, value in geometry.simulator_params().items()
+          for word in ("--param", f"{name}={value}")]
     return ["--set", "figures", "--V", v, "--Fstar", fstar, *simulator.freeplay_args(FREEPLAY),
-            "--t-end", t_end, "--dt-out", DT_OUT, "--psi0", psi0]
+            "--t-end", t_end, "--dt-out", DT_OUT, "--psi0", psi0, *at]
 
 
 def discard(path):
@@ -64,7 +68,8 @@ def freeplay_angle(fstar):
     """psi_fp = y_fp / r_tlk [rad] at straight rolling (r_tlk depends on the
     strut compression, so on F*): 2.56e-3 at F* = 0.02, 2.05e-3 at 3.5."""
     model = mlgmodel.Model("figures", Fstar=fstar, yfp=FREEPLAY["yfp"],
-                           eps_abs=FREEPLAY["eps_abs"], eps_rel=FREEPLAY["eps_rel"])
+                           eps_abs=FREEPLAY["eps_abs"], eps_rel=FREEPLAY["eps_rel"],
+                           **geometry.parameters())
     return FREEPLAY["yfp"] * 1e-3 / model.r_tlk(model.equilibrium()["eta"])
 
 

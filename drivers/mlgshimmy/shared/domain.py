@@ -1,0 +1,66 @@
+"""Why an AUTO run of periodic orbits stopped without convergence (MX):
+at the edge of the model's domain, where a tyre load of the orbit reaches
+zero (wheel lift-off, c/mlg_model.h MLG_WHEEL_LIFT_OFF), or short of it
+(a numerical stop).  With side-stay angles the large-amplitude shimmy
+orbits reach lift-off below V = 600 m/s (rho = mu = 10 deg: F* = 1 at
+582.8 m/s, F* = 0.2 at 472.4 m/s), where at rho = mu = 0 they do not.
+
+    reason = stop_reason(run("MX")[0])   # "wheel lift-off" or "numerical"
+"""
+import ctypes
+from typing import Dict
+
+from mlgshimmy.shared import mlgmodel
+
+# mlg_diagnostics (c/mlg_model.h), in order: (name, number of doubles)
+_FIELDS = (("F_z", 1), ("F_dyn", 1), ("cos_phi", 1), ("F_keta", 1), ("F_ceta", 1),
+           ("L_beta", 1), ("L_delta", 1), ("I_a", 1), ("I_beta", 1), ("I_delta", 1),
+           ("k_delta", 1), ("c_delta", 1), ("r_tlk", 1), ("F", 2), ("d", 2), ("h", 2),
+           ("L", 2), ("r_eff", 2), ("alpha", 2), ("F_y", 2), ("M_z", 2), ("M_kpsi", 1),
+           ("M_cpsi", 1), ("M_psi", 1), ("M_delta", 1), ("M_beta", 1), ("m", 1), ("p", 1))
+LIFT_OFF_LOAD = 1e-4         # of the static tyre load: "zero" at an MX stop
+
+
+def _solution_model(sol) -> mlgmodel.Model:
+    names = [n for n in mlgmodel.PARNAMES if n and n != mlgmodel.CONSTANTS_FILE]
+    return mlgmodel.Model("figures", **{n: sol.PAR[n] for n in names})
+
+
+def diagnose(model: mlgmodel.Model, u: Dict[str, float]) -> Dict[str, object]:
+    """mlg_diagnose at the state u ({name: value}): {field: value, or a
+    (left, right) pair}; RuntimeError if u is outside the model's domain."""
+    lib = mlgmodel.library()
+    count = sum(n for _, n in _FIELDS)
+
+    class Out(ctypes.Structure):
+        _fields_ = [("values", ctypes.c_double * count)]
+    x = (ctypes.c_double * mlgmodel.NX)(*[u[n] for n in mlgmodel.UNAMES])
+    out = Out()
+    status = lib.mlg_diagnose(ctypes.byref(model._p), x, ctypes.byref(out))
+    values, k, found = list(out.values), 0, {}
+    for name, n in _FIELDS:
+        found[name] = values[k] if n == 1 else tuple(values[k:k + n])
+        k += n
+    found["status"] = status
+    return found
+
+
+def tyre_loads(model: mlgmodel.Model, u: Dict[str, float]):
+    """(F_L, F_R) [N] at the state u."""
+    return diagnose(model, u)["F"]
+
+
+def least_tyre_load(sol) -> float:
+    """The least tyre load [N] over the stored points of an orbit (an AUTO
+    solution), relative to nothing: see stop_reason."""
+    model = _solution_model(sol)
+    return min(min(tyre_loads(model, {n: sol[n][k] for n in mlgmodel.UNAMES}))
+               for k in range(len(sol["t"])))
+
+
+def stop_reason(sol) -> str:
+    """"wheel lift-off" if the orbit `sol` (an MX solution) has a tyre load
+    below LIFT_OFF_LOAD of the static one, else "numerical"."""
+    model = _solution_model(sol)
+    static = min(tyre_loads(model, model.equilibrium()))
+    return "wheel lift-off" if least_tyre_load(sol) < LIFT_OFF_LOAD * static else "numerical"

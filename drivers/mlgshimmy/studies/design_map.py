@@ -1,0 +1,333 @@
+"""Design map: the paper's answers over a (rho, mu) grid of side-stay angles.
+
+Each grid point is an independent job (shared.jobs.grid, like the sweep)
+with its own run directory $MLG_RUN_ROOT/design_map/rho<deg>_mu<deg>/ and
+result.json there, at the complete equations (eom_terms = 2) and the
+`figures` set:
+
+  zero freeplay, F* = 1: the critical speed (first Hopf point in V);
+  y_fp = 1 mm, eps = 0.1 mm (freeplay.NOMINAL), F* = 1: the Hopf points
+    of straight rolling, named by frequency as in Fig. 10 (H1, H2 the
+    low-frequency pair, H3 the first high-frequency one), the fold S of the
+    high-frequency orbit branch born at H3 and the bistable interval [S, H3]
+    (stable straight rolling beside stable large shimmy);
+  kappa* (eq. 17, eps = 0.1 mm, V <= 120 m/s, F* in [0.1, 2]) with the load,
+    speed and mode where it is set (the criterion's recipe,
+    magnitude.least_unstable and kappa_star);
+  the static torque-link position y_tlk/y_fp of straight rolling at F* = 1
+    (y_fp = 1 mm) and at kappa*'s point (whether the links sit against one
+    side of the freeplay).
+
+Each number the cheapest exact way: the Hopf points are stability changes of
+straight rolling, found by eigenvalue scans of the library's exact Jacobian
+and bisected to rounding (spectrum.stability_changes; AUTO's location agrees
+to its tolerance and adds nothing), and so is kappa* (exact in y_fp at eps =
+0.1 mm).  Only S needs AUTO: the orbits born at H3 (continuation.hopf_point,
+periodic_from), followed past their folds up to psi_amp = PSI_AMP_STOP; S is
+the fold of least V, where the stable large orbits begin.
+Subcommands (angles in degrees: "a,b,c" or "start:stop:step"):
+
+  design_map.py check   [--rho L --mu L]   validate every grid point (no AUTO)
+  design_map.py targets [--rho L --mu L]   the result files, for make
+  design_map.py jobs    [--rho L --mu L]   one shell command per grid point
+                                           (GNU parallel, a Slurm array)
+  design_map.py point rho<deg>_mu<deg>     compute one grid point
+  design_map.py summary [--rho L --mu L]   the maps, the table, the json
+
+`make [-jN] design-map [DESIGN_RHO=... DESIGN_MU=...]` runs check, every
+point, summary: $MLG_RUN_ROOT/figures/design_map.png, tables/design_map.txt
+and design_map.json (docs/design-map.md).
+"""
+import json
+import os
+import sys
+import time
+
+import numpy
+
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import freeplay
+from mlgshimmy.shared import geometry
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import rolling
+from mlgshimmy.shared import spectrum
+from mlgshimmy.shared.jobs import grid as jobgrid
+
+POINTS = jobgrid.Plane("rho", "mu", "design_map")    # point rho<deg>_mu<deg>
+DEFAULT_GRID = "-20:20:10"
+EOM = 2                      # the complete equations (docs/model.md 8.4)
+FSTAR = 1.0
+FREEPLAY = freeplay.NOMINAL  # y_fp = 1 mm, eps = 0.1 mm
+HIGH_HZ = mg.BANDS["high"][0]  # a Hopf point of this frequency or more starts S's branch
+PSI_AMP_STOP = 0.01          # rad: the branch from H3 is followed to here, past S
+ORBIT_STEPS = {"DS": 0.05, "DSMAX": 1.0, "NMX": 2000, "DSMIN": 1e-9}   # as fig10's
+KAPPA_LOADS = mg.ENVELOPE_LOADS[::2]        # as studies.criterion
+KAPPA_FINER = (5, 4)
+# the quantities of a point: (key, table heading, unit or "", format)
+QUANTITIES = (("critical_V", "V_crit (zero freeplay)", "m/s", ".3f"),
+              ("H1", "H1", "m/s", ".3f"), ("H2", "H2", "m/s", ".3f"), ("H3", "H3", "m/s", ".3f"),
+              ("S", "S", "m/s", ".3f"), ("bistable_width", "H3 - S (bistable)", "m/s", ".3f"),
+              ("kappa", "kappa*", "", ".4f"), ("kappa_Fstar", "F* at kappa*", "", ".3f"),
+              ("ytlk_ratio", "y_tlk/y_fp, F* = 1", "", "+.3f"),
+              ("ytlk_ratio_kappa", "y_tlk/y_fp at kappa*", "", "+.3f"))
+
+
+def axes(args):
+    rhos = jobgrid.axis(args.rho, "DESIGN_RHO (--rho)", "angles in degrees")
+    mus = jobgrid.axis(args.mu, "DESIGN_MU (--mu)", "angles in degrees")
+    return jobgrid.plane(rhos, mus)
+
+
+def at(rho, mu):
+    """The geometry of a grid point and its model parameters (eom_terms = 2
+    at every point, rho = mu = 0 included)."""
+    g = geometry.Geometry(rho, mu, EOM)
+    return g, {"rho": g.parameters()["rho"], "mu": g.parameters()["mu"],
+               "eom_terms": float(EOM)}
+
+
+def check(points):
+    bad = []
+    for rho, mu in points:
+        try:
+            _, values = at(rho, mu)
+            for case in ({"yfp": 0.0}, FREEPLAY):
+                mlgmodel.Model("figures", V=ct.V_MIN, Fstar=FSTAR, **case, **values).check()
+        except geometry.GeometryError:
+            bad.append(f"rho = {rho:g} deg, mu = {mu:g} deg: the angles must lie within "
+                       "(-90, 90) degrees (DESIGN_RHO, DESIGN_MU)")
+        except ValueError as exc:
+            bad.append(f"rho = {rho:g} deg, mu = {mu:g} deg: {exc}")
+    if bad:
+        sys.exit("design_map: grid rejected before any run:\n  " + "\n  ".join(bad))
+    print(f"design_map: {len(points)} grid points valid")
+
+
+def speeds(values):
+    """The scans at F* = 1: {critical_V, hopf: [(V, Hz)] with freeplay, bp:
+    the real-eigenvalue crossings in V (none expected)}."""
+    zero = spectrum.hopf_scan("figures", "V", ct.SPEED_SCAN, Fstar=FSTAR, yfp=0.0, **values)
+    changes = spectrum.stability_changes("figures", "V", ct.SPEED_SCAN, Fstar=FSTAR,
+                                         **FREEPLAY, **values)
+    return {"critical_V": zero[0][0] if zero else None,
+            "hopf": [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"],
+            "bp": [v for v, kind, _ in changes if kind == "BP"]}
+
+
+def fold_S(rundir, hopf, values):
+    """AUTO: the orbits born at the first Hopf point of at least HIGH_HZ
+    (H3), followed to psi_amp = PSI_AMP_STOP, and their fold of least V, S
+    (a fold within 0.1 % of the Hopf point is AUTO's spurious first-step LP,
+    continuation.Diagram.folds).  {S, from_V, stop, folds, S_psi_amp}."""
+    high = [v for v, hz in hopf if hz >= HIGH_HZ]
+    if not high:
+        return {"S": None, "from_V": None, "stop": "no high-frequency Hopf point", "folds": [],
+                "S_psi_amp": None}
+    start = high[0]
+    point = ct.hopf_point(rundir, "hb_high", "figures", "V", start, Fstar=FSTAR, **FREEPLAY,
+                          **values)
+    orbits = ct.periodic_from(rundir, "po_high", point,
+                              stop={"V": [ct.V_MIN, ct.V_MAX], "psi_amp": PSI_AMP_STOP},
+                              allow_mx=True, **ORBIT_STEPS)
+    folds = [p for p in orbits("LP") if abs(p["V"] - start) > 1e-3 * start]
+    last = orbits()[-1]["TY name"]
+    # S: the fold of least V, where the stable large orbits begin (at rho =
+    # mu = 0 the only one; where the links sit near a side of the freeplay the
+    # branch first folds above H3, ~130 m/s, unstable on both sides)
+    lowest = min(folds, key=lambda p: p["V"]) if folds else None
+    return {"S": lowest["V"] if folds else None, "from_V": start,
+            "folds": [p["V"] for p in folds],
+            "S_psi_amp": lowest["psi_amp"] if folds else None,
+            "stop": {"UZ": f"psi_amp = {PSI_AMP_STOP:g} rad or a V bound",
+                     "MX": "MX (no convergence)"}.get(last, last)}
+
+
+def kappa(values, loads=KAPPA_LOADS, finer=KAPPA_FINER):
+    """kappa* over the envelope's loads (the criterion's recipe)."""
+    value, best = mg.kappa_star(lambda F: mg.least_unstable(F, **values), loads, finer=finer)
+    return {"kappa": value, "kappa_Fstar": best["Fstar"], "kappa_V": best["V"],
+            "kappa_mode": best["mode"], "kappa_eta": best["eta"], "kappa_yfp": best["first"]}
+
+
+def link_position(values, Fstar, yfp, epsilon):
+    """y_tlk/y_fp of straight rolling (continued from zero freeplay,
+    shared.rolling) at load F*, freeplay y_fp [mm], epsilon {eps_abs,
+    eps_rel}."""
+    u = rolling.state("figures", Fstar, yfp, epsilon, **values)
+    model = mlgmodel.Model("figures", Fstar=Fstar, V=rolling.V_SOLVE, yfp=yfp, **epsilon,
+                           **values)
+    return geometry.y_tlk(model, u) / (1e-3 * yfp)
+
+
+def cpu():
+    """CPU seconds of this process and its finished children (AUTO)."""
+    t = os.times()
+    return t.user + t.system + t.children_user + t.children_system
+
+
+def compute(rho, mu, rundir):
+    """Every number of one grid point, with the CPU seconds of each stage."""
+    g, values = at(rho, mu)
+    seconds, out = {}, {"rho_deg": g.rho_deg, "mu_deg": g.mu_deg, "eom_terms": EOM}
+
+    def stage(name, work):      # CPU of this process and of its AUTO runs
+        started = cpu()
+        result = work()
+        seconds[name] = round(cpu() - started, 2)
+        return result
+    scans = stage("scans", lambda: speeds(values))
+    out["critical_V"] = scans["critical_V"]
+    out["hopf"] = scans["hopf"]
+    out["bp"] = scans["bp"]
+    # named by frequency as in Fig. 10: H1, H2 the low-frequency pair (the
+    # gentle oscillations between them), H3 the first high-frequency one;
+    # with side-stay angles the pair can vanish (the links then sit against
+    # one side of the freeplay at low speed)
+    low = [v for v, hz in scans["hopf"] if hz < HIGH_HZ]
+    high = [v for v, hz in scans["hopf"] if hz >= HIGH_HZ]
+    out.update({"H1": low[0] if low else None, "H2": low[1] if len(low) > 1 else None,
+                "H3": high[0] if high else None})
+    fold = stage("auto", lambda: fold_S(rundir, scans["hopf"], values))
+    out.update({"S": fold["S"], "S_from_V": fold["from_V"], "S_folds": fold["folds"],
+                "S_stop": fold["stop"], "S_psi_amp": fold["S_psi_amp"]})
+    # [S, H3]: straight rolling stable (no Hopf point of it inside) beside
+    # the stable large orbits
+    S, H3 = fold["S"], fold["from_V"]
+    out["bistable_width"] = (H3 - S if S is not None and S < H3 and
+                             not any(S < v < H3 for v, _ in scans["hopf"]) else None)
+    out.update(stage("kappa", lambda: kappa(values)))
+    out["ytlk_ratio"] = stage("links", lambda: link_position(
+        values, FSTAR, FREEPLAY["yfp"], {k: FREEPLAY[k] for k in ("eps_abs", "eps_rel")}))
+    out["ytlk_ratio_kappa"] = link_position(values, out["kappa_Fstar"], out["kappa_yfp"],
+                                            mg.SCALINGS["fixed"])
+    out["cpu_seconds"] = seconds
+    return out
+
+
+def run_point(name):
+    rho, mu = POINTS.parse(name)
+    started = time.monotonic()
+    result = compute(rho, mu, paths.rundir(os.path.join("design_map", name)))
+    result["wall_seconds"] = round(time.monotonic() - started, 1)
+    jobs.write_json(POINTS.result_path(rho, mu), result, indent=1)
+    print(f"design_map: {name}: " + "; ".join(
+        f"{key} {_cell(result.get(key), fmt)}" for key, _, _, fmt in QUANTITIES)
+        + f"; {sum(result['cpu_seconds'].values()):.0f} s CPU "
+          f"({', '.join(f'{k} {v:g}' for k, v in result['cpu_seconds'].items())})")
+
+
+def _cell(value, fmt):
+    return "-" if value is None else format(value, fmt)
+
+
+def load(points):
+    cells = []
+    for rho, mu in points:
+        path = POINTS.result_path(rho, mu)
+        if not os.path.exists(path):
+            sys.exit(f"design_map: no result for rho = {rho:g}, mu = {mu:g} ({path}); "
+                     "run `make design-map` (or design_map.py point) first")
+        with open(path) as f:
+            cells.append(json.load(f))
+    return cells
+
+
+def table(cells):
+    """The table's text: one row per geometry."""
+    head = ["rho", "mu"] + [f"{h}" + (f" [{u}]" if u else "") for _, h, u, _ in QUANTITIES] \
+        + ["kappa*: V, mode", "CPU [s]"]
+    rows = [head]
+    for c in cells:
+        rows.append([f"{c['rho_deg']:g}", f"{c['mu_deg']:g}"]
+                    + [_cell(c.get(key), fmt) for key, _, _, fmt in QUANTITIES]
+                    + [f"{c['kappa_V']:.1f}, {c['kappa_mode']}",
+                       f"{sum(c['cpu_seconds'].values()):.0f}"])
+    widths = [max(len(r[k]) for r in rows) for k in range(len(head))]
+    lines = ["  ".join(cell.rjust(w) for cell, w in zip(row, widths)) for row in rows]
+    cpu = [sum(c["cpu_seconds"].values()) for c in cells]
+    return "\n".join([
+        "Design map: side-stay angles rho, mu [deg], eom_terms = 2, `figures` set, F* = 1 "
+        "unless stated;",
+        "y_fp = 1 mm, eps = 0.1 mm for H1-H3, S and y_tlk/y_fp at F* = 1; kappa* by eq. (17) "
+        "(eps = 0.1 mm, V <= 120 m/s, F* in [0.1, 2]);",
+        "S: fold of least V of the orbits born at H3 (where the stable large orbits begin); "
+        "bistable: [S, H3] with straight rolling stable in it;",
+        "y_tlk/y_fp at kappa*: at its load and freeplay (+-1: against a side); H1, H2 the "
+        "low-frequency (< 8 Hz) Hopf points, H3 the first high-frequency one."] + lines + [
+        f"CPU per geometry: mean {numpy.mean(cpu):.1f} s, max {max(cpu):.1f} s, "
+        f"total {sum(cpu):.0f} s over {len(cells)} geometries"]) + "\n"
+
+
+def summary(points):
+    cells = load(points)
+    text = table(cells)
+    print(text, end="")
+    tables = paths.tables_dir()
+    jobs.write_text(os.path.join(tables, "design_map.txt"), text)
+    jobs.write_json(os.path.join(tables, "design_map.json"),
+                    {"grid": {"rho_deg": sorted({c["rho_deg"] for c in cells}),
+                              "mu_deg": sorted({c["mu_deg"] for c in cells})},
+                     "eom_terms": EOM, "freeplay": FREEPLAY, "points": cells}, indent=1)
+    print(f"design_map: wrote {os.path.relpath(os.path.join(tables, 'design_map.txt'), paths.ROOT)}"
+          ", design_map.json")
+    plot(cells)
+
+
+def plot(cells):
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    from mlgshimmy.shared import draw
+    rhos = sorted({c["rho_deg"] for c in cells})
+    mus = sorted({c["mu_deg"] for c in cells})
+    fig, axes_ = plt.subplots(2, 5, figsize=(19, 7.6))
+    for ax, (key, heading, unit, fmt) in zip(axes_.flat, QUANTITIES):
+        values = numpy.full((len(mus), len(rhos)), numpy.nan)
+        for c in cells:
+            if c.get(key) is not None:
+                values[mus.index(c["mu_deg"]), rhos.index(c["rho_deg"])] = c[key]
+        finite = values[numpy.isfinite(values)]
+        diverging = key.startswith("ytlk")
+        limit = max(numpy.max(numpy.abs(finite)), 1e-12) if finite.size else 1.0
+        mesh = ax.imshow(values, origin="lower", aspect="auto",
+                         cmap="RdBu_r" if diverging else "viridis",
+                         vmin=-limit if diverging else None, vmax=limit if diverging else None,
+                         extent=(-0.5, len(rhos) - 0.5, -0.5, len(mus) - 0.5))
+        low, high = (numpy.nanmin(values), numpy.nanmax(values)) if finite.size else (0, 1)
+        for i in range(len(mus)):
+            for j in range(len(rhos)):
+                v = values[i, j]
+                light = numpy.isfinite(v) and (abs(v) > 0.5 * limit if diverging
+                                               else v < low + 0.5 * (high - low))
+                ax.text(j, i, "none" if not numpy.isfinite(v) else format(v, fmt.lstrip("+")),
+                        ha="center", va="center", fontsize=7,
+                        color="w" if light and not diverging else "k")
+        if 0.0 in rhos and 0.0 in mus:     # the paper's geometry
+            ax.add_patch(Rectangle((rhos.index(0.0) - 0.5, mus.index(0.0) - 0.5), 1, 1,
+                                   fill=False, lw=2.2, ec="k"))
+        ax.set_xticks(range(len(rhos)), [f"{r:g}" for r in rhos])
+        ax.set_yticks(range(len(mus)), [f"{m:g}" for m in mus])
+        ax.set_xlabel(r"$\rho$ [deg]")
+        ax.set_ylabel(r"$\mu$ [deg]")
+        ax.grid(False)
+        ax.set_title(heading + (f" [{unit}]" if unit else ""), fontsize=9)
+        fig.colorbar(mesh, ax=ax, fraction=0.046, pad=0.03)
+    fig.suptitle("Design map over the side-stay angles (eom_terms = 2, `figures` set; "
+                 r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm, $F^*$ = 1 unless stated); "
+                 "boxed: the paper's geometry rho = mu = 0")
+    fig.tight_layout()
+    draw.save(fig, "design_map")
+
+
+def main():
+    jobgrid.main("design_map", __doc__.splitlines()[0], "point", POINTS,
+                 [("--rho", DEFAULT_GRID, "rho values [deg]: a,b,c or start:stop:step"),
+                  ("--mu", DEFAULT_GRID, "mu values [deg]: a,b,c or start:stop:step")],
+                 axes, run_job=run_point, check=check, summary=summary)
+
+
+if __name__ == "__main__":
+    main()

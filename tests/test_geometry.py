@@ -1,0 +1,165 @@
+"""A side-stay geometry for every figure and study (shared.geometry,
+mk/geometry.mk): the environment read and checked, the tree of a geometry,
+the parameters reaching the model and the simulator, straight rolling at
+side-stay angles (shared.rolling) and the torque-link position y_tlk.
+
+Run: /usr/bin/python3 -m pytest -q tests/test_geometry.py
+"""
+import math
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+from mlgshimmy.shared import geometry, magnitude, mlgmodel, rolling, simulator
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+TEN = {"rho": math.radians(10), "mu": math.radians(10), "eom_terms": 2.0}
+
+
+def make(*args, **env):
+    clean = {k: v for k, v in os.environ.items()
+             if k not in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS", "MAKEOVERRIDES", "MLG_RUN_ROOT",
+                          "MLG_BASE_RUN_ROOT", geometry.ENV_RHO, geometry.ENV_MU,
+                          geometry.ENV_EOM)}
+    return subprocess.run(["make", "--no-print-directory", *args], cwd=ROOT,
+                          env={**clean, **env}, capture_output=True, text=True)
+
+
+@pytest.mark.parametrize("environ, key", [
+    ({}, (0.0, 0.0, 0)),
+    ({"MLG_RHO_DEG": "", "MLG_MU_DEG": "", "MLG_EOM": ""}, (0.0, 0.0, 0)),
+    ({"MLG_RHO_DEG": "10"}, (10.0, 0.0, 2)),                 # EOM 2 with an angle
+    ({"MLG_MU_DEG": "-0", "MLG_RHO_DEG": "0", "MLG_EOM": "0"}, (0.0, 0.0, 0)),
+    ({"MLG_EOM": "1"}, (0.0, 0.0, 1)),
+    ({"MLG_RHO_DEG": "1e1", "MLG_MU_DEG": "-20.0", "MLG_EOM": "0"}, (10.0, -20.0, 0)),
+])
+def test_the_environment_names_a_geometry(environ, key):
+    assert geometry.from_environment(environ).key() == key
+
+
+def test_the_baseline_changes_nothing():
+    g = geometry.Geometry()
+    assert g.baseline and g.parameters() == {} and g.simulator_params() == {}
+    assert g.describe() == "" and g.suffix() == ""
+
+
+@pytest.mark.parametrize("environ, variable", [
+    ({"MLG_RHO_DEG": "ten"}, "RHO="), ({"MLG_MU_DEG": "95"}, "MU="),
+    ({"MLG_MU_DEG": "nan"}, "MU="), ({"MLG_EOM": "3"}, "EOM="), ({"MLG_EOM": "2.0"}, "EOM="),
+])
+def test_a_bad_geometry_names_its_make_variable(environ, variable):
+    with pytest.raises(geometry.GeometryError, match=variable):
+        geometry.from_environment(environ)
+
+
+def test_parameters_tags_and_trees():
+    g = geometry.Geometry(10, -20, 2)
+    assert g.parameters() == {"rho": math.radians(10), "mu": math.radians(-20), "eom_terms": 2.0}
+    assert g.tag == "rho10_mu-20_eom2" and g.mirror().tag == "rho-10_mu20_eom2"
+    assert geometry.Geometry(10.00001, 0, 2).tag != geometry.Geometry(10, 0, 2).tag
+    assert geometry.Geometry(0, 0, 2).tag == "rho0_mu0_eom2"     # not the baseline
+    base = "/x/build"
+    assert geometry.tree(base, geometry.Geometry()) == base
+    inner = geometry.tree(base, g)
+    assert inner == "/x/build/geometry/rho10_mu-20_eom2"
+    assert geometry.tree(inner, g) == inner                         # a make from a make
+    assert geometry.tree(inner, g.mirror()) != inner
+
+
+def test_make_gives_each_geometry_its_own_tree(tmp_path):
+    def where(*args):
+        proc = make("fig10-plot", *args, MLG_RUN_ROOT=str(tmp_path))
+        assert proc.returncode != 0                                  # nothing is computed
+        return proc.stderr
+    assert f"{tmp_path}/fig10/result.json" in where()
+    assert f"{tmp_path}/fig10/result.json" in where("RHO=0", "MU=0", "EOM=0")
+    assert f"{tmp_path}/geometry/rho10_mu10_eom2/fig10/result.json" in where("RHO=10", "MU=10")
+    assert f"{tmp_path}/geometry/rho10_mu10_eom0/fig10/result.json" in \
+        where("RHO=10.0", "MU=1e1", "EOM=0")
+    assert f"{tmp_path}/geometry/rho-10_mu0_eom2/fig10/result.json" in where("RHO=-10")
+
+
+@pytest.mark.parametrize("args, named", [(("RHO=abc",), "RHO="), (("MU=90",), "MU="),
+                                         (("RHO=1", "EOM=5"), "EOM=")])
+def test_make_refuses_a_bad_geometry(args, named):
+    proc = make("fig10-plot", *args)
+    assert proc.returncode != 0 and named in proc.stderr and "rejected" in proc.stderr
+
+
+def test_the_studies_with_their_own_angles_stay_in_the_base_tree():
+    proc = make("-n", "sidestay", "RHO=10", "MU=10")
+    assert proc.returncode == 0
+    line = next(l for l in proc.stdout.splitlines() if "studies.sidestay" in l)
+    assert "MLG_RUN_ROOT=" in line and "/geometry/" not in line and "MLG_RHO_DEG= " in line
+
+
+def test_y_tlk_at_rho_mu_10_as_in_the_model_notes():
+    """docs/model.md 8.7: the links sit at y_tlk = -0.46 mm inside the
+    freeplay (y_fp = 1 mm, eps = 0.1 mm, F* = 1)."""
+    model = mlgmodel.Model("figures", Fstar=1.0, V=50.0, yfp=1.0, eps_rel=0.1, **TEN)
+    u = model.equilibrium()
+    y = geometry.y_tlk(model, u)
+    assert y == pytest.approx(-0.462257e-3, rel=1e-5)
+    # eq. (15) at that deflection is the torque-link moment the model uses
+    from mlgshimmy.shared import domain
+    d = domain.diagnose(model, u)
+    assert d["M_kpsi"] / d["r_tlk"] == pytest.approx(
+        mlgmodel.torque_link_force(model["k_tlk"], y, 1e-3, model.epsilon_m()), rel=1e-12)
+    mirror = mlgmodel.Model("figures", Fstar=1.0, V=50.0, yfp=1.0, eps_rel=0.1,
+                            **{**TEN, "rho": -TEN["rho"], "mu": -TEN["mu"]})
+    assert geometry.y_tlk(mirror, mirror.equilibrium()) == pytest.approx(-y, rel=1e-9)
+    baseline = mlgmodel.Model("figures", Fstar=1.0, V=50.0, yfp=1.0, eps_rel=0.1)
+    assert geometry.y_tlk(baseline, baseline.equilibrium()) == 0.0
+
+
+def test_straight_rolling_is_continued_from_zero_freeplay():
+    """Where Newton from psi = 0 finds the one equilibrium (F* = 1) the
+    continuation gives the same state; at light load and large freeplay,
+    where it finds none, the continuation does (the links near one edge)."""
+    fixed = {"eps_abs": 0.1, "eps_rel": 0.0}
+    u = rolling.state("figures", 1.0, 1.0, fixed, **TEN)
+    v = mlgmodel.Model("figures", Fstar=1.0, V=50.0, yfp=1.0, **fixed, **TEN).equilibrium()
+    assert max(abs(u[k] - v[k]) for k in u) < 1e-12
+    with pytest.raises(RuntimeError):
+        mlgmodel.Model("figures", Fstar=0.3, V=50.0, yfp=1.5, **fixed, **TEN).equilibrium()
+    model = mlgmodel.Model("figures", Fstar=0.3, V=50.0, yfp=1.5, **fixed, **TEN)
+    w = rolling.state("figures", 0.3, 1.5, fixed, **TEN)
+    assert max(abs(f) for f in rolling._residual(model, list(w.values()))[0]) < 1e-6
+    assert 0.5 < geometry.y_tlk(model, w) / 1.5e-3 < 1.0
+    # at rho = mu = 0 magnitude solves it once per load, as before
+    assert magnitude.rolling_state(0.3, 1.5) is magnitude.rolling_state(0.3, 0.2)
+
+
+def test_the_geometry_reaches_the_simulator(tmp_path):
+    """A 1 ms run starts from the equilibrium of the geometry it is given."""
+    g = geometry.Geometry(10, 10, 2)
+    numbers = simulator.simulate(str(tmp_path / "r.csv"), "--V", 50, "--Fstar", 1.0,
+                                 "--t-end", 1e-3, params=g.simulator_params())
+    u = mlgmodel.Model("figures", V=50.0, Fstar=1.0, **g.parameters()).equilibrium()
+    assert numbers["equilibrium_beta_rad"] == pytest.approx(u["beta"], rel=1e-8)
+    plain = simulator.simulate(str(tmp_path / "p.csv"), "--V", 50, "--Fstar", 1.0,
+                               "--t-end", 1e-3)
+    assert plain["equilibrium_beta_rad"] != pytest.approx(u["beta"], rel=1e-3)
+
+
+def test_a_figure_at_a_geometry_says_so(monkeypatch):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    monkeypatch.setattr(geometry, "current", lambda: geometry.Geometry(10, -20, 2))
+    fig, _ = plt.subplots()
+    fig.suptitle("Fig. 10")
+    geometry.stamp(fig)
+    assert fig._suptitle.get_text() == ("Fig. 10 [side stay rho = 10 deg, mu = -20 deg, "
+                                        "eom_terms = 2]")
+    bare, _ = plt.subplots()
+    geometry.stamp(bare)
+    assert "rho = 10 deg" in bare._suptitle.get_text()
+    plt.close("all")
+    monkeypatch.setattr(geometry, "current", lambda: geometry.Geometry())
+    fig, _ = plt.subplots()
+    geometry.stamp(fig)
+    assert fig._suptitle is None
+    plt.close("all")
