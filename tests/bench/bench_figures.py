@@ -14,6 +14,7 @@ part chain (Fig. 11's assembly after its slowest slice, Fig. 16's fold-seed
 part), so it levels off at a few minutes beyond about 8 cores.
 """
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -71,6 +72,18 @@ def differences(one, two):
     return "\n".join(out)
 
 
+def comparable(value):
+    """value with NaN as None: a NaN never equals itself, and the cache
+    stores no NaN since it refuses them (older results held some)."""
+    if isinstance(value, float) and math.isnan(value):
+        return None
+    if isinstance(value, dict):
+        return {k: comparable(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [comparable(v) for v in value]
+    return value
+
+
 def results(run_root):
     """{relative path: data} of every cached result and part (result.json,
     parts/*.json) under run_root; their provenance is left out."""
@@ -82,7 +95,7 @@ def results(run_root):
                 with open(path) as f:
                     stored = json.load(f)
                 if isinstance(stored, dict) and "data" in stored:
-                    out[os.path.relpath(path, run_root)] = stored["data"]
+                    out[os.path.relpath(path, run_root)] = comparable(stored["data"])
     return out
 
 

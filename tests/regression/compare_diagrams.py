@@ -68,7 +68,13 @@ import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-from mlgshimmy.shared import autoglue  # noqa: E402  (PYTHONPATH=drivers; AUTO through init())
+try:   # the drivers' one way to AUTO (autoglue.init); make sets PYTHONPATH=drivers
+    from mlgshimmy.shared import autoglue
+except ImportError:   # exit status 2: nothing compared (1 would read "differ")
+    print(f"compare_diagrams: the package mlgshimmy is not on the path: run it as "
+          f"PYTHONPATH={os.path.join(ROOT, 'drivers')} {sys.executable} {sys.argv[0]} ... "
+          "(make does)", file=sys.stderr)
+    sys.exit(2)
 import reference_set  # noqa: E402  (this directory: run as a script, or pytest's pythonpath)
 
 REFERENCE_ROOT = os.path.join(ROOT, "tests", "reference")
