@@ -29,6 +29,8 @@
 #   AUTO_THREADS    OpenMP threads of each AUTO run (1; an OMP_NUM_THREADS in
 #                   the environment is not used: results depend on it)
 #   PYTEST_ARGS     extra pytest options for `make test` (e.g. -k jacobian)
+#   PAPER           1: figures for a paper, without their "Fig. N: ..." titles
+#                   (sets MLG_PAPER_STYLE for the drivers; e.g. make fig10-plot PAPER=1)
 #
 # Useful for rules in included makefiles: $(AUTO_DIR), $(PYTHON), `| auto`
 # (AUTO-07p is ready) and $(call auto_equations,...) from mk/auto.mk.
@@ -47,6 +49,9 @@ export PYTHON
 export MLG_AUTO_THREADS := $(AUTO_THREADS)
 export MPLBACKEND := Agg
 export SOURCE_DATE_EPOCH := 0
+ifneq ($(strip $(PAPER)),)
+export MLG_PAPER_STYLE := $(PAPER)
+endif
 
 PACKAGES := gcc gfortran make liblapack-dev python3-numpy python3-matplotlib \
             python3-scipy python3-pytest pkgconf libsundials-dev dpkg-dev
