@@ -75,6 +75,10 @@ def run_root(tmp_path, monkeypatch):
         ax.plot([0, 1], [0, 1])
         fig.savefig(root / "figures" / f"{figure}.png")
         plt.close(fig)
+    (root / "tables" / "criterion.txt").write_text("criterion: kappa* table\n")
+    fig, ax = plt.subplots(figsize=(3, 2))
+    fig.savefig(root / "figures" / "criterion.png")
+    plt.close(fig)
     return root
 
 
@@ -86,7 +90,8 @@ def test_the_page_from_cached_results(run_root, capsys):
     page.feed((out / "index.html").read_text())
     # every figure has its section; every image shown exists beside the page
     assert {f for f, _, _ in report.FIGURES} <= set(page.ids)
-    assert sorted(page.images) == [f"figures/{f}.png" for f in sorted(OURS)]
+    assert sorted(page.images) == sorted([f"figures/{f}.png" for f in OURS]
+                                         + ["figures/criterion.png"])
     for src in page.images:
         assert (out / src).is_file(), src
     # the scorecard: every printed number, then every held-out value
@@ -104,6 +109,9 @@ def test_the_page_from_cached_results(run_root, capsys):
     assert "No figure yet: run <code>make fig11</code>" in text
     assert "numpy" in text and "matplotlib" in text and "abc123" in text
     assert "missing: fig06" in capsys.readouterr().out
+    # the studies: one run (its table and figure shown), the others named as not run
+    assert "study-criterion" in page.ids and "criterion: kappa* table" in text
+    assert "Not run: <code>make -j2 atlas</code>" in text
 
 
 def test_chromium_renders_the_page(run_root, tmp_path):

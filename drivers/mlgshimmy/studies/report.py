@@ -12,7 +12,9 @@ The page opens with the scorecard (every number the paper prints,
 shared.paper.PAPER, beside ours, the relative error and a status; the
 values the paper withholds, shared.paper.HELD_OUT, with ours), then the
 provenance (commit, AUTO, compilers, Python, numpy, matplotlib), then one
-section per figure: what the paper shows, our PNG and its table."""
+section per figure: what the paper shows, our PNG and its table; then the
+studies beyond the paper that have been run (criterion, atlas, sweep,
+side-stay: their tables and figures, STUDIES)."""
 import argparse
 import datetime
 import html
@@ -67,6 +69,20 @@ FIGURES = [
      "1)."),
     ("fig19", "make fig19", "The rescaled profiles allowed by y_fp/eps < kappa* (eq. 17), "
      "between the kappa* profile and eps -> infinity (IV.E)."),
+]
+# Studies beyond the paper: (name, command, what, text files, figures), each
+# path relative to the run root; shown when made (the side-stay runs by glob)
+STUDIES = [
+    ("criterion", "make -j2 criterion", "kappa* of eq. (17) under each low-load assumption "
+     "(strut readings, stage-switch position, c_psi, tyre laws at light load).",
+     ["tables/criterion.txt"], ["figures/criterion.png"]),
+    ("atlas", "make -j2 atlas", "The attractor atlas: what a time simulation settles on over "
+     "(V, F*), y_fp = 1 mm, eps = 0.1 mm, and its comparison with Fig. 11.",
+     ["atlas/summary.txt"], ["figures/atlas.png", "figures/atlas_fig11.png"]),
+    ("sweep", "make sweep", "The critical shimmy speed over a grid of side-stay angles.",
+     [], ["figures/sweep_critical_speed.png"]),
+    ("sidestay", "make sidestay RHO=10 MU=10", "Side-stay angles against rho = mu = 0.",
+     ["tables/sidestay_*.txt"], ["figures/sidestay_*.png"]),
 ]
 STATUS_CLASS = {"agrees": "good", "calibrated": "calib", "close": "close", "off": "bad",
                 "missing": "bad", "held out": "held"}
@@ -166,6 +182,23 @@ def tools():
             ("system", platform.platform())]
 
 
+def collect_studies(root):
+    """[{"name", "command", "what", "texts": [(path, text)], "pngs": [path]}]
+    of the studies that were run (their files exist)."""
+    import glob
+    out = []
+    for name, command, what, texts, pngs in STUDIES:
+        found_texts = []
+        for pattern in texts:
+            for path in sorted(glob.glob(os.path.join(root, pattern))):
+                with open(path) as source:
+                    found_texts.append((path, source.read()))
+        found_pngs = [p for pattern in pngs for p in sorted(glob.glob(os.path.join(root, pattern)))]
+        out.append({"name": name, "command": command, "what": what, "texts": found_texts,
+                    "pngs": found_pngs})
+    return out
+
+
 def collect(root):
     """Everything the page shows, as plain data (the test reads it too)."""
     figures = []
@@ -197,7 +230,7 @@ def collect(root):
             score.append({"figure": figure, "quantity": quantity, "paper": symbol,
                           "ours": row["ours"] if row else None, "rel_error": None,
                           "status": "held out" if row else "missing"})
-    return {"figures": figures, "score": score, "tools": tools(),
+    return {"figures": figures, "score": score, "tools": tools(), "studies": collect_studies(root),
             "written": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")}
 
 
@@ -314,7 +347,26 @@ th { background: #f0f0f0; }
 .bad { background: #f6c7a8; } .held { background: #eadcf0; }
 ul.legend { font-size: 0.85em; } code { background: #f4f4f4; padding: 0 0.2em; }
 .missing { color: #a04000; } nav a { margin-right: 0.6em; }
+pre { overflow-x: auto; font-size: 0.8em; background: #f8f8f8; padding: 0.5em; }
 """
+
+
+def _study(study, images):
+    parts = [f'<section id="study-{study["name"]}"><h2>{html.escape(study["name"])}</h2>',
+             f"<p>{html.escape(study['what'])} <code>{html.escape(study['command'])}</code></p>"]
+    if not (study["texts"] or study["pngs"]):
+        parts.append(f'<p class="missing">Not run: <code>{html.escape(study["command"])}</code>.'
+                     "</p>")
+    for path in study["pngs"]:
+        src = images.get(path)
+        if src:
+            parts.append(f'<figure><img src="{html.escape(src)}" alt="{study["name"]}">'
+                         f"<figcaption>{html.escape(os.path.basename(path))}</figcaption></figure>")
+    for path, text in study["texts"]:
+        parts.append(f"<details><summary>{html.escape(os.path.basename(path))}</summary>"
+                     f'<pre>{html.escape(text)}</pre></details>')
+    parts.append("</section>")
+    return "\n".join(parts)
 
 
 def page(info, images):
@@ -323,8 +375,11 @@ def page(info, images):
                     for k, v in info["tools"])
     commits = sorted({f["provenance"].get("git_commit") or "unknown"
                       for f in info["figures"] if f["provenance"]})
-    nav = " ".join(f'<a href="#{f["figure"]}">{f["figure"]}</a>' for f in info["figures"])
+    nav = " ".join(f'<a href="#{f["figure"]}">{f["figure"]}</a>' for f in info["figures"]) \
+        + ' <a href="#studies">studies</a>'
+
     sections = "\n".join(_figure(f, images.get(f["figure"])) for f in info["figures"])
+    studies = "\n".join(_study(st, images) for st in info["studies"])
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
@@ -346,6 +401,10 @@ the zero-freeplay Hopf point at F* = 1 lies at the paper's 346.1 m/s
 <tr><th>commits of the cached results</th><td>{html.escape(", ".join(commits) or "none")}</td></tr>
 </tbody></table>
 {sections}
+<h2 id="studies">Studies beyond the paper</h2>
+<p>Computed by the project's own studies, not compared with the paper; shown when they have
+been run.</p>
+{studies}
 </body></html>
 """
 
@@ -362,6 +421,11 @@ def build(out=None, root=None):
             target = os.path.join(out, "figures", f"{entry['figure']}.png")
             shutil.copyfile(entry["png"], target)
             images[entry["figure"]] = f"figures/{entry['figure']}.png"
+    for study in info["studies"]:
+        for path in study["pngs"]:
+            name = os.path.basename(path)
+            shutil.copyfile(path, os.path.join(out, "figures", name))
+            images[path] = f"figures/{name}"
     target = os.path.join(out, "index.html")
     write_text(target, page(info, images))
     write_text(os.path.join(out, "report.json"),
