@@ -33,6 +33,8 @@
 #   RHO, MU, EOM    a side-stay geometry (degrees; EOM the eom_terms level, 2
 #                   when an angle is given) for every figure and study, in its
 #                   own tree build/geometry/<tag>/ (mk/geometry.mk)
+#   PAPER           1: figures for a paper, without their "Fig. N: ..." titles
+#                   (sets MLG_PAPER_STYLE for the drivers; e.g. make fig10-plot PAPER=1)
 #
 # Useful for rules in included makefiles: $(AUTO_DIR), $(PYTHON), `| auto`
 # (AUTO-07p is ready) and $(call auto_equations,...) from mk/auto.mk.
@@ -68,6 +70,9 @@ export PYTHON
 export MLG_AUTO_THREADS := $(AUTO_THREADS)
 export MPLBACKEND := Agg
 export SOURCE_DATE_EPOCH := 0
+ifneq ($(strip $(PAPER)),)
+export MLG_PAPER_STYLE := $(PAPER)
+endif
 
 PACKAGES := gcc gfortran make liblapack-dev python3-numpy python3-matplotlib \
             python3-scipy python3-pytest python3-pytest-xdist pkgconf libsundials-dev dpkg-dev

@@ -12,6 +12,7 @@ Start here
                         + 1-2 min  the first make also installs packages, builds AUTO-07p
   figures                  17 min  every figure into build/figures/ (PNG, PDF); -j2: 8 min
   test                      3 min  build and run all tests (C, Python, AUTO, quick regressions)
+  report                     10 s  build/report/index.html: every figure beside the paper's numbers
   demo                       10 s  build/demo/ for AUTO's own commands: auto mlg.auto, @r mlg
   help                        1 s  this list (also plain make)
 
@@ -63,7 +64,8 @@ C library and AUTO-07p (docs/c-library.md, docs/auto-workflow.md)
 
 Settings: AUTO_DIR=<dir> (an AUTO-07p tree or install, e.g. /usr/lib/auto-07p;
 remembered), AUTO_SRC=<tarball>, AUTO_THREADS (1), PYTHON (/usr/bin/python3),
-TEST_TIMEOUT (600 s), PREFIX, DESTDIR, DEMO_DIR (build/demo), MLG_RUN_ROOT.
+TEST_TIMEOUT (600 s), PREFIX, DESTDIR, DEMO_DIR (build/demo), MLG_RUN_ROOT,
+PAPER=1 (figures without their "Fig. N:" titles, for a paper).
 Side-stay geometry of any figure or study: RHO=<deg> MU=<deg> [EOM=0|1|2, default 2],
 e.g. make fig10 RHO=10 MU=10; its runs, tables and figures in build/geometry/<tag>/.
 endef

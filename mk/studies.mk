@@ -84,3 +84,19 @@ $(eval $(call job_grid,atlas,$(ATLAS_ARGS),$$(PYDEPS_atlas) $(MLG_SIMULATE) $(ML
 .PHONY: torus
 torus: $(AUTO_DRIVER_DEPS) $(MLG_SIMULATE)
 	$(PYTHON) -m mlgshimmy.studies.torus_check
+
+# The reproduction report (studies.report): one HTML page from the cached
+# results, tables and PNGs of what has been made -- it computes nothing, so
+# make the figures first (make figures) -- in $(RUN_ROOT)/report/index.html,
+# and report.pdf beside it when Chromium is installed (headless print).
+REPORT_DIR := $(RUN_ROOT)/report
+.PHONY: report
+report: | $(MLG_SHARED)
+	$(PYTHON) -m mlgshimmy.studies.report --out $(REPORT_DIR)
+	@if command -v chromium >/dev/null 2>&1; then \
+	    timeout 120 chromium --headless --no-sandbox --disable-gpu --no-pdf-header-footer \
+	        --print-to-pdf=$(REPORT_DIR)/report.pdf file://$(REPORT_DIR)/index.html \
+	        >$(REPORT_DIR)/chromium.log 2>&1 \
+	    && echo "report: wrote $(REPORT_DIR)/report.pdf" \
+	    || echo "report: no PDF (chromium failed: $(REPORT_DIR)/chromium.log)"; \
+	else echo "report: no PDF (install chromium for one)"; fi

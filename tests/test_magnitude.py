@@ -3,8 +3,8 @@ fast checks: with eps = 0.1 y_fp the Hopf speeds do not move with y_fp and
 the orbits scale linearly with the same frequency (low-frequency branch at
 y_fp = 0.5 and 1 mm, V = 15 m/s); with eps = 0.1 mm the y_fp thresholds a, b
 at V = 120 m/s (eigenvalue scan) agree with AUTO's Hopf points in y_fp and
-with the values reported in docs/reproduction.md; the rescaled profiles of
-the fixed ratio coincide."""
+with the values reviewed when they were first computed (make report, fig16);
+the rescaled profiles of the fixed ratio coincide."""
 import math
 
 import numpy
@@ -16,7 +16,7 @@ from mlgshimmy.figures import fig15
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
 
-# docs/reproduction.md, Fig. 16/17 (F* = 1, eps = 0.1 mm, V = 120 m/s)
+# r_1, r_2 as first reviewed (make report, fig16: F* = 1, eps = 0.1 mm, V = 120 m/s)
 A_REPORTED, B_REPORTED = 0.054242, 0.213609
 
 

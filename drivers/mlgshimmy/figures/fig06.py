@@ -20,9 +20,9 @@ def main():
     yfp = 1e-3
     y = numpy.linspace(-3 * yfp, 3 * yfp, 1201)
     fig, (full, zoom) = plt.subplots(1, 2, figsize=(10, 4.2))
-    for ratio in RATIOS:
+    for ratio, colour in zip(RATIOS, draw.sequence(len(RATIOS))):
         for ax in (full, zoom):
-            ax.plot(y * 1e3, profile(yfp, ratio * yfp, y) / 1e3, lw=1.3,
+            ax.plot(y * 1e3, profile(yfp, ratio * yfp, y) / 1e3, lw=1.3, color=colour,
                     label=rf"$\epsilon$ = {ratio:g} $y_{{fp}}$")
     for ax in (full, zoom):
         ax.plot(y * 1e3, profile(yfp, 0.0, y) / 1e3, "k--", lw=1.2, label="eq. (14)")
@@ -30,13 +30,16 @@ def main():
         ax.set_ylabel(r"$M_{k\psi} / r_{tlk}$ [kN]")
     eps = 0.1 * yfp
     zoom.set_xlim(0.5, 1.6)
-    zoom.set_ylim(-2, 25)
+    zoom.set_ylim(-4.5, 25)
     zoom.axvspan((yfp - eps) * 1e3, (yfp + eps) * 1e3, color="0.85", zorder=0)
-    zoom.annotate(r"$y_{fp} \pm \epsilon$ ($\epsilon$ = 0.1 $y_{fp}$)", (1.0, 20),
-                  ha="center", fontsize=8)
-    full.set_title(r"(a) eq. (15), $y_{fp}$ = 1 mm, $k_{tlk}$ = 3.9e7 N/m")
+    # below the curves (all >= 0 here), on the shaded band it names
+    zoom.annotate(r"$y_{fp} \pm \epsilon$ ($\epsilon$ = 0.1 $y_{fp}$)", (1.0, -3.2),
+                  ha="center", va="center", fontsize=8)
+    k_tlk = mlgmodel.Model("figures")["k_tlk"]
+    full.set_title(rf"(a) eq. (15), $y_{{fp}}$ = 1 mm, $k_{{tlk}}$ = {draw.sci(k_tlk)} N/m")
     zoom.set_title("(b) the smoothing region at the contact corner")
     full.legend(fontsize=8)
+    draw.figure_title(fig, "Fig. 6: torque-link force profiles")
     fig.tight_layout()
     draw.save(fig, "fig06")
 

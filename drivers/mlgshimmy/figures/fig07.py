@@ -2,12 +2,14 @@
 rolling, its Hopf point H and the periodic orbits born there; torsional and
 lateral amplitudes."""
 import matplotlib.pyplot as plt
+from matplotlib.patches import Patch
 
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import domain
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import geometry
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 
 LOADS = (0.2, 1.0)
@@ -37,25 +39,39 @@ def compute(parameter_set="figures", where="fig07"):
     return result
 
 
+def numbers(result):
+    """{quantity: value} of the figure (psi in degrees, as plotted)."""
+    out = {"H, F* = 1 [m/s]": result["F1"]["hopf_V"], "H, F* = 0.2 [m/s]": result["F0.2"]["hopf_V"]}
+    for Fstar in LOADS:
+        load = result[f"F{Fstar:g}"]
+        out[f"F* = {Fstar:g}: orbit at V = {load['end_V']:g}: psi amplitude [deg]"] = \
+            load["end_psi_amp"] * draw.DEG
+    return out
+
+
 def plot(result):
-    fig, axes = plt.subplots(2, 2, figsize=(9, 6), sharex=True)
+    paper.report("fig07", numbers(result))
+    fig, axes = plt.subplots(2, 2, figsize=(9, 6.4), sharex=True)
     for col, Fstar in enumerate(LOADS):
         load = result[f"F{Fstar:g}"]
         print(f"fig07: F* = {Fstar:g}: Hopf at V = {load['hopf_V']:.3f} m/s; orbit at "
-              f"V = {load['end_V']:.1f}: psi amplitude {load['end_psi_amp']:.4f} rad")
+              f"V = {load['end_V']:.1f}: psi amplitude {load['end_psi_amp'] * draw.DEG:.4f} deg")
         eq, po = jobs.loaded(load["eq"]), jobs.loaded(load["po"])
         for row, (measure, name) in enumerate((("psi_amp", r"$\psi$"), ("delta_amp", r"$\delta$"))):
             ax = axes[row][col]
             draw.plot_branch(ax, eq, "V", measure, scale=draw.DEG)
             draw.plot_branch(ax, po, "V", measure, scale=draw.DEG)
-            draw.mark_points(ax, eq, "HB", "V", measure, text="H")
+            draw.mark_points(ax, eq, "HB", "V", measure, scale=draw.DEG)
+            draw.mark_specials(ax, po, "V", measure, scale=draw.DEG)
             ax.set_title(f"({'ab'[col]}{row + 1}) $F_z^*$ = {Fstar:g}")
             ax.set_ylabel(f"{name} amplitude [deg]")
             ax.set_xlim(0, 600)
             ax.axvspan(0, 80, color="0.9", zorder=0)
         axes[1][col].set_xlabel("V [m/s]")
-    fig.suptitle("Fig. 7: zero freeplay (grey: operating region V ≤ 80 m/s; "
-                 "solid stable, dashed unstable)")
+    operating = Patch(color="0.9", label="operating region, V ≤ 80 m/s")
+    draw.legend(axes[0][0], extra=[operating], axes=axes.ravel(), loc="upper left")
+    draw.figure_title(fig, "Fig. 7: zero freeplay, diagrams in V")
+    fig.tight_layout()
     draw.save(fig, "fig07")
 
 

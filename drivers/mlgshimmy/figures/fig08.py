@@ -16,6 +16,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from mlgshimmy.shared import draw  # noqa: E402
 from mlgshimmy.shared import geometry  # noqa: E402
 from mlgshimmy.shared import paths  # noqa: E402
 from mlgshimmy.shared import simulator  # noqa: E402
@@ -55,8 +56,8 @@ def plot(data, path_stem):
     axes[-1, 0].set_xlabel("t [s]")
     axes[-1, 1].set_xlabel("t [s] (last second)")
     axes[-1, 1].set_xlim(T_END - 1.0, T_END)
-    fig.suptitle(f"Fig. 8: V = {V:g} m/s, F* = {FSTAR:g}, y_fp = 0 "
-                 f"(psi perturbed by {PSI0:g} rad at t = 0)" + geometry.suffix())
+    draw.figure_title(fig, f"Fig. 8: V = {V:g} m/s, F* = {FSTAR:g}, y_fp = 0 "
+                           f"(psi perturbed by {PSI0:g} rad at t = 0)" + geometry.suffix())
     fig.tight_layout()
     for ext in ("png", "pdf"):
         fig.savefig(f"{path_stem}.{ext}", dpi=150)

@@ -1,11 +1,13 @@
 """Fig. 9: the zero-freeplay Hopf curve in the (V, F*) plane, F* in [0, 3.5],
 continued from the Hopf point of straight rolling at F* = 1."""
 import matplotlib.pyplot as plt
+from matplotlib.lines import Line2D
 
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import geometry
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 
 FSTAR_RANGE = (0.1, 3.5)   # below F* ~ 0.1 the curve leaves V <= 600 m/s steeply
@@ -26,22 +28,31 @@ def compute(parameter_set="figures", where="fig09"):
 
 
 def plot(result):
-    for Fstar, V in result["ends"]:
-        print(f"fig09: Hopf curve end F* = {Fstar:.3f} at V = {V:.2f} m/s")
+    paper.report("fig09", {f"Hopf curve at F* = {Fstar:.3g}: V [m/s]": V
+                           for Fstar, V in result["ends"]})
     fig, ax = plt.subplots(figsize=(6, 4.5))
+    span = (600.0, 3.5)
     for curve in result["curves"]:
         for branch in jobs.loaded(curve):
-            ax.plot(branch["V"], branch["Fstar"], color="tab:blue", lw=1.6)
-    ax.text(495, 2.2, "H", color="tab:blue")
+            # AUTO steps in F* only (V is left out of the arclength), so
+            # below F* ~ 0.3, where V changes fast, its points are far apart:
+            # drawn smoothly through them (draw.smooth), the points unchanged
+            ax.plot(*draw.smooth(branch["V"], branch["Fstar"], span), lw=1.6,
+                    color=draw.HOPF_CURVE["color"])
+    ax.text(495, 2.2, "H", color=draw.HOPF_CURVE["color"])
     ax.axvline(80.0, color="k", ls="--", lw=1)
     ax.text(40, 3.3, "operating\nregion", ha="center", fontsize=8)
     ax.text(450, 0.4, "torsional shimmy", ha="center", fontsize=8)
     ax.text(230, 1.6, "stable straight rolling", ha="center", fontsize=8)
-    ax.set_xlim(0, 600)
-    ax.set_ylim(0, 3.5)
+    ax.set_xlim(0, span[0])
+    ax.set_ylim(0, span[1])
     ax.set_xlabel("V [m/s]")
     ax.set_ylabel("$F_z^*$")
-    ax.set_title("Fig. 9: Hopf curve, zero freeplay")
+    handles = [Line2D([], [], color=draw.HOPF_CURVE["color"], lw=1.6,
+                      label="H: Hopf curve of straight rolling"),
+               Line2D([], [], color="k", ls="--", lw=1, label="operating region, V ≤ 80 m/s")]
+    draw.legend(ax, extra=handles, stability=False, loc="upper right")
+    draw.figure_title(ax, "Fig. 9: Hopf curve, zero freeplay")
     draw.save(fig, "fig09")
 
 

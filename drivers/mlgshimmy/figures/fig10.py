@@ -4,8 +4,10 @@ orbits between the two low-speed Hopf points, the high-frequency orbits from
 the third with their fold S, and the zero-freeplay orbits for reference.
 Panels: torsional amplitude (with a zoom on small amplitudes) and frequency."""
 import matplotlib.pyplot as plt
+from matplotlib.lines import Line2D
 
 from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import domain
 from mlgshimmy.shared import draw
@@ -92,45 +94,67 @@ def compute():
             "numbers": numbers(freeplay), "numbers_table": table}
 
 
+def closure(orbits, hopf, column, scale=1.0):
+    """The line from the last stored orbit of a branch to the Hopf point it
+    collapses onto, as ([V, V_H], [y, y_H]), or None: the driver stops a
+    branch 0.01 m/s (continuation.speed_diagram's gap) before the next
+    Hopf point, where the amplitude still is sqrt(0.01 m/s) away from 0."""
+    end = orbits[-1]
+    V, amp = end["V"][-1], end["psi_amp"][-1]
+    for v, f in hopf:
+        if 0 < abs(v - V) < 0.05 and amp < 1e-3:
+            return [V, v], [end[column][-1] * scale, (0.0 if column == "psi_amp" else f)]
+    return None
+
+
 def plot(result):
     paper.report("fig10", result["numbers"], result["numbers_table"])
     freeplay, zero = result["freeplay"], result["zero"]
     parts = [(point, jobs.loaded(part["orbits"])) for part in freeplay["parts"]
              for point in [part["hopf"]]]
     zero_orbits = [jobs.loaded(part["orbits"]) for part in zero["parts"]]
-    fig = plt.figure(figsize=(10, 7))
+    hopf_names = [f"H{k + 1}" for k in range(len(freeplay["hopf"]))]
+    fig = plt.figure(figsize=(10, 7.4))
     grid = fig.add_gridspec(2, 2, width_ratios=(1.6, 1))
     amp, zoom, freq = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), \
         fig.add_subplot(grid[1, :])
-    for ax in (amp, zoom):
+    closing = []
+    for ax, column, scale in ((amp, "psi_amp", DEG), (zoom, "psi_amp", DEG), (freq, "freq", 1.0)):
         for orbits in zero_orbits:
-            draw.plot_branch(ax, orbits, "V", "psi_amp", scale=DEG, color="0.5")
-        draw.plot_branch(ax, jobs.loaded(freeplay["eq"]), "V", "psi_amp", scale=DEG)
+            draw.plot_branch(ax, orbits, "V", column, scale=scale, color="0.55")
+        if column == "psi_amp":
+            draw.plot_branch(ax, jobs.loaded(freeplay["eq"]), "V", column, scale=DEG)
+        names = iter(f"S{k + 1}" for k in range(100))
         for _, orbits in parts:
-            draw.plot_branch(ax, orbits, "V", "psi_amp", scale=DEG)
-            draw.mark_points(ax, orbits, "LP", "V", "psi_amp", scale=DEG, text="S")
-        for v, _ in freeplay["hopf"]:
-            ax.plot(v, 0.0, "ko", ms=3.5)
-            ax.annotate("H", (v, 0.0), textcoords="offset points", xytext=(2, 4))
+            draw.plot_branch(ax, orbits, "V", column, scale=scale)
+            for branch in orbits:
+                for index, _, _ in branches.labelled_points(branch, "LP"):
+                    draw.mark(ax, branch["V"][index], branch[column][index] * scale, "LP",
+                              name=next(names))
+            draw.mark_specials(ax, orbits, "V", column, scale=scale, kinds=("TR",))
+            line = closure(orbits, freeplay["hopf"], column, scale)
+            if line:
+                ax.plot(*line, color=draw.STABLE, ls=":", lw=1.2)
+                closing.append(ax)
+        for (v, f), name in zip(freeplay["hopf"], hopf_names):
+            draw.mark(ax, v, 0.0 if column == "psi_amp" else f, "HB", name=name)
         ax.set_xlabel("V [m/s]")
+    for ax in (amp, zoom):
         ax.set_ylabel(r"$\psi$ amplitude [deg]")
     amp.set_xlim(0, V_MAX)
-    amp.set_title("(a) torsional amplitude (grey: zero freeplay)")
+    amp.set_title("(a1) torsional amplitude")
     zoom.set_xlim(0, 160)
     zoom.set_ylim(-0.01, 0.3)
-    zoom.set_title("(a) zoom: small amplitudes")
-    for orbits in zero_orbits:
-        draw.plot_branch(freq, orbits, "V", "freq", color="0.5")
-    for (V, f), orbits in parts:
-        draw.plot_branch(freq, orbits, "V", "freq")
-        freq.plot(V, f, "ko", ms=3.5)
-        draw.mark_points(freq, orbits, "LP", "V", "freq", text="S")
+    zoom.set_title("(a2) zoom of (a1): small amplitudes")
     freq.set_xlim(0, V_MAX)
-    freq.set_xlabel("V [m/s]")
     freq.set_ylabel("frequency [Hz]")
     freq.set_title("(b) frequency")
-    fig.suptitle(r"Fig. 10: $F_z^*$ = 1, $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm "
-                 "(solid stable, dashed unstable)")
+    extra = [Line2D([], [], color="0.55", label="zero freeplay (stable solid, unstable dashed)")]
+    if closing:
+        extra.append(Line2D([], [], color=draw.STABLE, ls=":", lw=1.2,
+                            label="to its Hopf point (the run stops 0.01 m/s before it)"))
+    draw.legend(freq, extra=extra, axes=(amp, zoom, freq), loc="lower right", ncol=2)
+    draw.figure_title(fig, r"Fig. 10: $F_z^*$ = 1, $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm")
     fig.tight_layout()
     draw.save(fig, "fig10")
 

@@ -8,6 +8,7 @@ torsional shimmy, separated by the unstable orbits.
 `fig12.py --strut-variant 1` does the same with the printed strut spring
 (build/fig12_v1/, build/figures/fig12_v1.*)."""
 import matplotlib.pyplot as plt
+from matplotlib.lines import Line2D
 import numpy
 
 from mlgshimmy.shared import branches
@@ -113,40 +114,59 @@ def plot(result):
     eq, pitchforks, hopf = jobs.loaded(result["eq"]), result["pitchforks"], result["hopf"]
     yaw = [jobs.loaded(d) for d in result["yaw"]]
     orbits = [jobs.loaded(d) for d in result["orbits"]]
-    fig, (amp, freq) = plt.subplots(2, 1, figsize=(8, 8), sharex=True)
+    fig, (amp, freq) = plt.subplots(2, 1, figsize=(8, 8.4), sharex=True)
     loads, boundary = (numpy.asarray(a) for a in result["boundary"])
     boundary = boundary * DEG
-    amp.plot(loads, boundary, color="0.6", lw=3, label=r"$\psi_{fp}$")
-    amp.plot(loads, -boundary, color="0.6", lw=3)
+    amp.plot(loads, boundary, color="0.7", lw=3, zorder=1)
+    amp.plot(loads, -boundary, color="0.7", lw=3, zorder=1)
     draw.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
+    shown = [boundary, -boundary]
     for diagram in yaw:
         for branch in diagram:
             for xs, ys, stable in branches.segments(branch, "Fstar", "psi_mean"):
-                amp.plot(xs, ys * DEG, "-." if stable else ":",
-                         color=draw.STABLE if stable else draw.UNSTABLE, lw=1.4)
+                amp.plot(xs, ys * DEG, **{**draw.style_of(stable), "linestyle": YAW[stable]})
+                shown.append(ys * DEG)
     for diagram in orbits:
         draw.plot_branch(amp, diagram, "Fstar", "psi_amp", scale=DEG)
         draw.plot_branch(freq, diagram, "Fstar", "freq")
-        draw.mark_points(amp, diagram, "LP", "Fstar", "psi_amp", scale=DEG, text="S")
-        draw.mark_points(freq, diagram, "LP", "Fstar", "freq", text="S")
-    for f in pitchforks:
-        amp.plot(f, 0, "ks", ms=4)
-        amp.annotate("P", (f, 0), textcoords="offset points", xytext=(2, -10))
-    for f in hopf:
-        amp.plot(f, 0, "ko", ms=3.5)
-        amp.annotate("H", (f, 0), textcoords="offset points", xytext=(2, 4))
-    amp.set_ylabel(r"$\psi$ amplitude; yaw of stationary branches [deg]")
-    amp.set_title("(a) torsional amplitude (dash-dot: stationary non-zero yaw; grey: "
-                  r"freeplay boundary $\pm\psi_{fp}$)")
-    amp.set_ylim(-0.3, 2.0)
+        for ax, column, scale in ((amp, "psi_amp", DEG), (freq, "freq", 1.0)):
+            names = iter(f"S{k + 1}" for k in range(100))
+            for branch in diagram:
+                for index, _, _ in branches.labelled_points(branch, "LP"):
+                    draw.mark(ax, branch["Fstar"][index], branch[column][index] * scale, "LP",
+                              name=next(names))
+            draw.mark_specials(ax, diagram, "Fstar", column, scale=scale, kinds=("TR",))
+        shown += [branch["psi_amp"] * DEG for branch in diagram]
+    for k, f in enumerate(pitchforks):
+        draw.mark(amp, f, 0, "BP", name=f"P{k + 1}")
+    for k, f in enumerate(hopf):
+        draw.mark(amp, f, 0, "HB", name=f"H{k + 1}")
+        for diagram in orbits:   # the orbit branch born there starts at its frequency
+            start = diagram[0]
+            if abs(start["Fstar"][0] - f) < 1e-6 * max(1.0, abs(f)):
+                draw.mark(freq, f, start["freq"][0], "HB", name=f"H{k + 1}")
+    # the data set the range: the orbits, the yawed states and the boundary
+    low = min(numpy.nanmin(y) for y in shown)
+    high = max(numpy.nanmax(y) for y in shown)
+    pad = 0.06 * (high - low)
+    amp.set_ylim(low - pad, high + pad)
+    amp.set_ylabel(r"$\psi$ amplitude; yaw of stationary states [deg]")
+    amp.set_title("(a) torsional amplitude")
+    extra = [Line2D([], [], color=draw.STABLE, ls=YAW[True], label="stationary yaw, stable"),
+             Line2D([], [], color=draw.UNSTABLE, ls=YAW[False], label="stationary yaw, unstable"),
+             Line2D([], [], color="0.7", lw=3, label=r"freeplay boundary $\pm\psi_{fp}$")]
     freq.set_ylabel("frequency [Hz]")
     freq.set_xlabel(r"$F_z^*$")
     freq.set_title("(b) frequency")
     freq.set_xlim(0, F_MAX)
-    fig.suptitle(rf"Fig. 12, strut variant {result['variant']}: V = 50 m/s, "
-                 r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm (solid stable, dashed unstable)")
+    draw.figure_title(fig, rf"Fig. 12, strut variant {result['variant']}: V = 50 m/s, "
+                           r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm")
     fig.tight_layout()
+    draw.legend(fig, extra=extra)   # below the panels
     draw.save(fig, result["name"])
+
+
+YAW = {True: "-.", False: ":"}   # line styles of the stationary yawed states
 
 
 if __name__ == "__main__":

@@ -16,7 +16,7 @@ from mlgshimmy.shared import paper
 from mlgshimmy.shared.draw import magnitude as draw_magnitude
 
 FREEPLAYS = freeplay.FIG13_FREEPLAYS
-COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red")
+COLOURS = draw.sequence(len(FREEPLAYS))
 FIT_RANGE = (0.05, 2.0)   # y_fp range of the linear fits [mm]
 
 
@@ -52,7 +52,7 @@ def numbers(diagrams, orbits):
 
 
 def plot(result):
-    paper.report("fig13", result["numbers"])
+    paper.report("fig13", paper.in_degrees(result["numbers"]))
     fig, axes = plt.subplots(2, 2, figsize=(10, 7.5))
     k_tlk = mlgmodel.Model("figures")["k_tlk"]
     for d, colour in zip(result["diagrams"], COLOURS):
@@ -61,8 +61,9 @@ def plot(result):
         ys, force = freeplay.profile(y, "ratio", k_tlk, span=1.0 / y * 3.0)
         axes[0][1].plot(ys, force, color=colour, label=f"$y_{{fp}}$ = {y:g} mm")
     axes[0][0].set(xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]", xlim=(0, mg.V_MAX),
-                   title="(a) diagrams in V (circles H, squares S)")
-    axes[0][0].legend(fontsize=7)
+                   title="(a) diagrams in V")
+    draw.legend(axes[0][0], extra=axes[0][0].get_legend_handles_labels()[0], color=draw.NEUTRAL,
+                loc="upper left", ncol=2)
     axes[0][1].set(xlabel="$y_{tlk}$ [mm]", ylabel=r"$M_{k\psi}/r_{tlk}$ [N]", xlim=(-3, 3),
                    title=r"(b) stiffness profiles, $\epsilon$ = 0.1 $y_{fp}$")
     axes[0][1].legend(fontsize=7)
@@ -72,7 +73,7 @@ def plot(result):
     axes[1][1].set_ylim(0, None)
     for ax in axes[1]:
         ax.set_xlim(0, mg.YFP_MAX)
-    fig.suptitle(r"Fig. 13: $F^*$ = 1, $\epsilon/y_{fp}$ = 0.1 (solid stable, dashed unstable)")
+    draw.figure_title(fig, r"Fig. 13: $F^*$ = 1, $\epsilon/y_{fp}$ = 0.1")
     fig.tight_layout()
     draw.save(fig, "fig13")
 

@@ -72,11 +72,13 @@ def plot(result):
     fig = plt.figure(figsize=(12, 12))
     grid = fig.add_gridspec(4, 6)
     k_tlk = mlgmodel.Model("figures")["k_tlk"]
+    diagram_axes = []
     for n, d in enumerate(result["diagrams"]):
         y = d["yfp"]
         row, col = divmod(n, 2)
         ax = fig.add_subplot(grid[row, 3 * col:3 * col + 2])
         draw_magnitude.diagram_in_V(ax, d, None, None)
+        diagram_axes.append(ax)
         ax.set(xlim=(0, mg.V_MAX), xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]",
                title=f"({'abcdef'[n]}) $y_{{fp}}$ = {y:g} mm")
         inset = fig.add_subplot(grid[row, 3 * col + 2])
@@ -88,14 +90,15 @@ def plot(result):
     draw_magnitude.orbits_in_yfp(ax_amp, ax_freq, result["orbits"])
     label = "Hopf curves"
     for curve in result["hopf_curves"]:
-        ax_freq.plot(curve["yfp"], curve["freq"], "k-.", lw=0.9, label=label)
+        ax_freq.plot(curve["yfp"], curve["freq"], label=label, **{**draw.HOPF_CURVE, "lw": 0.9})
         label = None
-    ax_freq.legend(fontsize=7)
+    draw.legend(ax_freq, extra=[h for h in ax_freq.get_legend_handles_labels()[0]
+                                if h.get_label() == "Hopf curves"], stability=False, axes=[])
     ax_amp.set(xscale="log", title="(g) orbits at fixed V continued in $y_{fp}$")
     ax_freq.set(xscale="log", ylim=(0, 45), title="(h) their frequency; Hopf curves dot-dashed")
-    fig.suptitle(r"Fig. 14: $F^*$ = 1, $\epsilon$ = 0.1 mm (solid stable, dashed unstable; "
-                 "circles H, squares S)")
+    draw.figure_title(fig, r"Fig. 14: $F^*$ = 1, $\epsilon$ = 0.1 mm")
     fig.tight_layout()
+    draw.legend(fig, axes=diagram_axes)   # below the panels: styles and points of (a)-(f)
     draw.save(fig, "fig14")
 
 

@@ -31,8 +31,9 @@ def main():
     for ax, scaling, freeplays, title in (
             (axes[0], "ratio", fp.FIG13_FREEPLAYS, r"(a) $\epsilon$ = 0.1 $y_{fp}$ (Fig. 13)"),
             (axes[1], "fixed", fp.FIG14_FREEPLAYS, r"(b) $\epsilon$ = 0.1 mm (Fig. 14)")):
-        for y in freeplays:
-            ax.plot(*rescaled(y, scaling, k_tlk), lw=1.2, label=f"$y_{{fp}}$ = {y:g} mm")
+        for y, colour in zip(freeplays, draw.sequence(len(freeplays))):
+            ax.plot(*rescaled(y, scaling, k_tlk), lw=1.2, color=colour,
+                    label=f"$y_{{fp}}$ = {y:g} mm")
         ax.plot([-SPAN, -1, 1, SPAN], [1 - SPAN, 0, 0, SPAN - 1], "k--", lw=0.8,
                 label=r"$\epsilon$ = 0 (eq. 14)")
         ax.set(title=title, xlabel=r"$x^* = y_{tlk}/y_{fp}$", xlim=(-SPAN, SPAN))
@@ -41,7 +42,7 @@ def main():
             spread(scaling, freeplays, k_tlk)
     paper.report("fig15", ours)
     axes[0].set_ylabel(r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$")
-    fig.suptitle("Fig. 15: rescaled torque-link stiffness profiles")
+    draw.figure_title(fig, "Fig. 15: rescaled torque-link stiffness profiles")
     fig.tight_layout()
     draw.save(fig, "fig15")
 

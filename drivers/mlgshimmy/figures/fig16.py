@@ -28,7 +28,7 @@ HIGHLIGHT = {"ratio": (0.5, 1.0, 2.0), "fixed": freeplay.FIG14_FREEPLAYS}
 DEG = numpy.degrees(1.0)
 Y_MAX = 1.0   # y_fp range [mm] of panel (b)
 SLICE = "0.15"   # colour of the highlighted slices
-HOPF, FOLD = {"color": "b", "ls": "-.", "lw": 1.3}, {"color": "k", "ls": "-.", "lw": 1.5}
+HOPF, FOLD = draw.HOPF_CURVE, draw.FOLD_CURVE
 
 
 FOLD_SEED = 0.15   # y_fp [mm] of the "fixed" diagram whose fold starts the fold curve
@@ -190,12 +190,12 @@ def plot(result):
         ax.view_init(elev=22, azim=-55)
         ax.set_box_aspect(None, zoom=0.88)   # room for the axis labels inside the canvas
     handles = [Patch(color=draw.STABLE, label="stable orbits"),
-               Patch(color=draw.UNSTABLE, label="unstable orbits (brown under a stable sheet)"),
+               Patch(color=draw.UNSTABLE, label="unstable orbits (olive seen through a stable sheet)"),
                Line2D([], [], label="Hopf curves", **HOPF),
                Line2D([], [], label="fold-of-cycles curves (dots: folds of the slices)", **FOLD),
                Line2D([], [], color=SLICE, label="slices of Figs. 13 and 14 (dashed unstable)")]
     fig.legend(handles=handles, loc="lower center", ncol=5, fontsize=8, frameon=False)
-    fig.suptitle("Fig. 16: periodic orbits over (V, $y_{fp}$), $F^*$ = 1", y=0.98)
+    draw.figure_title(fig, "Fig. 16: periodic orbits over (V, $y_{fp}$), $F^*$ = 1", y=0.98)
     fig.subplots_adjust(left=0.0, right=0.97, bottom=0.02, top=1.0, wspace=0.02)
     draw.save(fig, "fig16")
 

@@ -28,10 +28,10 @@ def plot(result):
     window = result["window"]
     fig, ax = plt.subplots(figsize=(7, 5))
     eps = mg.EPSILON
-    for kind, style, label in (("hopf_curves", "b-.", "Hopf"),
-                               ("fold_curves", "k-.", "fold of cycles")):
+    for kind, style, label in (("hopf_curves", draw.HOPF_CURVE, "Hopf"),
+                               ("fold_curves", draw.FOLD_CURVE, "fold of cycles")):
         for curve in result[kind]:
-            ax.plot(curve["V"], numpy.asarray(curve["yfp"]) / eps, style, lw=1.2, label=label)
+            ax.plot(curve["V"], numpy.asarray(curve["yfp"]) / eps, label=label, **style)
             label = None
     for lo, hi, name in ((0.0, window["a"], "R1"), (window["b"], window["c"], "R2")):
         ax.fill_between([0, mg.V_LIMIT], lo / eps, hi / eps, color="tab:cyan", alpha=0.35)
@@ -41,9 +41,9 @@ def plot(result):
         ax.plot(V, y, "ko", ms=4)
         ax.annotate(name, (V, y), textcoords="offset points", xytext=(4, 4))
     ax.axvline(mg.V_LIMIT, color="0.4", ls=":", lw=1)
-    ax.set(xlim=(0, mg.V_MAX), ylim=(0, 6), xlabel="V [m/s]", ylabel=r"$y_{fp}/\epsilon$",
-           title=r"Fig. 17: bifurcation curves in (V, $y_{fp}/\epsilon$), $F^*$ = 1, "
-                 r"$\epsilon$ = 0.1 mm")
+    ax.set(xlim=(0, mg.V_MAX), ylim=(0, 6), xlabel="V [m/s]", ylabel=r"$y_{fp}/\epsilon$")
+    draw.figure_title(ax, r"Fig. 17: bifurcation curves in (V, $y_{fp}/\epsilon$), $F^*$ = 1, "
+                          r"$\epsilon$ = 0.1 mm")
     ax.legend(fontsize=8, loc="upper right")
     draw.save(fig, "fig17")
 

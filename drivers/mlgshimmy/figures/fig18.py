@@ -167,10 +167,10 @@ def plot(result):
         Patch(facecolor=colour, edgecolor="0.4", alpha=0.8, label=name)
         for colour, name in zip(COLOURS, REGIONS)]   # edged: R1 is white
     ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0], FSTARS[-1]),
-           xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$",
-           title=rf"Fig. 18, strut variant {result['variant']}: straight rolling for "
-                 rf"V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm (hatched: $y_{{fp}}/\epsilon < "
-                 rf"\kappa^*$ = {kappa:.3f})")
+           xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$")
+    draw.figure_title(ax, rf"Fig. 18, strut variant {result['variant']}: straight rolling for "
+                          rf"V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm (hatched: $y_{{fp}}/\epsilon < "
+                          rf"\kappa^*$ = {kappa:.3f})")
     ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     draw.save(fig, result["name"])
 

@@ -47,8 +47,8 @@ def main():
     ax.plot(x, rescaled(10.0, x), color="tab:red", lw=1,
             label=r"$y_{fp}/\epsilon$ = 10 (section IV.B)")
     ax.set(xlim=(-SPAN, SPAN), xlabel=r"$x^* = y_{tlk}/y_{fp}$",
-           ylabel=r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$",
-           title="Fig. 19: allowed rescaled freeplay profiles, both strut readings")
+           ylabel=r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$")
+    draw.figure_title(ax, "Fig. 19: allowed rescaled freeplay profiles, both strut readings")
     ax.legend(fontsize=7)
     paper.report("fig19", {
         "kappa*, strut variant 0": kappa, "kappa*, strut variant 1": kappa_printed,

@@ -165,7 +165,8 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
                            and abs(freq - hopf[h]) <= SAME_FREQUENCY * hopf[h])
             if not ends[h]:
                 print(f"{figure}: orbits {name} pass the Hopf point {parameter} = {h:.5g} "
-                      f"(amplitude {amp[i]:.3g} rad, {freq:.4g} Hz there)", flush=True)
+                      f"(amplitude {numpy.degrees(amp[i]):.3g} deg, {freq:.4g} Hz there)",
+                      flush=True)
                 origin = orbits("UZ")[-1]
     return runs, ends
 

@@ -1,17 +1,27 @@
 """The paper's printed numbers next to ours: one table per figure, printed
-and stored as build/tables/<fig>.txt.
+and stored as build/tables/<fig>.txt, and as <fig>.json for the
+reproduction report (shared.report).
 
     paper.report("fig10", ours_figures, ours_table)
 
-ours_* map a quantity (e.g. "H1 [m/s]") to a value; quantities the paper
-does not print are listed with "-" in its column."""
+ours_* map a quantity (e.g. "H1 [m/s]") to a value.  A figure for which
+the paper prints numbers (PAPER) gets the columns paper, ours, relative
+error and a status (status()); a figure for which it prints none gets the
+column of ours alone, and a note naming the values the paper withholds as
+held-out checks (HELD_OUT), if any."""
+import json
 import os
 
-from mlgshimmy.shared import geometry
+import numpy
+
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs.atomic import write_text
+from mlgshimmy.shared import geometry
 
-# Section IV of the paper (the `figures` set is calibrated on the first one).
+# Every result value section IV prints, by the figure that shows it (the
+# `figures` set is calibrated on the first one).  Inputs the text names
+# (V = 300 m/s of Fig. 8, the 80 m/s operating region, the 120 m/s and
+# F* = 2 limits of IV.E, the y_fp of the panels) are not results.
 PAPER = {
     "fig07": {"H, F* = 1 [m/s]": 346.1},
     "fig10": {"H1 [m/s]": 1.5, "H2 [m/s]": 28.1, "H3 [m/s]": 142.5, "S1 [m/s]": 41.5},
@@ -19,37 +29,145 @@ PAPER = {
     "fig13": {"y_fp = 1: H1 [m/s]": 1.5, "y_fp = 1: H2 [m/s]": 28.1,
               "y_fp = 1: H3 [m/s]": 142.5, "y_fp = 1: S1 [m/s]": 41.5},
 }
+# The quantity the paper's number was fitted to (model.md section 5).
+CALIBRATED = {("fig07", "H, F* = 1 [m/s]")}
+# Values the paper replaces by symbols (held-out checks): our quantity ->
+# the paper's symbol.  Ours are reported; the paper's are never guessed.
+HELD_OUT = {
+    "fig12": {"a_12": "a_12", "b_12": "b_12"},
+    "fig16": {"r1 = a [mm]": "r_1", "r2 = b [mm]": "r_2", "r3 = c [mm]": "r_3"},
+    "fig18": {"kappa*": "kappa*"},
+}
+CLOSE = 0.02   # relative error up to which a value outside the printed digits is "close"
+
+
+def printed_precision(value):
+    """Half a unit of the last digit the paper prints (346.1 -> 0.05)."""
+    text = repr(float(value))
+    decimals = len(text.split(".")[1].rstrip("0")) if "." in text else 0
+    return 0.5 * 10.0 ** -decimals
+
+
+def status(figure, quantity, printed, ours):
+    """How ours compares with the printed value: "calibrated" (the
+    parameter set was fitted to it), "agrees" (within the printed digits),
+    "close" (relative error up to CLOSE), "off", or "missing"."""
+    if ours is None or not numpy.isfinite(ours):
+        return "missing"
+    if (figure, quantity) in CALIBRATED:
+        return "calibrated"
+    if abs(ours - printed) <= printed_precision(printed) * (1 + 1e-9):
+        return "agrees"
+    return "close" if abs(ours - printed) <= CLOSE * abs(printed) else "off"
+
+
+def rows(figure, ours, ours_table=None):
+    """[{"quantity", "paper", "ours", "ours_table", "rel_error", "status",
+    "held_out"}]: the printed quantities first, then the rest of ours."""
+    paper = PAPER.get(figure, {})
+    held = HELD_OUT.get(figure, {})
+    ours_table = ours_table or {}
+    # at a side-stay geometry: the baseline's numbers beside ours ({} if not computed)
+    base = None if geometry.current().baseline else (geometry.baseline_numbers(figure) or {})
+    out = []
+    for quantity in list(paper) + [q for q in ours if q not in paper]:
+        value, printed = ours.get(quantity), paper.get(quantity)
+        value = None if value is None else float(value)
+        row = {"quantity": quantity, "paper": printed, "ours": value,
+               "ours_table": ours_table.get(quantity), "rel_error": None, "status": None,
+               "held_out": held.get(quantity)}
+        if base is not None:
+            row["baseline"] = base.get(quantity)
+        if printed is not None:
+            if value is not None:
+                row["rel_error"] = (value - printed) / printed
+            row["status"] = status(figure, quantity, printed, value)
+        elif row["held_out"]:
+            row["status"] = "held out"
+        out.append(row)
+    return out
 
 
 def _cell(value):
     return "-" if value is None else f"{value:.6g}"
 
 
-def report(figure, ours, ours_table=None):
-    """Print and store the table; returns its text.  At a side-stay
-    geometry (shared.geometry) the table says so and has a column of the
-    baseline's numbers (rho = mu = 0, printed equations) where its figure
-    has been computed (make <fig> without RHO, MU)."""
-    paper = PAPER.get(figure, {})
-    ours_table = ours_table or {}
+def relative(error):
+    """A relative error as text: +1.24%, or +7.2e-09 when below 0.005 %."""
+    if error is None:
+        return "-"
+    return f"{error:+.1e}" if abs(error) < 5e-5 else f"{error:+.2%}"
+
+
+def text_of(figure, table):
+    """The plain-text table of rows()."""
+    printed = any(r["paper"] is not None for r in table)
+    with_table = any(r["ours_table"] is not None for r in table)
+    with_base = any("baseline" in r for r in table)
+    head = ["quantity"] + (["paper"] if printed else []) + ["ours (figures)"] \
+        + (["ours (table)"] if with_table else []) + (["rel. error", "status"] if printed else []) \
+        + (["baseline (figures)"] if with_base else [])
+    lines = [head]
+    for r in table:
+        line = [r["quantity"]] + ([_cell(r["paper"])] if printed else []) + [_cell(r["ours"])]
+        if with_table:
+            line.append(_cell(r["ours_table"]))
+        if printed:
+            line += [relative(r["rel_error"]), r["status"] or "-"]
+        if with_base:
+            line.append(_cell(r.get("baseline")))
+        lines.append(line)
+    widths = [max(len(line[k]) for line in lines) for k in range(len(head))]
+    body = "\n".join("  ".join(c.ljust(w) for c, w in zip(line, widths)).rstrip()
+                     for line in lines)
+    if printed:
+        title = f"{figure}: paper vs ours (rel. error and status of the figures set)"
+    else:
+        title = f"{figure}: ours (the paper prints no number for this figure)"
+    held = [r["held_out"] + ("" if r["held_out"] == r["quantity"] else f" ({r['quantity']})")
+            for r in table if r["held_out"]]
+    note = ("\nheld out by the paper (its values replaced by symbols): " + ", ".join(held)
+            if held else "")
     at = geometry.current()
-    base = None if at.baseline else (geometry.baseline_numbers(figure) or {})
-    rows = [("quantity", "paper", "ours (figures)", "ours (table)", "rel. error")
-            + (("baseline (figures)",) if base is not None else ())]
-    for quantity in list(paper) + [q for q in ours if q not in paper]:
-        value, printed = ours.get(quantity), paper.get(quantity)
-        error = (f"{(value - printed) / printed:+.2%}"
-                 if value is not None and printed is not None else "-")
-        rows.append((quantity, _cell(printed), _cell(value), _cell(ours_table.get(quantity)),
-                     error) + ((_cell(base.get(quantity)),) if base is not None else ()))
-    widths = [max(len(row[k]) for row in rows) for k in range(len(rows[0]))]
-    lines = ["  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip() for row in rows]
-    head = f"{figure}: paper vs ours (rel. error of the figures set)"
-    if base is not None:
-        head += (f"\n{figure}: at {at.describe()}; the paper and the baseline column: "
-                 "rho = mu = 0, eom_terms = 0"
-                 + ("" if base else f" (baseline not computed: make {figure})"))
-    text = head + "\n" + "\n".join(lines) + "\n"
-    write_text(os.path.join(paths.tables_dir(), f"{figure}.txt"), text)
+    if not at.baseline:
+        title += (f"\n{figure}: at {at.describe()}; the paper and the baseline column: "
+                  "rho = mu = 0, eom_terms = 0"
+                  + ("" if with_base and any(r.get("baseline") is not None for r in table)
+                     else f" (baseline not computed: make {figure})"))
+    return f"{title}\n{body}{note}\n"
+
+
+def table_path(figure, ext="txt"):
+    return os.path.join(paths.tables_dir(), f"{figure}.{ext}")
+
+
+def report(figure, ours, ours_table=None):
+    """Print and store the table (<fig>.txt, and <fig>.json for the
+    reproduction report); returns its text."""
+    table = rows(figure, ours, ours_table)
+    text = text_of(figure, table)
+    write_text(table_path(figure), text)
+    write_text(table_path(figure, "json"),
+               json.dumps({"figure": figure, "rows": table}, indent=1) + "\n")
     print(text, end="")
     return text
+
+
+def read_table(figure):
+    """The rows a figure's plot step stored (report()), or None."""
+    try:
+        with open(table_path(figure, "json")) as source:
+            return json.load(source)["rows"]
+    except (OSError, ValueError, KeyError):
+        return None
+
+
+def in_degrees(numbers):
+    """A copy of {quantity: value} with the quantities in radians ("[rad]",
+    "[rad/mm]") in degrees, as the figures plot them."""
+    out = {}
+    for quantity, value in numbers.items():
+        if "[rad" in quantity and value is not None:
+            quantity, value = quantity.replace("[rad", "[deg"), float(numpy.degrees(value))
+        out[quantity] = value
+    return out

@@ -189,7 +189,10 @@ def plot(name, title, result, reference):
     ax.set_ylabel("$F_z^*$")
     ax.set_title("Hopf curves (dashed: rho = mu = 0)")
     ax.legend(fontsize=7, loc="upper right")
-    fig.suptitle(f"{title}; grey / dashed: rho = mu = 0; solid green stable, dashed red unstable")
+    draw.legend(axes[0], extra=[plt.Line2D([], [], color="0.6", lw=1.0, label="rho = mu = 0"),
+                                plt.Line2D([], [], ls="", marker="o", ms=4, color="k",
+                                           label="H: Hopf point")], loc="upper left")
+    draw.figure_title(fig, f"{title}; grey / dashed: rho = mu = 0")
     draw.save(fig, name)
 
 

@@ -9,7 +9,7 @@ comma-separated; the default grid is 3 x 3):
   sweep.py check   [--rho L --mu L]   validate every grid point (no AUTO run)
   sweep.py targets [--rho L --mu L]   the result files, for make
   sweep.py jobs    [--rho L --mu L]   one shell command per grid point, for
-                                      GNU parallel or a Slurm array (README)
+                                      GNU parallel or a Slurm array (docs/parallel.md)
   sweep.py point rho<deg>_mu<deg>     run one grid point
   sweep.py summary [--rho L --mu L]   plot build/figures/sweep_critical_speed.*
 

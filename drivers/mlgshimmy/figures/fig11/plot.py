@@ -73,7 +73,7 @@ def plot(result):
     ax.set_ylim(0, F_MAX)
     ax.set_xlabel("V [m/s]")
     ax.set_ylabel(r"$F_z^*$")
-    ax.set_title(r"Fig. 11: $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm; regions bounded by the "
-                 "curves, labelled from diagrams in V at "
-                 f"F* = {SLICES[0]:g}, {SLICES[1]:g}, ..., {SLICES[-1]:g}", fontsize=8)
+    draw.figure_title(ax, r"Fig. 11: $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm; regions bounded by the "
+                          "curves, labelled from diagrams in V at "
+                          f"F* = {SLICES[0]:g}, {SLICES[1]:g}, ..., {SLICES[-1]:g}", fontsize=8)
     draw.save(fig, "fig11")

@@ -1,34 +1,119 @@
 """Plot styles and helpers shared by the figure drivers (no AUTO import):
-branches drawn by stability, special points marked, figures saved.
+branches drawn by stability, special points marked and named, a legend
+that explains both, figures saved.
 
-    plot_branch(ax, diagram, "V", "psi_amp", scale=DEG)   # green/red
+    plot_branch(ax, diagram, "V", "psi_amp", scale=DEG)   # stable / unstable
+    mark_specials(ax, orbits, "V", "psi_amp", scale=DEG)  # S, TR, ... of the branches
+    mark(ax, V, 0.0, "HB", name="H1")                     # one point
+    legend(ax)                       # stable, unstable and every point kind marked
+    figure_title(fig, "Fig. 10: ...")   # left out with MLG_PAPER_STYLE=1
     save(fig, "fig10")          # $MLG_RUN_ROOT/figures/fig10.png and .pdf
+
+Stability is told by colour *and* line style, colour-blind safe and
+legible in grey scale: stable solid dark blue, unstable dashed orange
+(STABLE, UNSTABLE).  Special points have one marker and one name in every
+figure (POINTS): H Hopf (circle), S fold of periodic orbits (square), P
+pitchfork (diamond), TR torus point (open triangle), and a stability change
+of an orbit branch that AUTO labelled with nothing (open circle).  Their
+names are placed when the figure is saved (labels.place), clear of each
+other, of the markers and of the curves where possible; points of one
+name that nearly coincide are named once.
+
+MLG_PAPER_STYLE=1 in the environment (`make <fig> PAPER=1`) leaves out the
+"Fig. N: ..." titles (figure_title) for use in a paper; panel titles stay.
 """
 import os
 
 import matplotlib
 import matplotlib.pyplot as plt
 import numpy
+from matplotlib.lines import Line2D
 
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import geometry
 from mlgshimmy.shared import paths
+from mlgshimmy.shared.draw import labels
 from mlgshimmy.shared.jobs.atomic import write_atomic
 
 matplotlib.rcParams.update({"figure.dpi": 110, "savefig.dpi": 150, "font.size": 9,
                             "axes.grid": True, "grid.alpha": 0.3})
-STABLE, UNSTABLE = "tab:green", "tab:red"
+# Okabe-Ito-like pair: distinct for every common colour-vision deficiency
+# and by lightness in grey scale; the line style tells them apart as well.
+STABLE, UNSTABLE = "#0b3d91", "#e69f00"
+STABLE_STYLE = {"color": STABLE, "linestyle": "-"}
+UNSTABLE_STYLE = {"color": UNSTABLE, "linestyle": "--"}
+NEUTRAL = "0.25"
+# curves of bifurcation points in two parameters (Figs. 9, 14(h), 16, 17):
+# dot-dash as in the paper, Hopf in a colour neither stability colour uses
+HOPF_CURVE = {"color": "#aa3377", "ls": "-.", "lw": 1.3}
+FOLD_CURVE = {"color": "k", "ls": "-.", "lw": 1.5}   # the stability legend of figures whose colours mean something else
 DEG = numpy.degrees(1.0)
+
+# AUTO type -> how it is drawn and named; "change": a stability change of
+# an orbit branch with no AUTO label (AUTO's TR test fires only when its
+# multiplier count and test function change in one step; docs/reproduction.md)
+POINTS = {
+    "HB": {"name": "H", "marker": "o", "mfc": "k", "ms": 4.0, "legend": "Hopf point"},
+    "LP": {"name": "S", "marker": "s", "mfc": "k", "ms": 4.0,
+           "legend": "fold of periodic orbits"},
+    "BP": {"name": "P", "marker": "D", "mfc": "k", "ms": 4.0, "legend": "pitchfork"},
+    "TR": {"name": "TR", "marker": "^", "mfc": "white", "ms": 5.0,
+           "legend": "torus (Neimark-Sacker) point"},
+    "change": {"name": "", "marker": "o", "mfc": "white", "ms": 4.5,
+               "legend": "stability change AUTO did not label"},
+}
+SPECIAL = ("LP", "BP", "TR")
+START_ZONE = 1e-3   # relative distance from a branch's start inside which changes are noise   # the labelled points mark_specials marks on branches
+
+
+def paper_style() -> bool:
+    """True when figures are drawn for a paper (MLG_PAPER_STYLE=1)."""
+    return os.environ.get("MLG_PAPER_STYLE", "").strip() not in ("", "0")
+
+
+def figure_title(target, text, **options):
+    """The figure's title ("Fig. N: ..."): fig.suptitle for a Figure, the
+    title of an Axes otherwise; nothing in paper style."""
+    if paper_style():
+        return None
+    if isinstance(target, matplotlib.figure.Figure):
+        return target.suptitle(text, **options)
+    return target.set_title(text, **options)
+
+
+def sequence(n, cmap="viridis"):
+    """n colours in order (a family of curves: eps, y_fp, V), from a
+    perceptually uniform map that is safe for colour-vision deficiencies;
+    the light yellow end is left out (it vanishes on white)."""
+    return [matplotlib.colormaps[cmap](x) for x in numpy.linspace(0.0, 0.82, n)]
+
+
+def sci(value, digits=2):
+    """A number for mathtext in scientific notation: 3.9e7 -> 3.9 x 10^7
+    (as "$3.9 \\times 10^{7}$")."""
+    mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
+    exponent = int(exponent)
+    return f"${mantissa}$" if exponent == 0 else f"${mantissa} \\times 10^{{{exponent}}}$"
+
+
+def style_of(stable, color=None, lw=1.4):
+    """Line keywords of a stable or unstable piece; with `color` given (a
+    figure whose colours mean something else) only the style changes."""
+    base = dict(STABLE_STYLE if stable else UNSTABLE_STYLE)
+    if color is not None:
+        base["color"] = color
+    base["lw"] = lw
+    return base
 
 
 def plot_stability(ax, xs, ys, stable, label=None, **style):
     """A curve given as arrays with a stability mask: stable parts solid,
-    unstable dashed, green/red unless `color` is given."""
+    unstable dashed, in STABLE / UNSTABLE unless `color` is given."""
     xs, ys, stable = numpy.asarray(xs), numpy.asarray(ys), numpy.asarray(stable)
     for s in branches.runs_of(stable):
         ok = bool(stable[s.start])
-        ax.plot(xs[s], ys[s], color=style.get("color", STABLE if ok else UNSTABLE),
-                linestyle="-" if ok else "--", lw=style.get("lw", 1.4), label=label)
+        ax.plot(xs[s], ys[s], label=label,
+                **style_of(ok, style.get("color"), style.get("lw", 1.4)))
         label = None
 
 
@@ -40,21 +125,133 @@ def plot_branch(ax, diagram, x, y, scale=1.0, label=None, **style):
         label = None
 
 
-def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None):
-    """Mark and label the special points of one type (e.g. 'HB', 'LP') on
-    every branch of a diagram."""
+def mark(ax, x, y, kind, name=None, color="k", zorder=5):
+    """One special point of type `kind` (a key of POINTS) at (x, y), named
+    `name` (default the kind's name; "" for none) when the figure is saved."""
+    point = POINTS[kind]
+    ax.plot([x], [y], linestyle="", marker=point["marker"], ms=point["ms"],
+            mfc=point["mfc"] if color == "k" or point["mfc"] == "white" else color,
+            mec=color, mew=0.9, zorder=zorder)
+    kinds = ax.__dict__.setdefault("_mlg_kinds", [])
+    if kind not in kinds:
+        kinds.append(kind)
+    labels.register(ax, x, y, point["name"] if name is None else name)
+
+
+def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None, color="k"):
+    """Mark and name the labelled points of one AUTO type (e.g. 'HB', 'LP')
+    on every branch of a diagram (named `text`, default POINTS' name)."""
     for branch in diagram:
         for index, _, _ in branches.labelled_points(branch, kind):
-            at = (branch[x][index], branch[y][index] * scale)
-            ax.plot(*at, "ko", ms=3.5)
-            ax.annotate(text or kind[0], at, textcoords="offset points", xytext=(3, 4),
-                        fontsize=8)
+            mark(ax, branch[x][index], branch[y][index] * scale, kind, name=text, color=color)
+
+
+def stability_changes(branch, near=2):
+    """Point indices where an orbit branch changes stability with no AUTO
+    label within `near` points (the change lies between index and index+1).
+    The first and last `near` steps are left out: a branch from a Hopf
+    point starts there with the Hopf point's own, arbitrary, flag."""
+    stable = branches.stable_mask(branch)
+    labelled = [index for index, _, _ in branches.labelled_points(branch)]
+    return [int(i) for i in numpy.flatnonzero(stable[1:] != stable[:-1])
+            if near <= i < len(stable) - 1 - near
+            and all(abs(i - j) > near and abs(i + 1 - j) > near for j in labelled)]
+
+
+def mark_specials(ax, diagram, x, y, scale=1.0, kinds=SPECIAL, changes=True, color="k"):
+    """Every labelled special point of `kinds` on the branches of an orbit
+    diagram (folds S, pitchforks P, torus points TR), and with `changes` the
+    stability changes AUTO labelled with nothing (at the middle of the step
+    across which the stability flips)."""
+    for kind in kinds:
+        mark_points(ax, diagram, kind, x, y, scale, color=color)
+    if changes:
+        for branch in diagram:
+            xs, ys = numpy.asarray(branch[x]), numpy.asarray(branch[y]) * scale
+            for i in stability_changes(branch):
+                at = 0.5 * (xs[i] + xs[i + 1])
+                # next to the Hopf point a branch starts from, the flag flips
+                # spuriously (multipliers at 1; as AUTO's fold test there)
+                if abs(at - xs[0]) > START_ZONE * max(abs(xs[0]), 1e-12):
+                    mark(ax, at, 0.5 * (ys[i] + ys[i + 1]), "change", color=color)
+
+
+def stability_handles(color=None):
+    """Legend entries of the two stability styles (in `color` if given)."""
+    return [Line2D([], [], label="stable", **style_of(True, color)),
+            Line2D([], [], label="unstable", **style_of(False, color))]
+
+
+def point_handles(kinds):
+    """Legend entries of special point kinds: marker and "H: Hopf point"."""
+    out = []
+    for kind in kinds:
+        point = POINTS[kind]
+        label = f"{point['name']}: {point['legend']}" if point["name"] else point["legend"]
+        out.append(Line2D([], [], linestyle="", marker=point["marker"], ms=point["ms"],
+                          mfc=point["mfc"], mec="k", mew=0.9, label=label))
+    return out
+
+
+def marked_kinds(*axes):
+    """The point kinds marked on the given axes, in POINTS' order."""
+    found = {k for ax in axes for k in ax.__dict__.get("_mlg_kinds", [])}
+    return [k for k in POINTS if k in found]
+
+
+def legend(target, extra=(), axes=None, color=None, stability=True, **options):
+    """A legend on an Axes, or below the panels of a Figure: the stability
+    styles (in `color` if the figure's colours mean something else;
+    stability=False: none), `extra` handles, then every special point kind
+    marked on `axes` (default: the Axes, or all axes of the Figure)."""
+    is_figure = isinstance(target, matplotlib.figure.Figure)
+    if axes is None:
+        axes = target.axes if is_figure else [target]
+    handles = (stability_handles(color) if stability else []) + list(extra)
+    handles += point_handles(marked_kinds(*list(axes)))
+    options.setdefault("fontsize", 7)
+    options.setdefault("framealpha", 0.9)
+    if is_figure:
+        options.setdefault("loc", "upper center")
+        options.setdefault("bbox_to_anchor", (0.5, 0.0))
+        options.setdefault("ncol", 3)
+        options.setdefault("frameon", False)
+        options["fontsize"] = max(options["fontsize"], 8)
+    return target.legend(handles=handles, **options)
+
+
+def smooth(xs, ys, span=(1.0, 1.0), per_step=12):
+    """A curve through stored points (xs, ys), drawn smoothly: a centripetal
+    Catmull-Rom spline (no loops or cusps, no overshoot beyond its
+    neighbours' hull in practice) in coordinates scaled by `span` (the
+    axes' ranges), `per_step` samples per stored step.  It passes through
+    every stored point: a drawing aid, the data are unchanged."""
+    p = numpy.c_[numpy.asarray(xs, float) / span[0], numpy.asarray(ys, float) / span[1]]
+    if len(p) < 3:
+        return numpy.asarray(xs, float), numpy.asarray(ys, float)
+    ext = numpy.vstack([2 * p[0] - p[1], p, 2 * p[-1] - p[-2]])
+    out = [p[:1]]
+    for k in range(1, len(ext) - 2):
+        p0, p1, p2, p3 = ext[k - 1:k + 3]
+        t0 = 0.0
+        t1 = t0 + max(numpy.linalg.norm(p1 - p0) ** 0.5, 1e-12)
+        t2 = t1 + max(numpy.linalg.norm(p2 - p1) ** 0.5, 1e-12)
+        t3 = t2 + max(numpy.linalg.norm(p3 - p2) ** 0.5, 1e-12)
+        t = numpy.linspace(t1, t2, per_step + 1)[1:, None]
+        a1 = (t1 - t) / (t1 - t0) * p0 + (t - t0) / (t1 - t0) * p1
+        a2 = (t2 - t) / (t2 - t1) * p1 + (t - t1) / (t2 - t1) * p2
+        a3 = (t3 - t) / (t3 - t2) * p2 + (t - t2) / (t3 - t2) * p3
+        b1 = (t2 - t) / (t2 - t0) * a1 + (t - t0) / (t2 - t0) * a2
+        b2 = (t3 - t) / (t3 - t1) * a2 + (t - t1) / (t3 - t1) * a3
+        out.append((t2 - t) / (t2 - t1) * b1 + (t - t1) / (t2 - t1) * b2)
+    curve = numpy.vstack(out)
+    return curve[:, 0] * span[0], curve[:, 1] * span[1]
 
 
 def surface(ax, quads, stable, alpha=(0.45, 0.85), light=(-0.4, -1.0, 1.2)):
     """Quadrilaterals (n, 4, 3) in the data coordinates of a 3-D axes (its
     limits set) as one polygon collection, so that mplot3d sorts them by
-    depth together: green where `stable`, red where not (alpha: their
+    depth together: STABLE where `stable`, UNSTABLE where not (alpha: their
     opacities, the stable one lower so that unstable sheets under stable
     ones show), each darkened by the angle between its normal (in the axes'
     box units) and the light."""
@@ -76,10 +273,12 @@ def surface(ax, quads, stable, alpha=(0.45, 0.85), light=(-0.4, -1.0, 1.2)):
 
 
 def save(fig, name):
-    """Write $MLG_RUN_ROOT/figures/<name>.png and .pdf (each written beside
-    and renamed, so a reader never sees half a file) and close fig.  A figure
+    """Name the marked points (labels.place), then write
+    $MLG_RUN_ROOT/figures/<name>.png and .pdf (each written beside and
+    renamed, so a reader never sees half a file) and close fig.  A figure
     made at a side-stay geometry says so in its title (geometry.stamp)."""
     geometry.stamp(fig)
+    labels.place(fig)
     written = [write_atomic(os.path.join(paths.figures_dir(), f"{name}.{ext}"),
                             lambda out, ext=ext: fig.savefig(out, format=ext, bbox_inches="tight"),
                             mode="wb")

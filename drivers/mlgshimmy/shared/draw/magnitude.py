@@ -2,42 +2,49 @@
 orbits continued in y_fp and diagrams in V, from their cached records
 (magnitude.stored_orbits, magnitude.stored_diagram)."""
 import numpy
+from matplotlib.lines import Line2D
 
 from mlgshimmy.shared import draw, jobs
 from mlgshimmy.shared.magnitude import V_ORBITS
 
-ORBIT_COLOURS = dict(zip(V_ORBITS, ("tab:blue", "tab:orange", "tab:green", "tab:purple")))
+ORBIT_COLOURS = dict(zip(V_ORBITS, draw.sequence(len(V_ORBITS))))
 
 
 def orbits_in_yfp(ax_amp, ax_freq, orbits):
     """Torsional amplitude [deg] and frequency [Hz] against y_fp of stored
-    orbits (stored_orbits; solid stable, dashed unstable)."""
+    orbits (stored_orbits; solid stable, dashed unstable), one colour per
+    speed; the legend on ax_amp names the speeds and the two styles."""
     for V, curve in orbits:
         for ax, measure, scale in ((ax_amp, "psi_amp", draw.DEG), (ax_freq, "freq", 1.0)):
             draw.plot_stability(ax, curve["yfp"], numpy.asarray(curve[measure]) * scale,
-                                    curve["stable"], label=f"V = {V:g} m/s",
-                                    color=ORBIT_COLOURS[V], lw=1.5)
+                                curve["stable"], label=f"V = {V:g} m/s",
+                                color=ORBIT_COLOURS[V], lw=1.5)
     ax_amp.set_ylabel(r"$\psi$ amplitude [deg]")
     ax_freq.set_ylabel("frequency [Hz]")
     for ax in (ax_amp, ax_freq):
         ax.set_xlabel("$y_{fp}$ [mm]")
-    ax_amp.legend(fontsize=7)
+    speeds = [Line2D([], [], color=ORBIT_COLOURS[V], lw=1.5, label=f"V = {V:g} m/s")
+              for V, _ in orbits]
+    draw.legend(ax_amp, extra=speeds, color=draw.NEUTRAL, axes=[])
 
 
 def diagram_in_V(ax_amp, diagram, colour, label):
     """psi amplitude [deg] against V of a stored Diagram (stored_diagram):
-    its Hopf points on the axis, the periodic branches (solid stable, dashed
-    unstable; in `colour`, else green/red) and their folds."""
+    its Hopf points H on the axis, the periodic branches (solid stable,
+    dashed unstable; in `colour`, else STABLE/UNSTABLE), their folds S, and
+    the stability changes AUTO labelled with nothing (draw.mark_specials)."""
     deg = draw.DEG
     style = {"color": colour} if colour else {}
-    draw.plot_branch(ax_amp, jobs.loaded(diagram["branches"]), "V", "psi_amp", scale=deg,
-                         **style)
+    orbits = jobs.loaded(diagram["branches"])
+    draw.plot_branch(ax_amp, orbits, "V", "psi_amp", scale=deg, **style)
     if label:
         ax_amp.plot([], [], color=colour, label=label)
+    marker = colour or "k"
     for V, _ in diagram["hopf"]:
-        ax_amp.plot(V, 0.0, "o", color=colour or "k", ms=3)
+        draw.mark(ax_amp, V, 0.0, "HB", color=marker)
     for V, amp in diagram["folds"]:
-        ax_amp.plot(V, amp * deg, "s", color=colour or "k", ms=3)
+        draw.mark(ax_amp, V, amp * deg, "LP", color=marker)
+    draw.mark_specials(ax_amp, orbits, "V", "psi_amp", scale=deg, kinds=("TR",), color=marker)
 
 
 # Section IV.E: where straight rolling is stable for all V up to V_LIMIT.

@@ -13,7 +13,7 @@ DEFAULT_V x DEFAULT_FSTAR):
   atlas.py check   [--V L --Fstar L]   validate every cell (no simulation)
   atlas.py targets [--V L --Fstar L]   the result files, for make
   atlas.py jobs    [--V L --Fstar L]   one shell command per cell, for GNU
-                                       parallel or a Slurm array (README)
+                                       parallel or a Slurm array (docs/parallel.md)
   atlas.py cell V<v>_F<f>              simulate and classify one cell
   atlas.py summary [--V L --Fstar L]   summary.txt, summary.json and the plot
                                        build/figures/atlas.{png,pdf}

@@ -1,0 +1,449 @@
+"""The reproduction report: one HTML page, $MLG_RUN_ROOT/report/index.html
+(default build/report/), built from what the figures left behind -- their
+cached results ($MLG_RUN_ROOT/<fig>/result.json: provenance), their tables
+(tables/<fig>.json, written by shared.paper.report when a figure is drawn)
+and their PNGs (figures/<fig>.png, copied beside the page).  It computes
+nothing and imports no figure module: a figure not yet made shows as
+missing, with the command that makes it.
+
+    make report            # or: python3 -m mlgshimmy.studies.report [--out DIR]
+
+The page opens with the scorecard (every number the paper prints,
+shared.paper.PAPER, beside ours, the relative error and a status; the
+values the paper withholds, shared.paper.HELD_OUT, with ours), then the
+provenance (commit, AUTO, compilers, Python, numpy, matplotlib), then one
+section per figure: what the paper shows, our PNG and its table; then the
+studies beyond the paper that have been run (criterion, atlas, sweep,
+side-stay: their tables and figures, STUDIES)."""
+import argparse
+import datetime
+import html
+import json
+import os
+import platform
+import shutil
+import subprocess
+import sys
+
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs.atomic import write_text
+
+# (figure, command, what the paper shows): the order of the page
+FIGURES = [
+    ("fig06", "make fig06", "Torque-link force profiles, eq. (15) for five smoothing widths "
+     "against the non-smooth eq. (14) (section III)."),
+    ("fig07", "make fig07", "Zero freeplay, diagrams in V at F* = 0.2 and 1: stable straight "
+     "rolling up to a supercritical Hopf point H, torsional shimmy beyond it, far above the "
+     "80 m/s operating region; H at F* = 1 is 346.1 m/s (IV.A, IV.B)."),
+    ("fig08", "make fig08", "Time simulation at V = 300 m/s, F* = 0.2: the oscillation grows "
+     "and settles on the orbit of Fig. 7(a); beta and eta oscillate weakly (IV.A)."),
+    ("fig09", "make fig09", "The zero-freeplay Hopf curve in (V, F*): it bounds stable "
+     "straight rolling and lies outside the operating region (IV.A)."),
+    ("fig10", "make fig10", "F* = 1 with +-1 mm of freeplay: Hopf points at 1.5, 28.1 and "
+     "142.5 m/s, low-frequency orbits between the first two, high-frequency orbits with a "
+     "fold S at 41.5 m/s; bistability for V in (41.5, 142.5) (IV.B)."),
+    ("fig11", "make fig11", "The (V, F*) plane with freeplay: Hopf, fold and pitchfork curves "
+     "and the regions of low- and high-frequency shimmy, bistability and off-centre yaw "
+     "(IV.B, IV.C)."),
+    ("fig12", "make fig12", "V = 50 m/s, diagram in F*: two pitchforks with stationary yawed "
+     "states between them, a Hopf point, orbits with stable low- and high-frequency segments; "
+     "bistability for F* in (a_12, b_12), values the paper withholds (IV.C)."),
+    ("fig12_v1", "make fig12_v1", "Fig. 12 with the strut spring's stage order as printed "
+     "(strut variant 1; docs/model.md)."),
+    ("fig13", "make fig13", "eps = 0.1 y_fp: diagrams in V for y_fp = 0.2-2 mm scale with "
+     "y_fp while the bifurcation speeds stay fixed; orbit amplitudes linear in y_fp, "
+     "frequencies constant (IV.D.1)."),
+    ("fig14", "make fig14", "eps = 0.1 mm: diagrams for y_fp = 0.05-1 mm whose bifurcation "
+     "points move with y_fp; orbits exist only beyond a freeplay threshold (IV.D.2)."),
+    ("fig15", "make fig15", "The profiles of Figs. 13 and 14 rescaled: they coincide for "
+     "eps/y_fp fixed and do not for eps fixed (IV.D)."),
+    ("fig16", "make fig16", "Orbit surfaces over (V, y_fp) for both scalings; regions R1 = "
+     "(0, r_1) and R2 = (r_2, r_3) of y_fp where straight rolling is stable up to 120 m/s, "
+     "values the paper withholds (IV.E)."),
+    ("fig17", "make fig17", "The curves of Fig. 16(b) in (V, y_fp/eps) with the points a, b, c "
+     "that bound R1 and R2 (IV.E)."),
+    ("fig18", "make fig18", "a, b, c continued in F*: regions of the (y_fp/eps, F*) plane and "
+     "the envelope y_fp/eps < kappa* for F* up to 2, a value the paper withholds (IV.E)."),
+    ("fig18_v1", "make fig18_v1", "Fig. 18 with the printed strut stage order (strut variant "
+     "1)."),
+    ("fig19", "make fig19", "The rescaled profiles allowed by y_fp/eps < kappa* (eq. 17), "
+     "between the kappa* profile and eps -> infinity (IV.E)."),
+]
+# Studies beyond the paper: (name, command, what, text files, figures), each
+# path relative to the run root; shown when made (the side-stay runs by glob)
+STUDIES = [
+    ("criterion", "make -j2 criterion", "kappa* of eq. (17) under each low-load assumption "
+     "(strut readings, stage-switch position, c_psi, tyre laws at light load).",
+     ["tables/criterion.txt"], ["figures/criterion.png"]),
+    ("atlas", "make -j2 atlas", "The attractor atlas: what a time simulation settles on over "
+     "(V, F*), y_fp = 1 mm, eps = 0.1 mm, and its comparison with Fig. 11.",
+     ["atlas/summary.txt"], ["figures/atlas.png", "figures/atlas_fig11.png"]),
+    ("sweep", "make sweep", "The critical shimmy speed over a grid of side-stay angles.",
+     [], ["figures/sweep_critical_speed.png"]),
+    ("sidestay", "make sidestay RHO=10 MU=10", "Side-stay angles against rho = mu = 0.",
+     ["tables/sidestay_*.txt"], ["figures/sidestay_*.png"]),
+]
+STATUS_CLASS = {"agrees": "good", "calibrated": "calib", "close": "close", "off": "bad",
+                "missing": "bad", "held out": "held"}
+STATUS_TEXT = {
+    "agrees": "within the digits the paper prints",
+    "calibrated": "the parameter set was fitted to it (c_psi; docs/model.md section 5)",
+    "close": f"outside the printed digits, relative error within {paper.CLOSE:.0%}",
+    "off": f"relative error beyond {paper.CLOSE:.0%}",
+    "missing": "not computed yet (run the figure's command)",
+    "held out": "the paper replaces the value by a symbol: ours is shown, the paper's "
+                "is not known here",
+}
+
+
+def _run(*command):
+    try:
+        proc = subprocess.run(command, capture_output=True, text=True, timeout=30)
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    return proc.stdout.strip() if proc.returncode == 0 else None
+
+
+def read_result(figure, root):
+    """(provenance, data) of a figure's cached result, or (None, None)."""
+    try:
+        with open(os.path.join(root, figure, "result.json")) as source:
+            record = json.load(source)
+    except (OSError, ValueError):
+        return None, None
+    return record.get("provenance") or {}, record.get("data")
+
+
+def read_rows(figure, root):
+    """The table rows of a figure (tables/<fig>.json), or None."""
+    try:
+        with open(os.path.join(root, "tables", f"{figure}.json")) as source:
+            return json.load(source)["rows"]
+    except (OSError, ValueError, KeyError):
+        return None
+
+
+def read_summary(figure, root):
+    """Rows of a simulation summary (<fig>/summary.txt: "name value"
+    lines, Fig. 8), or None."""
+    try:
+        with open(os.path.join(root, figure, "summary.txt")) as source:
+            pairs = [line.split() for line in source if line.strip()]
+    except OSError:
+        return None
+    rows = []
+    for pair in pairs:
+        if len(pair) == 2:
+            try:
+                value = float(pair[1])
+            except ValueError:
+                continue
+            rows.append({"quantity": pair[0], "paper": None, "ours": value, "ours_table": None,
+                         "rel_error": None, "status": None, "held_out": None})
+    return rows or None
+
+
+def auto_version():
+    """The AUTO-07p the drivers would use now: its CHANGELOG's first line
+    (a source build) or its Debian package's version."""
+    where = os.environ.get("AUTO_DIR")
+    if not where:
+        try:
+            with open(os.path.join(paths.BUILD, "auto-dir")) as chosen:
+                where = chosen.read().strip()
+        except OSError:
+            where = os.path.join(paths.BUILD, "auto", "07p")
+    try:
+        with open(os.path.join(where, "CHANGELOG")) as log:
+            return f"{log.readline().strip().rstrip(':')} ({where})"
+    except OSError:
+        pass
+    owner = _run("dpkg-query", "-S", where)
+    package = owner.split(":")[0].strip() if owner else ""
+    version = _run("dpkg-query", "-W", "-f=${Version}", package) if package else None
+    return f"{package} {version} ({where})" if version else f"unknown ({where})"
+
+
+def tools():
+    """[(tool, version)] of what made and drew the results, read now."""
+    import matplotlib
+    import numpy
+    first = lambda text: text.splitlines()[0] if text else "not found"   # noqa: E731
+    head = _run("git", "-C", paths.ROOT, "rev-parse", "HEAD")
+    dirty = _run("git", "-C", paths.ROOT, "status", "--porcelain", "--", "drivers", "c",
+                 "models", "constants")
+    return [("commit (now)", (head or "unknown") + ("+dirty" if dirty else "")),
+            ("AUTO-07p", auto_version()),
+            ("C compiler", first(_run("cc", "--version"))),
+            ("Fortran compiler", first(_run("gfortran", "--version"))),
+            ("Python", f"{platform.python_version()} ({sys.executable})"),
+            ("numpy", numpy.__version__), ("matplotlib", matplotlib.__version__),
+            ("system", platform.platform())]
+
+
+def collect_studies(root):
+    """[{"name", "command", "what", "texts": [(path, text)], "pngs": [path]}]
+    of the studies that were run (their files exist)."""
+    import glob
+    out = []
+    for name, command, what, texts, pngs in STUDIES:
+        found_texts = []
+        for pattern in texts:
+            for path in sorted(glob.glob(os.path.join(root, pattern))):
+                with open(path) as source:
+                    found_texts.append((path, source.read()))
+        found_pngs = [p for pattern in pngs for p in sorted(glob.glob(os.path.join(root, pattern)))]
+        out.append({"name": name, "command": command, "what": what, "texts": found_texts,
+                    "pngs": found_pngs})
+    return out
+
+
+def collect(root):
+    """Everything the page shows, as plain data (the test reads it too)."""
+    figures = []
+    for figure, command, shows in FIGURES:
+        provenance, data = read_result(figure, root)
+        png = os.path.join(root, "figures", f"{figure}.png")
+        rows = read_rows(figure, root) or read_summary(figure, root)
+        entry = {"figure": figure, "command": command, "shows": shows,
+                 "provenance": provenance, "cached": data is not None,
+                 "png": png if os.path.exists(png) else None, "rows": rows}
+        result = os.path.join(root, figure, "result.json")
+        entry["stale"] = bool(entry["png"] and os.path.exists(result)
+                              and os.path.getmtime(entry["png"]) < os.path.getmtime(result))
+        figures.append(entry)
+    by_figure = {f["figure"]: f for f in figures}
+    score = []
+    for figure, printed in paper.PAPER.items():
+        rows = {r["quantity"]: r for r in (by_figure.get(figure, {}).get("rows") or [])}
+        for quantity, value in printed.items():
+            row = rows.get(quantity)
+            ours = row["ours"] if row else None
+            score.append({"figure": figure, "quantity": quantity, "paper": value, "ours": ours,
+                          "rel_error": None if ours is None else (ours - value) / value,
+                          "status": paper.status(figure, quantity, value, ours)})
+    for figure, held in paper.HELD_OUT.items():
+        rows = {r["quantity"]: r for r in (by_figure.get(figure, {}).get("rows") or [])}
+        for quantity, symbol in held.items():
+            row = rows.get(quantity)
+            score.append({"figure": figure, "quantity": quantity, "paper": symbol,
+                          "ours": row["ours"] if row else None, "rel_error": None,
+                          "status": "held out" if row else "missing"})
+    return {"figures": figures, "score": score, "tools": tools(), "studies": collect_studies(root),
+            "written": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")}
+
+
+def _number(value):
+    if value is None:
+        return "&ndash;"
+    if isinstance(value, str):
+        return html.escape(value)
+    return f"{value:.6g}"
+
+
+def _status(status):
+    if not status:
+        return ""
+    return (f'<span class="st {STATUS_CLASS.get(status, "")}" '
+            f'title="{html.escape(STATUS_TEXT.get(status, ""))}">{html.escape(status)}</span>')
+
+
+def _scorecard(score):
+    counts = {}
+    for row in score:
+        counts[row["status"]] = counts.get(row["status"], 0) + 1
+    summary = ", ".join(f"{n} {s}" for s, n in counts.items())
+    lines = ['<table class="score"><thead><tr><th>figure</th><th>quantity</th><th>paper</th>'
+             '<th>ours</th><th>rel. error</th><th>status</th></tr></thead><tbody>']
+    for row in score:
+        lines.append(
+            f'<tr><td><a href="#{row["figure"]}">{row["figure"]}</a></td>'
+            f'<td>{html.escape(row["quantity"])}</td><td>{_number(row["paper"])}</td>'
+            f'<td>{_number(row["ours"])}</td><td>{html.escape(paper.relative(row["rel_error"]))}'
+            f'</td><td>{_status(row["status"])}</td></tr>')
+    lines.append("</tbody></table>")
+    legend = "".join(f"<li>{_status(s)} {html.escape(t)}</li>" for s, t in STATUS_TEXT.items())
+    return (f"<p>{len(score)} rows: {html.escape(summary)}.</p>" + "\n".join(lines)
+            + f'<ul class="legend">{legend}</ul>')
+
+
+def _table(rows):
+    printed = any(r["paper"] is not None for r in rows)
+    with_table = any(r.get("ours_table") is not None for r in rows)
+    head = ["quantity"] + (["paper"] if printed else []) + ["ours"] \
+        + (["ours (table set)"] if with_table else []) \
+        + (["rel. error", "status"] if printed else [])
+    out = ['<table class="numbers"><thead><tr>' + "".join(f"<th>{h}</th>" for h in head)
+           + "</tr></thead><tbody>"]
+    for r in rows:
+        cells = [html.escape(r["quantity"]) + (f' <span class="st held">held out: '
+                                               f'{html.escape(r["held_out"])}</span>'
+                                               if r.get("held_out") else "")]
+        if printed:
+            cells.append(_number(r["paper"]))
+        cells.append(_number(r["ours"]))
+        if with_table:
+            cells.append(_number(r.get("ours_table")))
+        if printed:
+            cells += [html.escape(paper.relative(r["rel_error"])), _status(r["status"])]
+        out.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+    out.append("</tbody></table>")
+    return "\n".join(out)
+
+
+def _figure(entry, image):
+    figure = entry["figure"]
+    parts = [f'<section id="{figure}"><h2>{figure}</h2>',
+             f'<p class="shows"><b>Paper:</b> {html.escape(entry["shows"])}</p>',
+             f'<p class="cmd"><code>{html.escape(entry["command"])}</code>']
+    provenance = entry["provenance"]
+    if provenance:
+        parts.append(" &middot; cached result: " + html.escape(
+            ", ".join(f"{k} {v}" for k, v in provenance.items())))
+    elif entry["cached"] is False and figure not in ("fig06", "fig08", "fig15", "fig19"):
+        parts.append(" &middot; <b>no cached result</b>")
+    parts.append("</p>")
+    if image:
+        note = (' <span class="st close">the PNG is older than the cached result: '
+                f'<code>make {figure}-plot</code></span>' if entry["stale"] else "")
+        parts.append(f'<figure><img src="{html.escape(image)}" alt="{figure}">'
+                     f"<figcaption>ours: {figure}.png{note}</figcaption></figure>")
+    else:
+        parts.append(f'<p class="missing">No figure yet: run <code>{html.escape(entry["command"])}'
+                     "</code>.</p>")
+    rows = entry["rows"]
+    if rows:
+        printed = [r for r in rows if r["paper"] is not None or r.get("held_out")]
+        rest = [r for r in rows if not (r["paper"] is not None or r.get("held_out"))]
+        if printed:
+            parts.append(_table(printed + (rest if len(rest) <= 12 else [])))
+            rest = rest if len(rest) > 12 else []
+        elif len(rest) <= 12:
+            parts.append(_table(rest))
+            rest = []
+        if rest:
+            parts.append(f"<details><summary>all {len(rest)} further numbers of this figure"
+                         f"</summary>{_table(rest)}</details>")
+    elif image:
+        parts.append("<p>No table: the paper prints no number for this figure and the "
+                     "driver writes none.</p>")
+    parts.append("</section>")
+    return "\n".join(parts)
+
+
+STYLE = """
+body { font-family: system-ui, sans-serif; margin: 0 auto; padding: 1em 2em; max-width: 72em;
+       line-height: 1.4; color: #222; }
+h1 { font-size: 1.6em; } h2 { border-bottom: 1px solid #ccc; padding-top: 0.5em; }
+img { max-width: 100%; height: auto; border: 1px solid #ddd; }
+figure { margin: 0.5em 0; } figcaption { font-size: 0.85em; color: #555; }
+table { border-collapse: collapse; margin: 0.5em 0; font-size: 0.9em; display: block;
+        overflow-x: auto; max-width: 100%; }
+th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: left; vertical-align: top; }
+th { background: #f0f0f0; }
+.st { padding: 0 0.4em; border-radius: 0.3em; font-size: 0.85em; white-space: nowrap; }
+.good { background: #cfe3ff; } .calib { background: #e6e6e6; } .close { background: #ffe8b3; }
+.bad { background: #f6c7a8; } .held { background: #eadcf0; }
+ul.legend { font-size: 0.85em; } code { background: #f4f4f4; padding: 0 0.2em; }
+.missing { color: #a04000; } nav a { margin-right: 0.6em; }
+pre { overflow-x: auto; font-size: 0.8em; background: #f8f8f8; padding: 0.5em; }
+"""
+
+
+def _study(study, images):
+    parts = [f'<section id="study-{study["name"]}"><h2>{html.escape(study["name"])}</h2>',
+             f"<p>{html.escape(study['what'])} <code>{html.escape(study['command'])}</code></p>"]
+    if not (study["texts"] or study["pngs"]):
+        parts.append(f'<p class="missing">Not run: <code>{html.escape(study["command"])}</code>.'
+                     "</p>")
+    for path in study["pngs"]:
+        src = images.get(path)
+        if src:
+            parts.append(f'<figure><img src="{html.escape(src)}" alt="{study["name"]}">'
+                         f"<figcaption>{html.escape(os.path.basename(path))}</figcaption></figure>")
+    for path, text in study["texts"]:
+        parts.append(f"<details><summary>{html.escape(os.path.basename(path))}</summary>"
+                     f'<pre>{html.escape(text)}</pre></details>')
+    parts.append("</section>")
+    return "\n".join(parts)
+
+
+def page(info, images):
+    score = _scorecard(info["score"])
+    tools = "".join(f"<tr><th>{html.escape(k)}</th><td>{html.escape(str(v))}</td></tr>"
+                    for k, v in info["tools"])
+    commits = sorted({f["provenance"].get("git_commit") or "unknown"
+                      for f in info["figures"] if f["provenance"]})
+    nav = " ".join(f'<a href="#{f["figure"]}">{f["figure"]}</a>' for f in info["figures"]) \
+        + ' <a href="#studies">studies</a>'
+
+    sections = "\n".join(_figure(f, images.get(f["figure"])) for f in info["figures"])
+    studies = "\n".join(_study(st, images) for st in info["studies"])
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>mlg-shimmy: reproduction report</title><style>{STYLE}</style></head>
+<body>
+<h1>mlg-shimmy: reproduction report</h1>
+<p>Howcroft, Lowenberg, Neild and Krauskopf, <i>Effects of freeplay on the dynamic stability
+of an aircraft main landing gear</i>: every figure beside the numbers the paper prints.
+Generated {html.escape(info["written"])} by <code>make report</code> from the cached results;
+nothing here is copied by hand. All figures use the <code>figures</code> parameter set, whose
+torsional damping c_psi = 724.0034 N m s/rad (instead of Table 1's 410) is calibrated so that
+the zero-freeplay Hopf point at F* = 1 lies at the paper's 346.1 m/s
+(docs/model.md, section 5); the <code>table</code> set is the paper as printed.</p>
+<nav>{nav}</nav>
+<h2 id="scorecard">Scorecard: every number the paper prints</h2>
+{score}
+<h2 id="provenance">Provenance</h2>
+<table class="tools"><tbody>{tools}
+<tr><th>commits of the cached results</th><td>{html.escape(", ".join(commits) or "none")}</td></tr>
+</tbody></table>
+{sections}
+<h2 id="studies">Studies beyond the paper</h2>
+<p>Computed by the project's own studies, not compared with the paper; shown when they have
+been run.</p>
+{studies}
+</body></html>
+"""
+
+
+def build(out=None, root=None):
+    """Write the page and its images; returns the page's path."""
+    root = root or paths.run_root()
+    out = out or os.path.join(root, "report")
+    os.makedirs(os.path.join(out, "figures"), exist_ok=True)
+    info = collect(root)
+    images = {}
+    for entry in info["figures"]:
+        if entry["png"]:
+            target = os.path.join(out, "figures", f"{entry['figure']}.png")
+            shutil.copyfile(entry["png"], target)
+            images[entry["figure"]] = f"figures/{entry['figure']}.png"
+    for study in info["studies"]:
+        for path in study["pngs"]:
+            name = os.path.basename(path)
+            shutil.copyfile(path, os.path.join(out, "figures", name))
+            images[path] = f"figures/{name}"
+    target = os.path.join(out, "index.html")
+    write_text(target, page(info, images))
+    write_text(os.path.join(out, "report.json"),
+               json.dumps({k: v for k, v in info.items()}, indent=1, default=str) + "\n")
+    missing = [f["figure"] for f in info["figures"] if not f["png"]]
+    print(f"report: wrote {os.path.relpath(target, paths.ROOT)} ({len(info['score'])} scorecard "
+          f"rows, {len(images)} figures" + (f"; missing: {' '.join(missing)}" if missing else "")
+          + ")")
+    return target
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="python3 -m mlgshimmy.studies.report",
+                                     description=__doc__.splitlines()[0])
+    parser.add_argument("--out", help="directory of the page (default $MLG_RUN_ROOT/report)")
+    args = parser.parse_args(argv)
+    build(args.out)
+
+
+if __name__ == "__main__":
+    main()
