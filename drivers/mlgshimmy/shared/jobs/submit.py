@@ -199,6 +199,7 @@ def stages_from_command(command, count, cwd, allow_empty=False):
         if run.returncode != 0:
             raise Refused(f"--stages-from: stage {k}: {command.replace('{k}', str(k))!r} "
                           f"failed (exit {run.returncode}): {run.stderr.strip()[-500:]}")
+        sys.stderr.write(run.stderr)   # what the command says (`jobs --missing`: counts)
         lines = read_lines(run.stdout)
         if not lines and not allow_empty:
             if count:
