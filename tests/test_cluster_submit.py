@@ -245,7 +245,7 @@ def test_the_submit_targets_run_the_package_with_every_value_quoted():
     assert "-m mlgshimmy.studies.atlas jobs --missing --V='100,300' --Fstar='1' | " \
         in atlas.stdout, atlas.stdout + atlas.stderr
     figure = make_dry_run("submit-fig11", "AUTO_THREADS=2")
-    assert "stages=$(/" in figure.stdout and "-m mlgshimmy.figures.fig11 stages)" \
+    assert "set -e; stages=$(/" in figure.stdout and "-m mlgshimmy.figures.fig11 stages)" \
         in figure.stdout, figure.stdout
     assert "--stages \"$stages\"" in figure.stdout
     assert "--stages-from '" in figure.stdout and \

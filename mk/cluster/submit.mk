@@ -49,7 +49,7 @@ SUBMIT_MAKE = make --no-print-directory AUTO_THREADS=$(AUTO_THREADS)
 # the figure says how many stages it has (`stages`), so an empty `jobs --missing`
 # stage does not end the list
 $(addprefix submit-,$(FIGURES_WITH_PARTS)): submit-%: $(SUBMIT_PREREQUISITES)
-	stages=$$($(PYTHON) -m mlgshimmy.figures.$* stages) && \
+	set -e; stages=$$($(PYTHON) -m mlgshimmy.figures.$* stages); \
 	$(SUBMIT) --name $* --stages "$$stages" \
 	    --stages-from $(call shell_quote,$(PYTHON) -m mlgshimmy.figures.$* jobs --stage {k} $(SUBMIT_MISSING)) \
 	    --assemble $(call shell_quote,$(SUBMIT_MAKE) $*) $(SUBMIT_AFTER)
@@ -57,7 +57,7 @@ $(addprefix submit-,$(FIGURES_WITH_PARTS)): submit-%: $(SUBMIT_PREREQUISITES)
 SWEEP_GRID_ARGS = --rho=$(call shell_quote,$(SWEEP_RHO)) --mu=$(call shell_quote,$(SWEEP_MU))
 submit-sweep: $(SUBMIT_PREREQUISITES)
 	$(PYTHON) -m mlgshimmy.studies.sweep check $(SWEEP_GRID_ARGS)
-	set -o pipefail; \
+	set -eo pipefail; \
 	$(PYTHON) -m mlgshimmy.studies.sweep jobs $(SUBMIT_MISSING) $(SWEEP_GRID_ARGS) | $(SUBMIT) \
 	    --name sweep --stage - \
 	    --assemble $(call shell_quote,$(SUBMIT_PY) -m mlgshimmy.studies.sweep summary $(SWEEP_GRID_ARGS)) \
@@ -65,7 +65,7 @@ submit-sweep: $(SUBMIT_PREREQUISITES)
 
 submit-atlas: $(SUBMIT_PREREQUISITES)
 	$(PYTHON) -m mlgshimmy.studies.atlas check $(ATLAS_ARGS)
-	set -o pipefail; \
+	set -eo pipefail; \
 	$(PYTHON) -m mlgshimmy.studies.atlas jobs $(SUBMIT_MISSING) $(ATLAS_ARGS) | $(SUBMIT) \
 	    --name atlas --stage - \
 	    --assemble $(call shell_quote,$(SUBMIT_PY) -m mlgshimmy.studies.atlas summary $(ATLAS_ARGS)) \

@@ -37,13 +37,11 @@ V_START, V_STOP = ct.V_MIN, ct.V_MAX
 
 
 def settings():
-    """What a point's result depends on besides its angles, the code and
-    AUTO (recorded in its provenance)."""
-    from mlgshimmy.shared import autoglue
+    """What a point's result depends on besides its angles, the code, the
+    model and AUTO (jobs.provenance records those and the thread count)."""
     return {"parameters": {k: v for k, v in parameters(0.0, 0.0).items()
                            if k not in ("rho", "mu")},
-            "V_scan": [V_START, V_STOP, len(ct.SPEED_SCAN)],
-            "auto_threads": autoglue.threads()}
+            "V_scan": [V_START, V_STOP, len(ct.SPEED_SCAN)]}
 
 
 POINTS = jobgrid.Plane("rho", "mu", "sweep", "figures", settings)   # rho<deg>_mu<deg>
