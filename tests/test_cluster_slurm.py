@@ -4,8 +4,10 @@ stopped at the end, by pid, even when a test fails.  Checks, with synthetic job 
 two stages and a dependent assembly run in order; a failed task cancels the later stages
 and the assembly (--kill-on-invalid-dep), `status` names it, and `resume` recomputes
 only it; K lines per task; --export=NONE; the wrapper fails its task on a list that is
-too short or a relative path; and the side-stay sweep on 2 points through Slurm gives
-what `make sweep` gives.  Skipped only where the packages cannot be installed."""
+too short or a relative path; and `make submit-sweep SCHEDULER=slurm` on 2 points gives
+what `make sweep` gives, and run again after a result was lost, submits only that point
+(`jobs --missing`) and the summary.  Skipped only where the packages cannot be
+installed."""
 import json
 import os
 import shutil
@@ -21,7 +23,6 @@ import pytest
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCRIPT = os.path.join(ROOT, "mk", "cluster", "slurm-single-node.sh")
 WRAPPER = os.path.join(ROOT, "mk", "cluster", "array-task.sh")
-PYTHON = os.environ.get("PYTHON", "/usr/bin/python3")
 DAEMONS = (("slurmd.pid", "slurmd"), ("slurmctld.pid", "slurmctld"),
            ("munge/munged.pid", "munged"))
 
@@ -253,39 +254,67 @@ def make_environment(**extra):
     return environment
 
 
-def test_sweep_on_two_points_matches_make_sweep(tmp_path, slurm):
+def submit_target(target, slurm, *settings):
+    """`make <target> SCHEDULER=slurm settings...`: its submission directory."""
+    made = subprocess.run(["make", "--no-print-directory", target, "SCHEDULER=slurm",
+                           *settings], cwd=ROOT, env=make_environment(**slurm),
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          timeout=300)
+    assert made.returncode == 0, made.stdout[-3000:]
+    return submitted(made), made.stdout
+
+
+def test_make_submit_sweep_matches_make_sweep_and_resubmits_only_the_missing(tmp_path,
+                                                                             slurm):
+    """`make submit-sweep SCHEDULER=slurm` on 2 points gives what `make sweep` gives; run
+    again after a point's result was lost (with --export=NONE), it submits that point
+    only, then the summary."""
     build = subprocess.run(["make", "-s", "setup", "build/models/mlg.exe",
-                            "build/lib/libmlg.so"], cwd=ROOT, env=make_environment(),
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                           timeout=900)
+                            "build/lib/libmlg.so", "build/bin/mlg_simulate"], cwd=ROOT,
+                           env=make_environment(), stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, text=True, timeout=900)
     assert build.returncode == 0, build.stdout[-3000:]
     by_make, by_slurm = tmp_path / "make", tmp_path / "slurm"
-    grid = ["--rho=0,10", "--mu=0"]
-    made = subprocess.run(["make", "sweep", "SWEEP_RHO=0,10", "SWEEP_MU=0"], cwd=ROOT,
+    grid = ["SWEEP_RHO=0,10", "SWEEP_MU=0"]
+    made = subprocess.run(["make", "sweep", *grid], cwd=ROOT,
                           env=make_environment(MLG_RUN_ROOT=str(by_make)),
                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                           timeout=300)
     assert made.returncode == 0, made.stdout[-3000:]
-    jobs = subprocess.run([PYTHON, "drivers/sweep.py"] + grid + ["jobs"], cwd=ROOT,
-                          stdout=subprocess.PIPE, text=True, check=True).stdout
-    assert len(jobs.splitlines()) == 2
-    directory = submitted(tool(
-        ["submit", "--name", "sweep", "--scheduler", "slurm", "--stage", "-",
-         "--assemble", f"{PYTHON} drivers/sweep.py summary {' '.join(grid)}",
-         "--env", f"MLG_RUN_ROOT={by_slurm}", "--out", tmp_path / "out"],
-        ROOT, slurm, stdin=jobs))
+    settings = [*grid, f"MLG_RUN_ROOT={by_slurm}", f"SUBMIT_ARGS=--out {tmp_path}/out"]
+    directory, output = submit_target("submit-sweep", slurm, *settings)
+    assert "sweep: 2 of 2 points without a valid result" in output, output
     code, text = wait(directory, slurm)
     assert code == 0, text
+    results = {}
     for point in ("rho0_mu0", "rho10_mu0"):
         a, b = by_make / "sweep" / point, by_slurm / "sweep" / point
         for name in ("b.hb1", "s.hb1"):
             assert (a / name).read_bytes() == (b / name).read_bytes(), (point, name)
         ra, rb = (json.loads((d / "result.json").read_text()) for d in (a, b))
-        ra.pop("seconds"), rb.pop("seconds")
+        for record in (ra, rb):
+            record.pop("seconds"), record["provenance"].pop("written")
         assert ra == rb and ra["critical_V"] is not None, (ra, rb)
+        results[point] = (b / "result.json").read_bytes()
     log = [os.path.join(tmp_path, "out", "logs", f) for f in
            os.listdir(tmp_path / "out" / "logs") if f.startswith("sweep-assemble_")]
     summary = [l for l in open(log[0]).read().splitlines() if "critical speed" in l]
     assert summary == [l for l in made.stdout.splitlines()
                        if l.startswith("sweep: rho =") and "critical speed" in l]
     assert len(summary) == 2
+
+    os.remove(by_slurm / "sweep" / "rho10_mu0" / "result.json")
+    again, output = submit_target("submit-sweep", slurm, *settings,
+                                  "SUBMIT_OPTIONS=--export=NONE")
+    assert "sweep: 1 of 2 points without a valid result" in output, output
+    lines = open(os.path.join(again, "stage1.txt")).read().splitlines()
+    assert len(lines) == 1 and lines[0].endswith(" point rho10_mu0"), lines
+    code, text = wait(again, slurm)
+    assert code == 0, text
+    assert (by_slurm / "sweep" / "rho0_mu0" / "result.json").read_bytes() == \
+        results["rho0_mu0"]
+    back = json.loads((by_slurm / "sweep" / "rho10_mu0" / "result.json").read_text())
+    assert back["critical_V"] == json.loads(results["rho10_mu0"])["critical_V"]
+    logs = sorted(f for f in os.listdir(tmp_path / "out" / "logs")
+                  if f.startswith("sweep-assemble_"))
+    assert len(logs) == 2

@@ -165,3 +165,93 @@ def test_refusals(tmp_path):
     assert result.returncode == 2 and "--per-task" in result.stderr
     result = submit(["status", tmp_path], cwd=tmp_path)
     assert result.returncode == 2 and "not a submission directory" in result.stderr
+
+
+def test_allow_empty_skips_stages_with_nothing_left(tmp_path):
+    """`jobs --missing` lists: a stage left empty submits nothing (the next does not
+    depend on it); no line at all: only the assembly, or nothing."""
+    script = tmp_path / "jobs.sh"   # stage 1 done already, stage 2 has one line left
+    script.write_text('case $1 in 1) ;; 2) echo "echo c";; *) exit 1;; esac\n')
+    base = ["submit", "--name", "f", "--scheduler", "slurm", "--out", tmp_path / "out",
+            "--dry-run", "--stages-from", f"bash {script} {{k}}", "--stages", 2]
+    refused = submit(base, cwd=tmp_path)
+    assert refused.returncode == 2 and "stage 1 of --stages 2 has no job" in refused.stderr
+    assert "--allow-empty" in refused.stderr
+    result = submit(base + ["--allow-empty", "--assemble", "make fig11"], cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert "stage 1: no line (nothing left to do there), skipped" in result.stderr
+    commands = [line for line in result.stdout.splitlines() if line.startswith("sbatch ")]
+    assert len(commands) == 2 and "-J f-s2 --array=1 " in commands[0], commands
+    assert "dependency" not in commands[0] and "afterok:<stage2>" in commands[1]
+    manifest = json.load(open(os.path.join(submission(result), "manifest.json")))
+    assert [s["lines"] for s in manifest["stages"]] == [0, 1]
+    # without --stages an empty stage ends the list, so --allow-empty needs it
+    result = submit(base[:-2] + ["--allow-empty"], cwd=tmp_path)
+    assert result.returncode == 2 and "needs --stages N" in result.stderr, result.stderr
+
+    empty = tmp_path / "empty.txt"
+    empty.write_text("")
+    only = submit(["submit", "--name", "g", "--scheduler", "slurm", "--out", tmp_path / "out",
+                   "--dry-run", "--stage", empty, "--allow-empty", "--assemble", "echo done"],
+                  cwd=tmp_path)
+    assert only.returncode == 0, only.stderr
+    assert "only the assembly is submitted" in only.stderr
+    commands = [line for line in only.stdout.splitlines() if line.startswith("sbatch ")]
+    assert len(commands) == 1 and "-J g-assemble" in commands[0] \
+        and "dependency" not in commands[0], commands
+    nothing = submit(["submit", "--name", "h", "--scheduler", "slurm", "--out",
+                      tmp_path / "out", "--dry-run", "--stage", empty, "--allow-empty"],
+                     cwd=tmp_path)
+    assert nothing.returncode == 0 and "nothing to submit" in nothing.stderr
+    assert "submission:" not in nothing.stdout
+    assert not [d for d in os.listdir(tmp_path / "out" / "submit") if d.startswith("h-")]
+
+
+def test_the_cpu_guard_scale_is_carried_where_it_is_set(tmp_path):
+    one, _ = stage_files(tmp_path)
+    args = ["submit", "--name", "x", "--scheduler", "slurm", "--stage", one,
+            "--out", tmp_path / "out", "--dry-run"]
+    unset = submit(args, cwd=tmp_path, env={"MLG_CPU_GUARD_SCALE": ""})
+    first = open(os.path.join(submission(unset), "stage1.txt")).readline()
+    assert unset.returncode == 0 and "MLG_CPU_GUARD_SCALE" not in first, first
+    scaled = submit(args, cwd=tmp_path, env={"MLG_CPU_GUARD_SCALE": "2"})
+    first = open(os.path.join(submission(scaled), "stage1.txt")).readline()
+    assert " MLG_CPU_GUARD_SCALE=2; " in first, first
+
+
+def make_dry_run(*args):
+    environment = {k: v for k, v in os.environ.items()
+                   if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "MAKEOVERRIDES")}
+    return subprocess.run(["make", "-n", *args], cwd=ROOT, env=environment,
+                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                          timeout=120)
+
+
+def test_the_submit_targets_run_the_package_with_every_value_quoted():
+    sweep = make_dry_run("submit-sweep", "SWEEP_RHO=0,10", "SWEEP_MU=0",
+                         "SUBMIT_ARGS=--per-task 2", "SUBMIT_OPTIONS=--time=0:05:00 --mem=1G")
+    assert sweep.returncode == 0, sweep.stderr
+    text = sweep.stdout
+    assert "-m mlgshimmy.studies.sweep check --rho='0,10' --mu='0'" in text, text
+    assert "-m mlgshimmy.studies.sweep jobs --missing --rho='0,10' --mu='0' | " in text
+    assert "--allow-empty '--per-task' '2'" in text
+    assert "-- '--time=0:05:00' '--mem=1G'" in text
+    assert ("--assemble 'PYTHONPATH='\\''" + ROOT + "/drivers'\\'' ") in text, text
+    assert "drivers/sweep.py" not in text and "drivers/atlas.py" not in text
+    every = make_dry_run("submit-sweep", "SWEEP_RHO=0,10", "SWEEP_MU=0", "SUBMIT_ALL=1")
+    assert every.returncode == 0 and "--missing" not in every.stdout \
+        and "--allow-empty" not in every.stdout
+    atlas = make_dry_run("submit-atlas", "ATLAS_V=100,300", "ATLAS_FSTAR=1")
+    assert "-m mlgshimmy.studies.atlas jobs --missing --V='100,300' --Fstar='1' | " \
+        in atlas.stdout, atlas.stdout + atlas.stderr
+    figure = make_dry_run("submit-fig11", "AUTO_THREADS=2")
+    assert "set -e; stages=$(/" in figure.stdout and "-m mlgshimmy.figures.fig11 stages)" \
+        in figure.stdout, figure.stdout
+    assert "--stages \"$stages\"" in figure.stdout
+    assert "--stages-from '" in figure.stdout and \
+        "-m mlgshimmy.figures.fig11 jobs --stage {k} --missing'" in figure.stdout
+    assert "--assemble 'make --no-print-directory AUTO_THREADS=2 fig11'" in figure.stdout
+    bad = make_dry_run("submit-fig11", "SCHEDULER=pbs")
+    assert bad.returncode != 0 and "SCHEDULER=pbs must be slurm or parallel" in bad.stderr
+    # a bad SCHEDULER in the environment does not stop other targets
+    assert make_dry_run("help", "SCHEDULER=pbs").returncode == 0

@@ -31,6 +31,9 @@
 # Never purge or autoremove libmunge2 or munge afterwards: Debian's SUNDIALS pulls
 # openmpi -> pmix -> munge, and an autoremove takes the SUNDIALS libraries with it.
 set -euo pipefail
+# the daemons, mungekey and runuser are in the sbin directories, which a non-login
+# root shell (a container's, CI's) may not have on PATH
+export PATH=$PATH:/usr/local/sbin:/usr/sbin:/sbin
 
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)

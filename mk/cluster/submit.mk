@@ -11,30 +11,62 @@
 #                   --jobs 8 for parallel, --env VAR=VALUE, --dry-run)
 #   SUBMIT_OPTIONS  options for every sbatch, or for parallel (--time=0:30:00 --mem=1G
 #                   --partition=...; --sshloginfile nodes.txt)
+#   SUBMIT_ALL=1    every job; by default only those without a valid result (`jobs
+#                   --missing`: a grid point without a result of the current provenance,
+#                   a part not cached), so that the same command, run again after a
+#                   failure, redoes just those (stages left empty are skipped; the
+#                   assembly always runs)
 #
-# Each prints its submission directory; `status` and `resume` follow from there:
+# Both option lists are split at spaces, each word reaching the submit command (or
+# sbatch, parallel) as one argument, quoted; so are the grids' axes. Each target prints
+# its submission directory; `status` and `resume` follow from there:
 #   PYTHONPATH=drivers $(PYTHON) -m mlgshimmy.shared.jobs.submit status|resume <dir>
 # The prerequisites are built here first, on the submitting host: the tasks only run.
 SCHEDULER ?= slurm
 SUBMIT_ARGS ?=
 SUBMIT_OPTIONS ?=
-SUBMIT = PYTHONPATH=drivers $(PYTHON) -m mlgshimmy.shared.jobs.submit submit \
-    --scheduler $(SCHEDULER) $(SUBMIT_ARGS)
+SUBMIT_ALL ?=
+ifneq ($(filter submit-%,$(MAKECMDGOALS)),)
+ifneq ($(filter-out slurm parallel,$(SCHEDULER))$(filter-out 1,$(words $(SCHEDULER))),)
+$(error SCHEDULER=$(SCHEDULER) must be slurm or parallel)
+endif
+ifneq ($(filter-out 1,$(SUBMIT_ALL)),)
+$(error SUBMIT_ALL=$(SUBMIT_ALL): give SUBMIT_ALL=1 (every job) or leave it unset (the missing ones))
+endif
+endif
+submit_words = $(foreach word,$(1),$(call shell_quote,$(word)))
+SUBMIT = $(PYTHON) -m mlgshimmy.shared.jobs.submit submit --scheduler $(SCHEDULER) \
+    $(if $(SUBMIT_ALL),,--allow-empty) $(call submit_words,$(SUBMIT_ARGS))
+SUBMIT_AFTER = -- $(call submit_words,$(SUBMIT_OPTIONS))
+SUBMIT_MISSING := $(if $(SUBMIT_ALL),,--missing)
 SUBMIT_PREREQUISITES := setup $(MLG_MODEL).exe $(MLG_SHARED) $(MLG_SIMULATE)
+# the assembly runs where the task starts (sbatch --export=NONE: no PYTHONPATH there);
+# its make runs AUTO with the threads the parts had
+SUBMIT_PY = PYTHONPATH=$(call shell_quote,$(CURDIR)/drivers) $(PYTHON)
+SUBMIT_MAKE = make --no-print-directory AUTO_THREADS=$(AUTO_THREADS)
 
 .PHONY: $(addprefix submit-,$(FIGURES_WITH_PARTS)) submit-sweep submit-atlas
+# the figure says how many stages it has (`stages`), so an empty `jobs --missing`
+# stage does not end the list
 $(addprefix submit-,$(FIGURES_WITH_PARTS)): submit-%: $(SUBMIT_PREREQUISITES)
-	$(SUBMIT) --name $* --stages-from '$(PYTHON) drivers/$*.py jobs --stage {k}' \
-	    --assemble 'make --no-print-directory $*' -- $(SUBMIT_OPTIONS)
+	set -e; stages=$$($(PYTHON) -m mlgshimmy.figures.$* stages); \
+	$(SUBMIT) --name $* --stages "$$stages" \
+	    --stages-from $(call shell_quote,$(PYTHON) -m mlgshimmy.figures.$* jobs --stage {k} $(SUBMIT_MISSING)) \
+	    --assemble $(call shell_quote,$(SUBMIT_MAKE) $*) $(SUBMIT_AFTER)
 
+SWEEP_GRID_ARGS = --rho=$(call shell_quote,$(SWEEP_RHO)) --mu=$(call shell_quote,$(SWEEP_MU))
 submit-sweep: $(SUBMIT_PREREQUISITES)
-	$(PYTHON) drivers/sweep.py check --rho=$(SWEEP_RHO) --mu=$(SWEEP_MU)
-	$(PYTHON) drivers/sweep.py jobs --rho=$(SWEEP_RHO) --mu=$(SWEEP_MU) | $(SUBMIT) \
+	$(PYTHON) -m mlgshimmy.studies.sweep check $(SWEEP_GRID_ARGS)
+	set -eo pipefail; \
+	$(PYTHON) -m mlgshimmy.studies.sweep jobs $(SUBMIT_MISSING) $(SWEEP_GRID_ARGS) | $(SUBMIT) \
 	    --name sweep --stage - \
-	    --assemble '$(PYTHON) drivers/sweep.py summary --rho=$(SWEEP_RHO) --mu=$(SWEEP_MU)' \
-	    -- $(SUBMIT_OPTIONS)
+	    --assemble $(call shell_quote,$(SUBMIT_PY) -m mlgshimmy.studies.sweep summary $(SWEEP_GRID_ARGS)) \
+	    $(SUBMIT_AFTER)
 
 submit-atlas: $(SUBMIT_PREREQUISITES)
-	$(PYTHON) drivers/atlas.py check $(ATLAS_ARGS)
-	$(PYTHON) drivers/atlas.py jobs $(ATLAS_ARGS) | $(SUBMIT) --name atlas --stage - \
-	    --assemble '$(PYTHON) drivers/atlas.py summary $(ATLAS_ARGS)' -- $(SUBMIT_OPTIONS)
+	$(PYTHON) -m mlgshimmy.studies.atlas check $(ATLAS_ARGS)
+	set -eo pipefail; \
+	$(PYTHON) -m mlgshimmy.studies.atlas jobs $(SUBMIT_MISSING) $(ATLAS_ARGS) | $(SUBMIT) \
+	    --name atlas --stage - \
+	    --assemble $(call shell_quote,$(SUBMIT_PY) -m mlgshimmy.studies.atlas summary $(ATLAS_ARGS)) \
+	    $(SUBMIT_AFTER)

@@ -14,6 +14,13 @@ MLG_AUTO_THREADS (1 unless set: more threads change AUTO's rounding, and a
 fold curve of Fig. 11 then stops at a run-dependent point; an inherited
 OMP_NUM_THREADS is not used).  A missing AUTO raises AutoMissing.
 
+The CPU guards of the runs known to stall (run(time_limit=...): Fig. 11's
+FOLD_TIME_LIMIT, shared.torus's CURVE_TIME_LIMIT, 120 s each) are scaled
+by MLG_CPU_GUARD_SCALE (cpu_guard(); default 1, so the guards and the
+figures stay as they are; 2 or 3 on nodes that are slower per core,
+docs/cluster.md), read and checked here only, at init() and at each
+guarded run.
+
 Run directories are owned (claim): the first process to use one locks it
 for its lifetime and empties it; another process that wants the same
 directory waits for it and says so, so two runs never write one directory.
@@ -22,6 +29,7 @@ run, and a failed run's RunError carries the tail of its log.
 """
 import atexit
 import importlib.util
+import math
 import os
 import shutil
 import signal
@@ -62,9 +70,39 @@ def threads() -> str:
     return value
 
 
+CPU_GUARD_SCALE_ENV = "MLG_CPU_GUARD_SCALE"
+
+
+class BadSetting(ValueError):
+    """An environment setting of the runs that is not valid (named)."""
+
+
+def cpu_guard_scale() -> float:
+    """MLG_CPU_GUARD_SCALE, checked: the factor on every CPU guard (1 unless
+    set)."""
+    text = os.environ.get(CPU_GUARD_SCALE_ENV, "").strip()
+    if not text:
+        return 1.0
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and 0.1 <= value <= 1000):
+        raise BadSetting(f"{CPU_GUARD_SCALE_ENV}={text!r} must be a number from 0.1 to 1000 "
+                         "(the factor on the 120 s CPU guards of the AUTO runs that may "
+                         "stall; 2 or 3 for slow nodes, docs/cluster.md)")
+    return value
+
+
+def cpu_guard(seconds: Optional[float]) -> Optional[float]:
+    """A CPU guard of `seconds` (None: none) times MLG_CPU_GUARD_SCALE."""
+    return None if seconds is None else seconds * cpu_guard_scale()
+
+
 def init():
     """AUTO's Python package, imported once (see the module's text)."""
     global _auto
+    cpu_guard_scale()   # a bad value stops the job before its first run, not at a guard
     if _auto is None:
         where = auto_dir()
         if not os.path.isdir(os.path.join(where, "python", "auto")):
@@ -373,7 +411,8 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
     (for curves known to end at a hard spot; the caller marks the end);
     its progress line says so.
     time_limit: CPU seconds of the AUTO executable after which it is killed
-    and RunError raised (for runs known to stall in AUTO's iterations).
+    and RunError raised (for runs known to stall in AUTO's iterations),
+    times MLG_CPU_GUARD_SCALE (cpu_guard).
     rundir is claimed (claim); AUTO's messages go to <rundir>/<name>.log.
     """
     auto = init()
@@ -387,7 +426,8 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
     outputs = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
     log = os.path.join(rundir, f"{name}.log")
     started = time.monotonic()
-    limit = _CPULimit(time_limit)
+    guard = cpu_guard(time_limit)
+    limit = _CPULimit(guard)
     cwd = os.getcwd()
     os.chdir(rundir)
     try:
@@ -397,7 +437,9 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
         with limit, _LogTo(log):
             auto.run(data, sv=name, **kw)
     except auto.AUTOExceptions.AUTORuntimeError as exc:
-        why = f"killed after the limit of {time_limit} s of CPU time" if limit.fired else exc
+        why = (f"killed by its CPU guard after {guard:g} s of CPU time ({time_limit:g} s x "
+               f"{CPU_GUARD_SCALE_ENV}={cpu_guard_scale():g}; raise {CPU_GUARD_SCALE_ENV} "
+               "on a slow node)" if limit.fired else exc)
         PROGRESS.step(rundir, name, time.monotonic() - started, "FAILED")
         raise RunError(f"run {name} in {rundir}: AUTO stopped ({why})", log) from exc
     finally:

@@ -3,19 +3,24 @@
 Each grid point is an independent job with its own run directory
 build/sweep/rho<deg>_mu<deg>/: the first Hopf point in V of straight rolling
 (zero freeplay, F* = 1, `figures` set, complete equations eom_terms = 2),
-written to result.json there.  Subcommands (angles in degrees, lists
+written to result.json there with its provenance (shared.jobs.grid: git
+commit, AUTO version, parameter set, settings()).  Subcommands of
+`python3 -m mlgshimmy.studies.sweep` (angles in degrees, lists
 comma-separated; the default grid is 3 x 3):
 
-  sweep.py check   [--rho L --mu L]   validate every grid point (no AUTO run)
-  sweep.py targets [--rho L --mu L]   the result files, for make
-  sweep.py jobs    [--rho L --mu L]   one shell command per grid point, for
-                                      GNU parallel or a Slurm array (docs/parallel.md)
-  sweep.py point rho<deg>_mu<deg>     run one grid point
-  sweep.py summary [--rho L --mu L]   plot build/figures/sweep_critical_speed.*
+  check   [--rho L --mu L]    validate every grid point (no AUTO run)
+  targets [--rho L --mu L]    the result files, for make
+  jobs    [--rho L --mu L] [--missing]
+                              one shell command per grid point (--missing:
+                              per point without a valid result), for GNU
+                              parallel or a Slurm array (docs/cluster.md)
+  status  [--rho L --mu L]    every point without a valid result, by index
+  point rho<deg>_mu<deg>      run one grid point
+  summary [--rho L --mu L] [--mixed-provenance]
+                              plot build/figures/sweep_critical_speed.*
 
 `make sweep` (with -j N for N jobs at once) runs check, every point, summary.
 """
-import json
 import math
 import os
 import sys
@@ -25,12 +30,21 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs import grid as jobgrid
-from mlgshimmy.shared import jobs
 axis = jobgrid.axis
 
-POINTS = jobgrid.Plane("rho", "mu", "sweep")   # point rho<deg>_mu<deg>
 DEFAULT_GRID = "-10,0,10"
 V_START, V_STOP = ct.V_MIN, ct.V_MAX
+
+
+def settings():
+    """What a point's result depends on besides its angles, the code, the
+    model and AUTO (jobs.provenance records those and the thread count)."""
+    return {"parameters": {k: v for k, v in parameters(0.0, 0.0).items()
+                           if k not in ("rho", "mu")},
+            "V_scan": [V_START, V_STOP, len(ct.SPEED_SCAN)]}
+
+
+POINTS = jobgrid.Plane("rho", "mu", "sweep", "figures", settings)   # rho<deg>_mu<deg>
 
 
 def grid(args):
@@ -65,12 +79,14 @@ def run_point(name):
                           ct.SPEED_SCAN, limit=1, **values)
     result = {"rho_deg": rho, "mu_deg": mu, "critical_V": hopf[0]["V"] if hopf else None,
               "seconds": round(time.monotonic() - started, 2)}
-    jobs.write_json(POINTS.result_path(rho, mu), result, indent=1)
+    POINTS.write(rho, mu, result)
     print(f"sweep: {name}: critical speed "
           + (f"{result['critical_V']:.3f} m/s" if hopf else f"> {V_STOP:g} m/s"))
 
 
-def summary(points):
+def summary(points, results, provenance):
+    """The points' critical speeds (results: their records, every point's
+    checked present and of one provenance by shared.jobs.grid) and the plot."""
     import matplotlib.pyplot as plt
     import numpy
 
@@ -78,9 +94,8 @@ def summary(points):
     rhos = sorted({rho for rho, _ in points})
     mus = sorted({mu for _, mu in points})
     speed = numpy.full((len(mus), len(rhos)), numpy.nan)
-    for rho, mu in points:
-        with open(POINTS.result_path(rho, mu)) as f:
-            value = json.load(f)["critical_V"]
+    for (rho, mu), result in zip(points, results):
+        value = result["critical_V"]
         speed[mus.index(mu), rhos.index(rho)] = numpy.nan if value is None else value
         print(f"sweep: rho = {rho:6g} deg, mu = {mu:6g} deg: critical speed "
               + (f"{value:.3f} m/s" if value is not None else f"> {V_STOP:g} m/s"))

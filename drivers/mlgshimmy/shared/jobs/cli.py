@@ -24,6 +24,24 @@ def job_line(module: str, *args: str) -> str:
             + " ".join(shlex.quote(w) for w in words))
 
 
+def parts_status(jobs: Parts) -> int:
+    """Print each stage's count of cached parts and every part not cached,
+    with its index (its line in `jobs --stage K`: the array index of stage K
+    submitted whole); the number of those."""
+    missing = 0
+    for stage in range(1, jobs.stages() + 1):
+        names = jobs.of_stage(stage)
+        absent = [(index, name) for index, name in enumerate(names, start=1)
+                  if not os.path.exists(cache.path(jobs.figure, name))]
+        print(f"{jobs.figure}: stage {stage}: {len(names) - len(absent)} of {len(names)} "
+              "parts cached")
+        for index, name in absent:
+            print(f"  missing  stage {stage}, index {index:<3} {name}: no "
+                  f"{cache.path(jobs.figure, name)}")
+        missing += len(absent)
+    return missing
+
+
 def variant_option(figure: str, doc: str):
     """A driver's --strut-variant option (0: the default strut, 1: the
     printed one) read from the command line: (variant, figure name: <figure>
@@ -56,22 +74,29 @@ def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[C
     With parts (a function returning {name: function or Needs}, see
     Parts), compute gets the Parts and: `parts` lists their names, `rules`
     writes mk/parts.mk's rules to $MLG_RUN_ROOT/<fig>/parts.mk, `jobs
-    [--stage K]` prints one shell command per part of stage K (default 1;
-    `stages` prints how many there are), `--part NAME` computes one,
-    --compute uses those cached."""
+    [--stage K] [--missing]` prints one shell command per part of stage K
+    (default 1; --missing: per part not cached, so that resubmitting the
+    same command redoes just those; `stages` prints how many stages there
+    are; a K outside them is an error), `status` lists every part not
+    cached with its stage and index (exit 1 if any), `--part NAME` computes
+    one, --compute uses those cached."""
     module = module or f"mlgshimmy.figures.{figure}"
-    commands = ["parts", "stages", "rules", "jobs"] if parts else []
+    commands = ["parts", "stages", "rules", "jobs", "status"] if parts else []
     parser = argparse.ArgumentParser(prog=f"python3 -m {module}",
                                      description=f"{figure}: compute and cache, and/or plot")
     parser.add_argument("command", nargs="?", choices=commands,
-                        help="list the parts, count their stages, write their make rules, or "
-                             "print one shell command per part of a stage")
+                        help="list the parts, count their stages, write their make rules, "
+                             "print one shell command per part of a stage, or list the parts "
+                             "not cached")
     parser.add_argument("--compute", action="store_true", help="only compute and cache")
     parser.add_argument("--plot", action="store_true", help="only redraw from the cache")
     if parts:
         parser.add_argument("--part", help="compute and cache one part")
         parser.add_argument("--stage", type=int, default=1,
                             help="the stage whose parts `jobs` prints (default 1)")
+        parser.add_argument("--missing", action="store_true",
+                            help="jobs: only the parts not cached ($MLG_RUN_ROOT/<fig>/parts/"
+                                 "<name>.json absent)")
     args = parser.parse_args(argv)
     both = not (args.compute or args.plot or getattr(args, "part", None))
     try:
@@ -86,8 +111,20 @@ def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[C
             write_text(rules_path(figure), jobs.make_rules())
             return
         if args.command == "jobs":
-            for name in jobs.of_stage(args.stage):
+            names = jobs.of_stage(args.stage)
+            if args.missing:
+                names = [name for name in names if not os.path.exists(cache.path(figure, name))]
+                print(f"{figure}: stage {args.stage}: {len(names)} of "
+                      f"{len(jobs.of_stage(args.stage))} parts not cached", file=sys.stderr)
+            for name in names:
                 print(job_line(module, "--part", name))
+            return
+        if args.command == "status":
+            missing = parts_status(jobs)
+            if missing:
+                sys.exit(f"{figure}: {missing} parts not cached; `python3 -m {module} jobs "
+                         "--stage K --missing` prints the jobs of stage K's")
+            print(f"{figure}: every part is cached")
             return
         if getattr(args, "part", None):
             jobs.compute(args.part, alone=True)

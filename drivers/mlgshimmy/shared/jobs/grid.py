@@ -8,13 +8,26 @@ must be a finite number.  Two spellings of one value (10 and 1e1, 0 and
 6 significant digits, f"{value:g}").  A grid has at most MAX_POINTS points
 unless MLG_GRID_MAX_POINTS says otherwise, and a range is counted before
 it is listed, so a tiny step is refused at once.
+
+A point's result ($MLG_RUN_ROOT/<tool>/<name>/result.json, Plane.write)
+records its provenance: git commit, AUTO version, parameter set and the
+study's settings.  `jobs --missing` prints the jobs of the points without a
+valid result (none, unreadable, or recorded with another provenance than a
+job records now), so that resubmitting the same command redoes just those;
+`status` lists every such point with its index; `summary` refuses while
+one is missing or when the results' provenances differ (naming the points),
+unless --mixed-provenance.
 """
 import argparse
+import json
 import math
 import os
+import shlex
 import sys
 
 from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs import cache
+from mlgshimmy.shared.jobs.atomic import write_json
 from mlgshimmy.shared.jobs.cli import job_line
 
 
@@ -101,10 +114,14 @@ def plane(first, second):
 class Plane:
     """The jobs of a grid over two axes: named <a><value>_<b><value> with the
     axes' prefixes a, b (values as f"{value:g}"), each writing
-    $MLG_RUN_ROOT/<tool>/<name>/result.json."""
+    $MLG_RUN_ROOT/<tool>/<name>/result.json (write(): atomically, with the
+    provenance a job records now: git commit, AUTO version, parameter set
+    and the study's settings())."""
 
-    def __init__(self, first, second, tool):
+    def __init__(self, first, second, tool, parameter_set="figures", settings=dict,
+                 noun="points"):
         self.first, self.second, self.tool = first, second, tool
+        self.parameter_set, self.settings, self.noun = parameter_set, settings, noun
 
     @property
     def directory(self):
@@ -121,44 +138,256 @@ class Plane:
     def result_path(self, a, b):
         return os.path.join(self.directory, self.name(a, b), "result.json")
 
+    def provenance(self):
+        """What a job records now (as JSON reads it back: tuples are lists)."""
+        record = dict(cache.provenance(self.parameter_set), settings=self.settings())
+        return json.loads(json.dumps(record))
 
-def main(tool, description, job_command, plane, options, grid, *, run_job, check, summary):
+    def write(self, a, b, result, provenance=None):
+        """result.json of point (a, b): the result and its provenance,
+        written whole or not at all (make and `status` see a result only
+        when it is complete)."""
+        record = dict(result, provenance=provenance or self.provenance())
+        return write_json(self.result_path(a, b), record, indent=1)
+
+
+# --- the state of a grid's results --------------------------------------------
+
+DONE = "done"
+MISSING = "missing"              # no result.json, never started
+NO_RESULT = "no result"          # started (its directory exists), no result.json
+UNREADABLE = "unreadable"        # result.json is not a JSON record
+OTHER = "other provenance"       # a result, but not what a job writes now
+NOT_COMPARED = ("written",)      # provenance fields that may differ between points
+
+
+def comparable(provenance):
+    """The provenance fields two points must share (all but when written);
+    None for a record without one."""
+    if not isinstance(provenance, dict):
+        return None
+    return {k: v for k, v in provenance.items() if k not in NOT_COMPARED}
+
+
+def differences(ours, theirs):
+    """The fields in which two comparable provenances differ, as text:
+    'git_commit 1a2b3c4d5e6f (not 5d6e7f8a9b0c)'."""
+    if ours is None:
+        return "no provenance recorded"
+    if theirs is None:
+        return described(ours)
+    return ", ".join(f"{k} {_short(ours.get(k))} (not {_short(theirs.get(k))})"
+                     for k in _fields(ours, theirs) if ours.get(k) != theirs.get(k))
+
+
+def described(provenance, fields=None):
+    """'git_commit ..., auto_version ...' of the given fields (default all)."""
+    if provenance is None:
+        return "no provenance"
+    return ", ".join(f"{k} {_short(provenance.get(k))}"
+                     for k in _fields(provenance, {}) if fields is None or k in fields)
+
+
+def _fields(ours, theirs):
+    return sorted(set(ours) | set(theirs),
+                  key=lambda k: (k not in ("git_commit", "auto_version"), k))
+
+
+def _short(value):
+    text = json.dumps(value) if isinstance(value, (dict, list)) else str(value)
+    if len(text) == 40 or (len(text) == 46 and text.endswith("+dirty")):
+        text = text[:12] + text[40:]             # a commit
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+class Point:
+    """One grid point's result: its index (its line in `jobs`: the array
+    index of a submission of the whole grid, one line per task), name,
+    path, state, what is wrong (detail) and the record (if readable)."""
+
+    def __init__(self, index, point, name, path, state, detail="", record=None):
+        self.index, self.point, self.name, self.path = index, point, name, path
+        self.state, self.detail, self.record = state, detail, record
+
+    def line(self):
+        return f"  {self.state:<16} index {self.index:<4} {self.name}: {self.detail}"
+
+
+def survey(plane, points, expected=None):
+    """Every point's Point, in the order of `jobs`.  With expected (a
+    comparable provenance), a readable result recorded otherwise is OTHER."""
+    found = []
+    for index, (a, b) in enumerate(points, start=1):
+        path = plane.result_path(a, b)
+        name = plane.name(a, b)
+        try:
+            with open(path) as source:
+                record = json.load(source)
+            if not isinstance(record, dict):
+                raise ValueError(f"a JSON {type(record).__name__}, not a record")
+        except FileNotFoundError:
+            if os.path.isdir(os.path.dirname(path)):
+                found.append(Point(index, (a, b), name, path, NO_RESULT,
+                                   f"{os.path.dirname(path)} exists but holds no result.json "
+                                   "(the job failed, was killed, or is running)"))
+            else:
+                found.append(Point(index, (a, b), name, path, MISSING,
+                                   f"no {path} (never run)"))
+            continue
+        except (OSError, ValueError) as exc:
+            found.append(Point(index, (a, b), name, path, UNREADABLE,
+                               f"{path} unreadable ({type(exc).__name__}: {exc})"))
+            continue
+        ours = comparable(record.get("provenance"))
+        if expected is not None and ours != expected:
+            found.append(Point(index, (a, b), name, path, OTHER,
+                               f"recorded with {differences(ours, expected)}; a job now "
+                               "records the latter", record))
+        else:
+            found.append(Point(index, (a, b), name, path, DONE, "", record))
+    return found
+
+
+def report(tool, found, what="points"):
+    """Counts by state, then every point without a valid result; the number
+    of those."""
+    counts = {}
+    for point in found:
+        counts[point.state] = counts.get(point.state, 0) + 1
+    print(f"{tool}: {len(found)} {what}: "
+          + ", ".join(f"{n} {state}" for state, n in counts.items()))
+    bad = [point for point in found if point.state != DONE]
+    for point in bad:
+        print(point.line())
+    return len(bad)
+
+
+def provenance_groups(found):
+    """[(comparable provenance, [Point ...])] of readable points, the
+    largest group first."""
+    groups = []
+    for point in found:
+        key = comparable(point.record.get("provenance"))
+        for value, members in groups:
+            if value == key:
+                members.append(point)
+                break
+        else:
+            groups.append((key, [point]))
+    return sorted(groups, key=lambda group: -len(group[1]))
+
+
+def mixed_provenance(tool, groups, noun="points"):
+    """The text that names the points whose provenance differs from the
+    largest group's."""
+    base, largest = groups[0]
+    fields = {k for value, _ in groups[1:] for k in _fields(value or {}, base or {})
+              if (value or {}).get(k) != (base or {}).get(k)}
+    lines = [f"{tool}: the results have {len(groups)} different provenances: {len(largest)} "
+             f"{noun} (e.g. {', '.join(p.name for p in largest[:3])}) with "
+             f"{described(base, fields)}, and"]
+    for value, members in groups[1:]:
+        lines.append(f"  {len(members)} with {differences(value, base)}: "
+                     + ", ".join(f"{p.name} (index {p.index})" for p in members))
+    return "\n".join(lines)
+
+
+# --- the command line ----------------------------------------------------------
+
+def main(tool, description, job_command, plane, options, grid, *, run_job, check, summary,
+         argv=None):
     """The command line of a job-grid study mlgshimmy.studies.<tool>:
-    `check|targets|jobs|summary|<job_command> [NAME] [--<axis> ...]`.
-    options: (flag, default, help) per axis; grid(args): the points (a
-    GridError ends the process naming the axis's variable)."""
-    parser = argparse.ArgumentParser(prog=f"python3 -m mlgshimmy.studies.{tool}",
-                                     description=description)
-    parser.add_argument("command", choices=["check", "targets", "jobs", job_command, "summary"])
+    `check|targets|jobs [--missing]|status|summary [--mixed-provenance]|
+    <job_command> NAME [--<axis> ...]`.  options: (flag, default, help) per
+    axis; grid(args): the points (a GridError ends the process naming the
+    axis's variable); summary(points, records, provenance): the points'
+    records (without their provenance) and the one provenance they share
+    (None if mixed and allowed)."""
+    parser = argparse.ArgumentParser(
+        prog=f"python3 -m mlgshimmy.studies.{tool}", description=description,
+        epilog="A point's index is its line in `jobs` (the array index when the whole "
+               "grid is submitted one line per task).")
+    parser.add_argument("command",
+                        choices=["check", "targets", "jobs", "status", job_command, "summary"])
     parser.add_argument("name", nargs="?",
                         help=f"{plane.first}<value>_{plane.second}<value> ({job_command} only)")
     for flag, default, text in options:
         parser.add_argument(flag, default=default, help=text)
-    args = parser.parse_args()
+    parser.add_argument("--missing", action="store_true",
+                        help="jobs: only the points without a valid result (none, unreadable, "
+                             "or another provenance than a job records now)")
+    parser.add_argument("--mixed-provenance", action="store_true",
+                        help="summary: accept results of different provenances (git commit, "
+                             "AUTO version, settings), naming them, instead of refusing")
+    args = parser.parse_args(argv)
     try:
         points = grid(args)
     except GridError as exc:
         sys.exit(f"{tool}: grid rejected: {exc}")
-    dispatch(tool, job_command, args, points, targets=plane.result_path, job_name=plane.name,
-             run_job=run_job, check=check, summary=summary)
+    axes = " ".join(f"{flag}={shlex.quote(getattr(args, flag.lstrip('-')))}"
+                    for flag, _, _ in options)
+    dispatch(tool, job_command, args, points, plane, axes, run_job=run_job, check=check,
+             summary=summary)
 
 
-def dispatch(tool, job_command, args, points, *, targets, job_name, run_job, check, summary):
-    """The commands every job-grid study has: check,
-    targets, jobs (one shell line per job, for make, GNU parallel or Slurm),
-    summary, and job_command NAME (one job).  A missing or rejected job name
-    (ValueError from run_job) ends the process with a message naming it."""
+def dispatch(tool, job_command, args, points, plane, axes, *, run_job, check, summary):
+    """The commands every job-grid study has: check, targets, jobs (one
+    shell line per job, for make, GNU parallel or Slurm; --missing: only
+    those without a valid result), status (every point without one, with
+    its index; exit 1 if any), summary (refused, listing them, while a point
+    has no result or the results' provenances differ), and job_command NAME
+    (one job).  A missing or rejected job name (ValueError from run_job) ends
+    the process with a message naming it."""
+    module = f"mlgshimmy.studies.{tool}"
+    missing_jobs = f"python3 -m {module} jobs --missing {axes}"
     if args.command == "targets":
-        print(" ".join(targets(*p) for p in points))
+        print(" ".join(plane.result_path(*p) for p in points))
     elif args.command == "jobs":
-        for point in points:
-            print(job_line(f"mlgshimmy.studies.{tool}", job_command, job_name(*point)))
+        chosen = points
+        if args.missing:
+            chosen = [p.point for p in survey(plane, points, comparable(plane.provenance()))
+                      if p.state != DONE]
+            print(f"{tool}: {len(chosen)} of {len(points)} {plane.noun} without a valid "
+                  "result",
+                  file=sys.stderr)
+        for point in chosen:
+            print(job_line(module, job_command, plane.name(*point)))
+    elif args.command == "status":
+        found = survey(plane, points, comparable(plane.provenance()))
+        bad = report(tool, found, plane.noun)
+        if bad:
+            sys.exit(f"{tool}: {bad} of {len(found)} {plane.noun} without a valid result; "
+                     f"`{missing_jobs}` prints their jobs")
+        print(f"{tool}: all {len(found)} {plane.noun} have a valid result")
     elif args.command == "check":
         check(points)
     elif args.command == "summary":
-        summary(points)
+        found = survey(plane, points)
+        bad = [point for point in found if point.state != DONE]
+        if bad:
+            report(tool, found, plane.noun)
+            sys.exit(f"{tool}: summary refused: {len(bad)} of {len(found)} {plane.noun} have no "
+                     f"result (listed above); `{missing_jobs}` prints their jobs")
+        groups = provenance_groups(found)
+        if len(groups) > 1:
+            text = mixed_provenance(tool, groups, plane.noun)
+            if not args.mixed_provenance:
+                sys.exit(f"{text}\n{tool}: summary refused: it would mix them; recompute the "
+                         f"others (`{missing_jobs}` prints the jobs of those a job now "
+                         "records otherwise) or pass --mixed-provenance")
+            print(f"{text}\n{tool}: mixing them, as --mixed-provenance asks", file=sys.stderr)
+        shared = groups[0][0] if len(groups) == 1 else None
+        current = comparable(plane.provenance())
+        if shared is not None and shared != current:
+            changed = {k for k in _fields(shared, current or {})
+                       if shared.get(k) != (current or {}).get(k)}
+            print(f"{tool}: note: the results were recorded with {described(shared, changed)}; "
+                  f"a job now records {described(current, changed)}")
+        records = [{k: v for k, v in p.record.items() if k != "provenance"} for p in found]
+        summary(points, records, groups[0][1][0].record.get("provenance")
+                if shared is not None else None)
     elif args.name is None:
-        sys.exit(f"{tool}: {job_command} needs a job name, e.g. {job_name(*points[0])}")
+        sys.exit(f"{tool}: {job_command} needs a job name, e.g. {plane.name(*points[0])}")
     else:
         try:
             run_job(args.name)

@@ -2,12 +2,12 @@
 
 A job list is one shell command per line (a sweep point, an atlas cell, a part of a
 staged figure).  A submission is a pipeline: stage 1's lines, then stage 2's (which may
-read stage 1's results), ..., then one assembly command (`make fig11`, `sweep.py
-summary`).  Usage (PYTHONPATH=drivers):
+read stage 1's results), ..., then one assembly command (`make fig11`, `python3 -m
+mlgshimmy.studies.sweep summary`).  Usage (PYTHONPATH=drivers):
 
   python3 -m mlgshimmy.shared.jobs.submit submit --name NAME --scheduler slurm|parallel
           (--stage FILE [--stage FILE ...] | --stages-from 'CMD ... {k}' [--stages N])
-          [--assemble 'CMD'] [--per-task K] [--throttle M] [--jobs J]
+          [--allow-empty] [--assemble 'CMD'] [--per-task K] [--throttle M] [--jobs J]
           [--env VAR=VALUE ...] [--carry VAR ...] [--out DIR] [--assemble-opt=OPT ...]
           [--dry-run] [-- SBATCH OR PARALLEL OPTIONS ...]
   python3 -m mlgshimmy.shared.jobs.submit status DIR [--json] [--wait [--timeout S]]
@@ -19,9 +19,12 @@ never rewritten), assemble.txt, and manifest.json (job ids per stage and attempt
 line there is the input line made self-sufficient: unless the line sets them itself, it
 is prefixed with `export AUTO_DIR=... MLG_RUN_ROOT=... MLG_AUTO_THREADS=...
 MPLBACKEND=Agg SOURCE_DATE_EPOCH=0;` (values from --env, else the submitting shell,
-else the repository's defaults; paths made absolute), and with `cd <the submitting
+else the repository's defaults; paths made absolute; MLG_CPU_GUARD_SCALE too where the
+submitting shell sets it), and with `cd <the submitting
 directory> &&` unless it starts with an absolute cd.  So the tasks need nothing from
-the environment they start in (sbatch --export=NONE works).
+the environment they start in (sbatch --export=NONE works).  With --allow-empty, a
+stage without lines (a `jobs --missing` list with nothing left) is kept and submits
+nothing; when no stage has a line, only the assembly is submitted (none: nothing is).
 
 slurm: stage k is one job array `sbatch --parsable -J <name>-s<k> --array=1-T[%M]
   -o <out>/logs/%x_%A_%a.out` of T = ceil(lines / K) tasks running mk/cluster/array-task.sh
@@ -68,6 +71,8 @@ TOOL = "submit"
 WRAPPER = os.path.join("mk", "cluster", "array-task.sh")
 # What every job line must carry (the Makefile exports the same)
 CARRY = ("AUTO_DIR", "MLG_RUN_ROOT", "MLG_AUTO_THREADS", "MPLBACKEND", "SOURCE_DATE_EPOCH")
+# ... and these where the submitting shell sets them (the CPU guards' factor)
+CARRY_IF_SET = ("MLG_CPU_GUARD_SCALE",)
 PATH_VARIABLES = ("AUTO_DIR", "MLG_RUN_ROOT")
 NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.+-]*$")
 ABSOLUTE_CD = re.compile(r"""^\s*cd\s+(['"]?)/""")
@@ -79,6 +84,10 @@ QUEUED = {"PENDING", "RUNNING", "CONFIGURING", "COMPLETING", "REQUEUED", "RESIZI
 
 class Refused(Exception):
     """A request that cannot be carried out, with the reason."""
+
+
+class NothingToDo(Exception):
+    """--allow-empty: no stage has a line and there is no assembly."""
 
 
 def say(message):
@@ -108,7 +117,9 @@ def carried_environment(root, overrides, extra, environ=os.environ):
     repository's default; AUTO_DIR and MLG_RUN_ROOT as absolute paths."""
     values = {}
     base = defaults(root)
-    for variable in list(CARRY) + [v for v in extra if v not in CARRY]:
+    optional = [v for v in CARRY_IF_SET
+                if (environ.get(v) or v in overrides) and v not in extra]
+    for variable in list(CARRY) + optional + [v for v in extra if v not in CARRY]:
         if variable in overrides:
             value = overrides[variable]
         elif variable in environ:
@@ -153,7 +164,7 @@ def read_lines(text):
     return lines
 
 
-def stages_from_files(files):
+def stages_from_files(files, allow_empty=False):
     stages = []
     for file in files:
         try:
@@ -164,17 +175,23 @@ def stages_from_files(files):
                     lines = read_lines(handle.read())
         except OSError as exc:
             raise Refused(f"--stage {file}: {exc.strerror}") from None
-        if not lines:
-            raise Refused(f"--stage {file}: no command in it")
+        if not lines and not allow_empty:
+            raise Refused(f"--stage {file}: no command in it (--allow-empty: a stage with "
+                          "nothing left to do is skipped)")
         stages.append(lines)
     return stages
 
 
-def stages_from_command(command, count, cwd):
+def stages_from_command(command, count, cwd, allow_empty=False):
     """Stage k's lines from `command` with {k} replaced by k, k = 1, 2, ...: `count`
-    stages, or, without a count, up to the first stage that prints nothing."""
+    stages, or, without a count, up to the first stage that prints nothing.  With
+    allow_empty (and a count), a stage may print nothing (`jobs --missing` of a stage
+    whose parts are all done)."""
     if "{k}" not in command:
         raise Refused(f"--stages-from {command!r}: put {{k}} where the stage number goes")
+    if allow_empty and not count:
+        raise Refused("--allow-empty with --stages-from needs --stages N: without it an "
+                      "empty stage ends the list")
     stages = []
     for k in range(1, (count or MAX_STAGES) + 1):
         run = subprocess.run(["bash", "-c", command.replace("{k}", str(k))], cwd=cwd,
@@ -182,10 +199,12 @@ def stages_from_command(command, count, cwd):
         if run.returncode != 0:
             raise Refused(f"--stages-from: stage {k}: {command.replace('{k}', str(k))!r} "
                           f"failed (exit {run.returncode}): {run.stderr.strip()[-500:]}")
+        sys.stderr.write(run.stderr)   # what the command says (`jobs --missing`: counts)
         lines = read_lines(run.stdout)
-        if not lines:
+        if not lines and not allow_empty:
             if count:
-                raise Refused(f"--stages-from: stage {k} of --stages {count} has no job")
+                raise Refused(f"--stages-from: stage {k} of --stages {count} has no job "
+                              "(--allow-empty: a stage with nothing left to do is skipped)")
             break
         stages.append(lines)
     else:
@@ -287,12 +306,20 @@ def create(args, options):
     if args.stage:
         if args.stages:
             raise Refused("--stages N goes with --stages-from")
-        stages = stages_from_files(args.stage)
+        stages = stages_from_files(args.stage, args.allow_empty)
     elif args.stages_from:
-        stages = stages_from_command(args.stages_from, args.stages, cwd)
+        stages = stages_from_command(args.stages_from, args.stages, cwd, args.allow_empty)
     else:
         raise Refused("no jobs: give --stage FILE (one per stage, in order) or "
                       "--stages-from 'CMD ... {k}'")
+    for k, lines in enumerate(stages, start=1):
+        if not lines:
+            say(f"stage {k}: no line (nothing left to do there), skipped")
+    if not any(stages):
+        if not args.assemble:
+            raise NothingToDo("no stage has a line left and there is no assembly: "
+                              "nothing to submit")
+        say("no stage has a line left: only the assembly is submitted")
 
     out = os.path.abspath(args.out or os.path.join(root, "build"))
     stamp = datetime.datetime.now().strftime("%Y%m%d-%H%M%S")
@@ -415,7 +442,7 @@ def run_parallel(manifest, extra, resume):
                                  "extra_options": extra, "runner": os.getpid()})
     write_manifest(directory, manifest)
     steps = [(f"stage {k}", stage["file"], f"stage{k}.log")
-             for k, stage in enumerate(manifest["stages"], start=1)]
+             for k, stage in enumerate(manifest["stages"], start=1) if stage["lines"]]
     if manifest["assemble"]:
         steps.append(("assembly", manifest["assemble"], "assemble.log"))
     for label, file, log in steps:
@@ -676,6 +703,9 @@ def print_status(manifest, report, code, every=False):
         for entry in step["entries"]:
             tally[entry["state"]] = tally.get(entry["state"], 0) + 1
         label = "assembly" if step["stage"] == "assemble" else f"stage {step['stage']}"
+        if not step["entries"]:
+            print(f"{label}: no lines (nothing was left to do there)")
+            continue
         jobs = f" (job {', '.join(step['jobs'])})" if step.get("jobs") else ""
         seconds = [entry["seconds"] for entry in step["entries"] if "seconds" in entry]
         longest = f"; longest line {max(seconds):g} s" if seconds else ""
@@ -753,6 +783,9 @@ def main(argv=None):
                      help="a command printing stage {k}'s lines, run for k = 1, 2, ... "
                           "until one prints nothing (or --stages N)")
     new.add_argument("--stages", type=int, help="the number of stages of --stages-from")
+    new.add_argument("--allow-empty", action="store_true",
+                     help="a stage without lines is skipped, not refused (job lists printed by "
+                          "`jobs --missing`); with --stages-from it needs --stages N")
     new.add_argument("--assemble", metavar="CMD",
                      help="run after every stage completed (e.g. 'make fig11')")
     new.add_argument("--per-task", type=int, default=1, metavar="K",
@@ -820,6 +853,9 @@ def main(argv=None):
             print_status(manifest, report, code)
             return rc or code
         return rc
+    except NothingToDo as exc:
+        say(str(exc))
+        return 0
     except Refused as exc:
         say(str(exc))
         return 2

@@ -4,19 +4,25 @@ of Fig. 11 (y_fp = 1 mm, epsilon = 0.1 mm (freeplay.NOMINAL), `figures` set).
 Every grid cell is an independent job with its own directory
 $MLG_RUN_ROOT/atlas/V<v>_F<f>/ (default build/) and result file
 result.json there, computed by studies.atlas.cell (the starts, time
-limits and simulations; shared.attractor classifies).  `check` runs the
-simulator for 1 ms per cell, so bad parameters stop the grid before any
-cell runs, with the simulator's message naming them.  Subcommands (axes
-as in shared.jobs.grid: "a,b,c" or "start:stop:step"; the default is
+limits and simulations; shared.attractor classifies) and recorded with its
+provenance (shared.jobs.grid: git commit, AUTO version, parameter set,
+settings()).  `check` runs the simulator for 1 ms per cell, so bad
+parameters stop the grid before any cell runs, with the simulator's
+message naming them.  Subcommands of `python3 -m mlgshimmy.studies.atlas`
+(axes as in shared.jobs.grid: "a,b,c" or "start:stop:step"; the default is
 DEFAULT_V x DEFAULT_FSTAR):
 
-  atlas.py check   [--V L --Fstar L]   validate every cell (no simulation)
-  atlas.py targets [--V L --Fstar L]   the result files, for make
-  atlas.py jobs    [--V L --Fstar L]   one shell command per cell, for GNU
-                                       parallel or a Slurm array (docs/parallel.md)
-  atlas.py cell V<v>_F<f>              simulate and classify one cell
-  atlas.py summary [--V L --Fstar L]   summary.txt, summary.json and the plot
-                                       build/figures/atlas.{png,pdf}
+  check   [--V L --Fstar L]   validate every cell (no simulation)
+  targets [--V L --Fstar L]   the result files, for make
+  jobs    [--V L --Fstar L] [--missing]
+                              one shell command per cell (--missing: per
+                              cell without a valid result), for GNU
+                              parallel or a Slurm array (docs/cluster.md)
+  status  [--V L --Fstar L]   every cell without a valid result, by index
+  cell V<v>_F<f>              simulate and classify one cell
+  summary [--V L --Fstar L] [--mixed-provenance]
+                              summary.txt, summary.json and the plot
+                              build/figures/atlas.{png,pdf}
 
 `make atlas` (with -j N for N cells at once) runs check, every cell, summary.
 """
@@ -32,7 +38,17 @@ from mlgshimmy.studies.atlas import cell as atlas_cell
 from mlgshimmy.studies.atlas import compare as atlas_compare
 axis = jobgrid.axis
 
-CELLS = jobgrid.Plane("V", "F", "atlas")   # cell V<v>_F<F*>
+
+def settings():
+    """What a cell's result depends on besides (V, F*), the code and the
+    simulator (recorded in its provenance)."""
+    return {"freeplay": atlas_cell.FREEPLAY, "starts": atlas_cell.STARTS,
+            "stages_s": atlas_cell.STAGES, "window_s": atlas_cell.WINDOW,
+            "dt_out_s": atlas_cell.DT_OUT}
+
+
+CELLS = jobgrid.Plane("V", "F", "atlas", "figures", settings, "cells")   # V<v>_F<F*>
+
 # 18 x 13 cells: every region of Fig. 11 holds at least one (the stable
 # straight-rolling band at F* = 1 lies between 28.3 and 41.5 m/s: V = 30, 40;
 # the off-centre-yaw band between F* = 0.037 and 0.408: 0.1, 0.2, 0.3)
@@ -64,29 +80,19 @@ def run_cell(name):
     try:
         v, fstar = CELLS.parse(name)
     except ValueError:
-        sys.exit(f"atlas: {name!r} is not a cell name V<v>_F<f> (see `atlas.py targets`)")
+        sys.exit(f"atlas: {name!r} is not a cell name V<v>_F<f> (see `python3 -m "
+                 "mlgshimmy.studies.atlas targets`)")
     rundir = os.path.dirname(CELLS.result_path(v, fstar))
     os.makedirs(rundir, exist_ok=True)
     result = atlas_cell.cell(v, fstar, rundir)
     # written whole or not at all: make sees a result only when it is complete
-    jobs.write_json(CELLS.result_path(v, fstar), result, indent=1)
+    CELLS.write(v, fstar, result)
     print(f"atlas: {name}: {result['label']} ({result['cpu_seconds']:.1f} s CPU)")
 
 
-def load(points):
-    cells = []
-    for v, fstar in points:
-        path = CELLS.result_path(v, fstar)
-        if not os.path.exists(path):
-            sys.exit(f"atlas: no result for V = {v:g}, F* = {fstar:g} ({path}); "
-                     "run `make atlas` (or atlas.py cell) first")
-        with open(path) as f:
-            cells.append(json.load(f))
-    return cells
-
-
-def summary(points):
-    cells = load(points)
+def summary(points, cells, provenance):
+    """summary.txt, summary.json and the plots of the cells (their records,
+    every cell's checked present and of one provenance by shared.jobs.grid)."""
     counts = {}
     for c in cells:
         counts[c["label"]] = counts.get(c["label"], 0) + 1
@@ -116,7 +122,7 @@ def summary(points):
     if agreement is not None:
         lines += atlas_compare.report(agreement)
     text = "\n".join(lines) + "\n"
-    stored = {"cells": cells, "fig11_agreement": agreement}
+    stored = {"provenance": provenance, "cells": cells, "fig11_agreement": agreement}
     for name, content in (("summary.txt", text), ("summary.json", json.dumps(stored, indent=1))):
         jobs.write_text(os.path.join(CELLS.directory, name), content)
     print("\n".join(lines[:3 + len(counts)]))
