@@ -28,6 +28,6 @@ design-map: design_map
 .PHONY: fig10_rho10_mu10
 fig10_rho10_mu10: $(AUTO_DRIVER_DEPS)
 	$(MAKE) --no-print-directory fig10 RHO=10 MU=10 EOM=2
-	rm -rf $(RUN_ROOT)/$@.tmp && cp -a $(RUN_ROOT)/geometry/rho10_mu10_eom2/fig10 $(RUN_ROOT)/$@.tmp
-	rm -rf $(RUN_ROOT)/$@ && mv $(RUN_ROOT)/$@.tmp $(RUN_ROOT)/$@
+	set -e; rm -rf $(RUN_ROOT)/$@.tmp && cp -a $(RUN_ROOT)/geometry/rho10_mu10_eom2/fig10 $(RUN_ROOT)/$@.tmp
+	set -e; rm -rf $(RUN_ROOT)/$@ && mv $(RUN_ROOT)/$@.tmp $(RUN_ROOT)/$@
 REGRESS_FIGURES += fig10_rho10_mu10

@@ -19,7 +19,7 @@ GEOMETRY_BASE := $(abspath $(or $(MLG_BASE_RUN_ROOT),$(MLG_RUN_ROOT),build))
 GEOMETRY_VARS := $(shell PYTHONPATH=$(call shell_quote,$(PYTHONPATH)) \
     MLG_RHO_DEG=$(call shell_quote,$(RHO)) MLG_MU_DEG=$(call shell_quote,$(MU)) \
     MLG_EOM=$(call shell_quote,$(EOM)) \
-    $(PYTHON) -m mlgshimmy.shared.geometry make $(call shell_quote,$(GEOMETRY_BASE)) \
+    $(call shell_quote,$(PYTHON)) -m mlgshimmy.shared.geometry make $(call shell_quote,$(GEOMETRY_BASE)) \
     || echo GEOMETRY_REJECTED)
 ifneq ($(filter GEOMETRY_REJECTED,$(GEOMETRY_VARS)),)
 $(error geometry: RHO=$(RHO) MU=$(MU) EOM=$(EOM) rejected (reason above))

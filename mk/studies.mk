@@ -93,7 +93,7 @@ REPORT_DIR := $(RUN_ROOT)/report
 .PHONY: report
 report: | $(MLG_SHARED)
 	$(PYTHON) -m mlgshimmy.studies.report --out $(REPORT_DIR)
-	@if command -v chromium >/dev/null 2>&1; then \
+	@set -e; if command -v chromium >/dev/null 2>&1; then \
 	    timeout 120 chromium --headless --no-sandbox --disable-gpu --no-pdf-header-footer \
 	        --print-to-pdf=$(REPORT_DIR)/report.pdf file://$(REPORT_DIR)/index.html \
 	        >$(REPORT_DIR)/chromium.log 2>&1 \
