@@ -24,6 +24,7 @@ from mlgshimmy.studies.atlas import compare as atlas_compare
 T = np.arange(0.0, 10.0 + 1e-9, 1e-3)       # two 5 s windows, atlas sampling
 T40 = np.arange(0.0, 40.0 + 1e-9, 1e-3)     # the first stage's time limit
 PSI_FP = 2.088e-3                           # freeplay angle at F* = 1 [rad]
+SR = 0.0                                    # psi of straight rolling at the paper's gear
 W = atlas_cell.WINDOW
 DRIVERS = os.path.join(paths.ROOT, "drivers")
 
@@ -45,7 +46,7 @@ GROWING = carrier(1e-3 * np.exp(0.02 * T40) * np.sin(2 * np.pi * 1.4 * T40))
 
 def test_classify_synthetic_40_hz_sine_high():
     sine = 0.12 * np.sin(2 * np.pi * 40.0 * T)
-    r = attractor.classify(T, sine, W, PSI_FP)
+    r = attractor.classify(T, sine, W, PSI_FP, SR)
     assert r["kind"] == "high", r
     assert close(r["amplitude_rad"], 0.12, rel=1e-4), r["amplitude_rad"]
     assert close(r["frequency_hz"], 40.0, rel=1e-4), r["frequency_hz"]
@@ -53,7 +54,7 @@ def test_classify_synthetic_40_hz_sine_high():
 
 
 def test_classify_synthetic_3_hz_sine_low():
-    r = attractor.classify(T, 2e-3 * np.sin(2 * np.pi * 3.0 * T + 0.3), W, PSI_FP)
+    r = attractor.classify(T, 2e-3 * np.sin(2 * np.pi * 3.0 * T + 0.3), W, PSI_FP, SR)
     assert r["kind"] == "low", r
     assert close(r["frequency_hz"], 3.0, rel=1e-3), r["frequency_hz"]
 
@@ -67,7 +68,7 @@ def test_classify_low_or_high_by_engagement_and_frequency(amplitude, f, psi_fp, 
     """Low / high by how far the swing passes the freeplay angle (ENGAGED)
     and LOW_HZ: the orbits of V = 20 m/s, F* = 1.8 (psi_fp 2.066e-3) and of
     V = 200 and 600 m/s, F* = 0.02 (psi_fp 2.555e-3)."""
-    r = attractor.classify(T, amplitude * np.sin(2 * np.pi * f * T), W, psi_fp)
+    r = attractor.classify(T, amplitude * np.sin(2 * np.pi * f * T), W, psi_fp, SR)
     assert r["kind"] == kind, \
         (f"{amplitude:g} rad at {f:g} Hz, psi_fp {psi_fp:g} rad (ratio {amplitude / psi_fp:.2f}, "
          f"ENGAGED {attractor.ENGAGED}, LOW_HZ {attractor.LOW_HZ:g}): {r}")
@@ -76,7 +77,7 @@ def test_classify_low_or_high_by_engagement_and_frequency(amplitude, f, psi_fp, 
 def test_classify_steady_modulation_quasi():
     """A steady 3 % modulation at 1.03 Hz: quasi, its trend steady (below
     RATE_MIN), its frequency found."""
-    r = attractor.classify(T40, carrier(0.03 * np.sin(2 * np.pi * 1.03 * T40)), W, PSI_FP)
+    r = attractor.classify(T40, carrier(0.03 * np.sin(2 * np.pi * 1.03 * T40)), W, PSI_FP, SR)
     assert r["kind"] == "quasi" and r["trend"] == "steady" and not r["growing"], r
     assert abs(r["spread_rate"]) < attractor.RATE_MIN, r["spread_rate"]
     assert close(r["modulation_hz"] or 0, 1.03, rel=0.05), r["modulation_hz"]
@@ -85,7 +86,7 @@ def test_classify_steady_modulation_quasi():
 def test_classify_growing_modulation_quasi_growing():
     """A modulation growing at 0.02 /s from 0.1 % (still below MODULATED):
     quasi, growing, the fitted rate 0.02 /s."""
-    r = attractor.classify(T40, GROWING, W, PSI_FP)
+    r = attractor.classify(T40, GROWING, W, PSI_FP, SR)
     assert r["kind"] == "quasi" and r["growing"] and r["trend"] == "growing", r
     assert close(r["spread_rate"], 0.02, rel=0.05), r["spread_rate"]
 
@@ -93,7 +94,7 @@ def test_classify_growing_modulation_quasi_growing():
 def test_classify_decaying_modulation_high():
     """A 1 % modulation decaying at 0.016 /s (the axial mode): high, decaying."""
     decaying = carrier(2e-2 * np.exp(-0.016 * T40) * np.sin(2 * np.pi * 0.8 * T40))
-    r = attractor.classify(T40, decaying, W, PSI_FP)
+    r = attractor.classify(T40, decaying, W, PSI_FP, SR)
     assert r["kind"] == "high" and r["trend"] == "decaying", r
     assert close(r["spread_rate"], -0.016, rel=0.05), r["spread_rate"]
 
@@ -101,7 +102,7 @@ def test_classify_decaying_modulation_high():
 def test_classify_slowly_growing_modulation_unsettled():
     """0.2 % growing at 2e-4 /s (< RATE_MIN): steady, so unsettled."""
     slow = carrier(1e-3 * np.exp(2e-4 * T40) * np.sin(2 * np.pi * 1.4 * T40))
-    r = attractor.classify(T40, slow, W, PSI_FP)
+    r = attractor.classify(T40, slow, W, PSI_FP, SR)
     assert r["kind"] == "unsettled" and r["trend"] == "steady", r
 
 
@@ -122,28 +123,41 @@ def test_mode_shape_amplitude_ratio_and_phase():
 
 def test_classify_decay_unsettled_not_straight():
     decaying = 1e-4 * np.exp(-0.3 * T) * np.sin(2 * np.pi * 38.0 * T)
-    r = attractor.classify(T, decaying, W, PSI_FP)
+    r = attractor.classify(T, decaying, W, PSI_FP, SR)
     assert r["kind"] == "unsettled", r
 
 
 def test_classify_rest_straight_or_yaw():
-    r = attractor.classify(T, np.zeros_like(T), W, PSI_FP)
+    r = attractor.classify(T, np.zeros_like(T), W, PSI_FP, SR)
     assert r["kind"] == "straight", f"rest at psi = 0: {r}"
-    r = attractor.classify(T, np.full_like(T, 1.7e-3), W, PSI_FP)
+    r = attractor.classify(T, np.full_like(T, 1.7e-3), W, PSI_FP, SR)
     assert r["kind"] == "yaw", f"rest at psi = 1.7e-3: {r}"
     assert close(r["mean_rad"], 1.7e-3, rel=1e-9), r["mean_rad"]
+
+
+@pytest.mark.parametrize("rest, psi_straight, kind", (
+    (-1.02e-3, -1.02e-3, "straight"),     # straight rolling twisted by side-stay angles
+    (-1.02e-3 + 2e-5, -1.02e-3, "yaw"),   # 2 CENTRE from it
+    (-1.02e-3 + 5e-6, -1.02e-3, "straight"),
+    (0.0, -1.02e-3, "yaw"),               # psi = 0 is not straight rolling there
+    (0.0, None, "yaw")))                  # no straight rolling at this load
+def test_classify_rest_against_the_straight_rolling_state(rest, psi_straight, kind):
+    """Straight or yaw by the distance of the mean psi from straight
+    rolling's psi (attractor.CENTRE = 1e-5 rad), not from psi = 0."""
+    r = attractor.classify(T, np.full_like(T, rest), W, PSI_FP, psi_straight)
+    assert r["kind"] == kind, f"rest at psi = {rest:g}, straight rolling {psi_straight}: {r}"
 
 
 def test_classify_period_2_high_with_two_levels():
     two = 0.1 * np.sin(2 * np.pi * 40.0 * T40) * (1 + 0.05 * np.sign(np.sin(2 * np.pi * 20.0
                                                                               * T40 + 0.1)))
-    r = attractor.classify(T40, two, W, PSI_FP)
+    r = attractor.classify(T40, two, W, PSI_FP, SR)
     assert r["kind"] == "high" and r["levels"] == 2, r
 
 
 def test_classify_refuses_fewer_samples_than_two_windows():
     with pytest.raises(ValueError) as error:
-        attractor.classify(T[:3000], T[:3000], W, PSI_FP)
+        attractor.classify(T[:3000], T[:3000], W, PSI_FP, SR)
     assert "window" in str(error.value), str(error.value)
 
 

@@ -128,3 +128,38 @@ def test_domain_psi0_out_of_the_domain_stops_with_a_liftoff_error(scratch):
     """(e) a state outside the model's domain stops the run with its reason."""
     status, _, _, err = simulate(scratch, "domain", "--psi0", "1.5", "--t-end", "0.1")
     assert status == 1 and "lifts off" in err, f"exit status {status}, stderr {err.strip()!r}"
+
+
+def test_u0_starts_from_the_given_state(scratch):
+    """--u0 replaces the simulator's Newton equilibrium: given that very
+    equilibrium the run is bit for bit the same; given a state at side-stay
+    angles where Newton from psi = 0 does not converge (rho = mu = 10 deg,
+    F* = 0.2, y_fp = 1 mm: straight rolling continued from zero freeplay,
+    shared.rolling) the run starts there and stays (psi0 = 0)."""
+    import math
+    from mlgshimmy.shared import mlgmodel, rolling
+    args = ["--V", "100", "--Fstar", "0.2", "--yfp", "1", "--eps-rel", "0.1", "--psi0", "1e-4",
+            "--t-end", "0.5"]
+    _, own = ran(scratch, "own", *args)
+    u = mlgmodel.Model("figures", Fstar=0.2, yfp=1.0, eps_abs=0.0, eps_rel=0.1).equilibrium()
+    u0 = ",".join(repr(u[n]) for n in mlgmodel.UNAMES)
+    _, given = ran(scratch, "given", *args, "--u0", u0)
+    assert all(np.array_equal(own[n], given[n]) for n in own.dtype.names), \
+        "--u0 at the simulator's own equilibrium changed the run"
+    at = ["--param", f"rho={math.radians(10)!r}", "--param", f"mu={math.radians(10)!r}",
+          "--param", "eom_terms=2"]
+    status, _, _, err = simulate(scratch, "newton", *args, "--psi0", "0", *at)
+    assert status == 1 and "Newton did not converge" in err, (status, err)
+    u = rolling.state("figures", 0.2, 1.0, {"eps_abs": 0.0, "eps_rel": 0.1},
+                      rho=math.radians(10), mu=math.radians(10), eom_terms=2)
+    u0 = ",".join(repr(u[n]) for n in mlgmodel.UNAMES)
+    _, data = ran(scratch, "tilted", *args, "--psi0", "0", "--u0", u0, *at)
+    assert np.max(np.abs(data["psi"] - u["psi"])) < 1e-9, \
+        f"psi left the given state {u['psi']:.6g} by {np.max(np.abs(data['psi'] - u['psi'])):.3g}"
+
+
+@pytest.mark.parametrize("u0", ("1,2,3", "1,2,3,4,5,6,7,8,9,10,11", "1,2,3,4,5,6,7,8,9,nan",
+                                "1,2,3,4,5,6,7,8,9,x"))
+def test_u0_refuses_a_bad_state_naming_the_option(scratch, u0):
+    status, _, _, err = simulate(scratch, "bad_u0", "--u0", u0)
+    assert status == 2 and "--u0 needs 10 finite numbers" in err, (u0, status, err)

@@ -1,7 +1,7 @@
 /* mlg_simulate: time simulation of the MLG model with SUNDIALS CVODE.
  *
  * Integrates u' = f(u; p) (c/mlg_model.h) from the straight-rolling equilibrium
- * plus a small perturbation, as in Fig. 8 of Howcroft et al. (section IV.A:
+ * (or the state given by --u0) plus a small perturbation, as in Fig. 8 of Howcroft et al. (section IV.A:
  * V = 300 m/s, F* = 0.2, zero freeplay, 15 s from near the unstable
  * equilibrium).  BDF with Newton iterations and a dense linear solver fed by
  * the exact Jacobian mlg_rhs_jacobian.  Writes the samples as CSV and prints
@@ -42,6 +42,8 @@ typedef struct {
     mlg_params p;
     double t_end, dt_out, rtol, atol, psi0, delta0;
     double max_memory_mb, max_output_mb;    /* budgets (file comment) */
+    double u0[MLG_NX];          /* --u0: the state to start from */
+    int u0_given;
     int lmm;                    /* CV_BDF or CV_ADAMS */
     const char *out;
 } options;
@@ -79,12 +81,17 @@ static void usage(FILE *stream)
         "  --psi0 X              perturbation of psi added to the equilibrium [rad]\n"
         "                        (default 1e-3)\n"
         "  --delta0 X            perturbation of delta [rad] (default 0)\n"
+        "  --u0 X,X,...          the state to perturb instead of the equilibrium that\n"
+        "                        Newton finds from psi = 0 (which at side-stay angles\n"
+        "                        may fail or be another stationary state): all %d\n"
+        "                        values, in the order psi delta beta eta psi_dot\n"
+        "                        delta_dot beta_dot eta_dot lambda_L lambda_R\n"
         "  --out FILE            CSV output (default: none)\n"
         "  --max-memory MB       memory budget of the last second's samples (default\n"
         "                        1024, or MLG_SIMULATE_MAX_MEMORY_MB): a run needing more\n"
         "                        (88 bytes a sample) is refused before it starts\n"
         "  --max-output MB       size budget of the --out CSV (default 1024, or\n"
-        "                        MLG_SIMULATE_MAX_OUTPUT_MB; at most 280 bytes a sample)\n");
+        "                        MLG_SIMULATE_MAX_OUTPUT_MB; at most 280 bytes a sample)\n", MLG_NX);
 }
 
 static double parse_number(const char *option, const char *text)
@@ -118,6 +125,24 @@ static double *set_named(mlg_params *p, const char *arg)
     }
     *ref = parse_number("--param", eq + 1);
     return ref;
+}
+
+/* --u0: MLG_NX comma-separated numbers into u */
+static void parse_state(const char *text, double u[MLG_NX])
+{
+    const char *at = text;
+    for (int i = 0; i < MLG_NX; i++) {
+        char *end;
+        errno = 0;
+        u[i] = strtod(at, &end);
+        char want = i + 1 < MLG_NX ? ',' : '\0';
+        if (errno != 0 || end == at || *end != want || !isfinite(u[i])) {
+            fprintf(stderr, "mlg_simulate: --u0 needs %d finite numbers separated by commas "
+                            "(%s first), got '%s'\n", MLG_NX, STATE_NAMES[0], text);
+            exit(2);
+        }
+        at = end + 1;
+    }
 }
 
 /* Stop with exit status 2 and a message naming the option. */
@@ -236,6 +261,10 @@ static options parse_options(int argc, char **argv)
         else if (strcmp(opt, "--atol") == 0) o.atol = parse_number(opt, arg);
         else if (strcmp(opt, "--psi0") == 0) o.psi0 = parse_number(opt, arg);
         else if (strcmp(opt, "--delta0") == 0) o.delta0 = parse_number(opt, arg);
+        else if (strcmp(opt, "--u0") == 0) {
+            parse_state(arg, o.u0);
+            o.u0_given = 1;
+        }
         else if (strcmp(opt, "--out") == 0) o.out = arg;
         else if (strcmp(opt, "--max-memory") == 0) o.max_memory_mb = parse_budget(opt, arg);
         else if (strcmp(opt, "--max-output") == 0) o.max_output_mb = parse_budget(opt, arg);
@@ -425,7 +454,11 @@ int main(int argc, char **argv)
     options o = parse_options(argc, argv);
 
     double u0[MLG_NX];
-    int eq = mlg_equilibrium(&o.p, 0.0, u0);
+    int eq = 0;
+    if (o.u0_given)
+        memcpy(u0, o.u0, sizeof u0);
+    else
+        eq = mlg_equilibrium(&o.p, 0.0, u0);
     if (eq != 0) {
         fprintf(stderr, "mlg_simulate: no straight-rolling equilibrium at V = %g, F* = %g "
                         "(code %d: %s)\n", o.p.V, o.p.Fstar, eq,

@@ -12,8 +12,13 @@ check AUTO's Floquet rates), with its standard error sigma: growing if the
 slope exceeds both RATE_MIN and SIGNIFICANT sigma, decaying if it is below
 minus that, steady otherwise.  Kinds and criteria:
 
-  straight   stationary (amplitude < STILL) at |mean psi| < CENTRE
-  yaw        stationary off centre: |mean psi| >= CENTRE (the pitchfork band)
+  straight   stationary (amplitude < STILL) within CENTRE of straight rolling:
+             |mean psi - psi_straight| < CENTRE, psi_straight the caller's
+             (shared.rolling: 0 at the paper's gear; with side-stay angles
+             the load twists the gear and straight rolling sits off psi = 0)
+  yaw        stationary off centre: |mean psi - psi_straight| >= CENTRE, or
+             any stationary state where there is no straight rolling
+             (psi_straight None); shared.yawed finds these states
   low        periodic shimmy that barely engages the torque link, and slow:
              amplitude below ENGAGED psi_fp and frequency below LOW_HZ
              (Fig. 11's low-frequency family, born at Hopf points below
@@ -52,7 +57,8 @@ LOW_HZ = 15.0         # ... but below the slices, at F* = 0.02, the family
                       # 1.11-1.28 psi_fp at V = 450-600 m/s, at 18-20 Hz
                       # (the atlas): the low family stays below 14.1 Hz
 STILL = 1e-6          # psi amplitude of a stationary state [rad]
-CENTRE = 1e-5         # |mean psi| of straight rolling [rad] (psi_fp ~ 2e-3)
+CENTRE = 1e-5         # |mean psi - psi_straight| of straight rolling [rad]
+                      # (psi_fp ~ 2e-3)
 MODULATED = 5e-3      # relative peak spread of a saturated torus
 SETTLED = 0.01        # relative change A -> B of amplitude and mean (of the
                       # amplitude) allowed for a settled state
@@ -181,10 +187,17 @@ def mode_shape(t, psi, other, frequency):
     return complex(c_other / c_psi) if c_psi != 0 else complex("nan")
 
 
-def classify(t, psi, window, psi_fp):
+def off_centre(mean, psi_straight):
+    """Whether a stationary state of mean psi `mean` is not straight rolling
+    (psi_straight, or None where there is none)."""
+    return psi_straight is None or abs(mean - psi_straight) >= CENTRE
+
+
+def classify(t, psi, window, psi_fp, psi_straight):
     """The kind of state reached over the last 2 * window seconds, with its
     numbers (amplitude, mean [rad], frequency, modulation [Hz]); psi_fp [rad]
-    is the freeplay angle (low/high)."""
+    is the freeplay angle (low/high), psi_straight [rad] straight rolling's
+    psi at this load (straight/yaw; None: there is no straight rolling)."""
     t_end = t[-1]
     if t_end - t[0] < 2 * window - 1e-9:
         raise ValueError(f"attractor.classify: {t_end - t[0]:g} s of samples, need "
@@ -202,7 +215,7 @@ def classify(t, psi, window, psi_fp):
     result["change"] = change
     if B["amplitude"] < STILL and A["amplitude"] < 10 * STILL:
         result["frequency_hz"] = 0.0
-        result["kind"] = "straight" if abs(B["mean"]) < CENTRE else "yaw"
+        result["kind"] = "yaw" if off_centre(B["mean"], psi_straight) else "straight"
         return result
     fit = spread_trend(t, psi, t_end - FIT_PART * (t_end - t[0]), t_end)
     trend = trend_kind(fit)

@@ -8,6 +8,7 @@ keeps what it was doing until then (`before`), and a shimmy end keeps the
 lateral and tyre motion relative to psi (end_state), so that a new rule
 for a kind can be applied to stored cells.
 """
+import functools
 import os
 import resource
 
@@ -16,25 +17,44 @@ import numpy
 from mlgshimmy.shared import attractor
 from mlgshimmy.shared import freeplay, geometry, simulator
 from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import yawed
 
 FREEPLAY = freeplay.NOMINAL      # y_fp = 1 mm, eps = 0.1 mm (Fig. 11)
 
 # The starts (simulator.STARTS).  One outside the model's domain at t = 0
 # (at F* = 0.02 a wheel lifts off at psi = 0.05) is halved until it is
 # inside; the psi0 used is recorded.
-STARTS = simulator.STARTS
+# At side-stay angles the gear is not mirror-symmetric and a yawed state on
+# one side need not have a mirror image on the other: a start yawed the
+# other way too.  (At rho = mu = 0 it would end on the mirror image of the
+# "yawed" start's end, the same kind.)
+STARTS = dict(simulator.STARTS, **({} if geometry.current().symmetric
+                                    else {"yawed_other": -simulator.STARTS["yawed"]}))
 STAGES = (40.0, 120.0)           # time limits [s], the second only if needed
 WINDOW = 5.0                     # attractor.classify's window [s]
 DT_OUT = 1e-3                    # sampling [s]: 25 samples per 40 Hz period
 
 
+@functools.lru_cache(maxsize=None)
+def straight_rolling(fstar):
+    """Straight rolling at this load and the run's geometry (shared.yawed:
+    continued from zero freeplay), {name: value}, or None where there is
+    none (its branch ended in a fold of y_fp)."""
+    return yawed.straight("figures", fstar, FREEPLAY, **geometry.parameters())
+
+
 def simulator_args(v, fstar, psi0, t_end):
-    """The simulator's options for one start, at the side-stay geometry of
-    the run (shared.geometry; none at the paper's)."""
+    """The simulator's options for one start: straight rolling (given as
+    --u0: at side-stay angles the simulator's own Newton from psi = 0 can
+    fail or land on a yawed state; without straight rolling the simulator's
+    equilibrium) with psi displaced by psi0, at the side-stay geometry of the
+    run (shared.geometry; none at the paper's)."""
     at = [word for name, value in geometry.simulator_params().items()
           for word in ("--param", f"{name}={value}")]
+    u0 = straight_rolling(fstar)
+    start = [] if u0 is None else ["--u0", ",".join(repr(u0[n]) for n in mlgmodel.UNAMES)]
     return ["--set", "figures", "--V", v, "--Fstar", fstar, *simulator.freeplay_args(FREEPLAY),
-            "--t-end", t_end, "--dt-out", DT_OUT, "--psi0", psi0, *at]
+            "--t-end", t_end, "--dt-out", DT_OUT, "--psi0", psi0, *start, *at]
 
 
 def discard(path):
@@ -64,21 +84,24 @@ def read_run(csv):
     return data if len(data) else None
 
 
-def freeplay_angle(fstar):
-    """psi_fp = y_fp / r_tlk [rad] at straight rolling (r_tlk depends on the
-    strut compression, so on F*): 2.56e-3 at F* = 0.02, 2.05e-3 at 3.5."""
-    model = mlgmodel.Model("figures", Fstar=fstar, yfp=FREEPLAY["yfp"],
-                           eps_abs=FREEPLAY["eps_abs"], eps_rel=FREEPLAY["eps_rel"],
-                           **geometry.parameters())
-    return FREEPLAY["yfp"] * 1e-3 / model.r_tlk(model.equilibrium()["eta"])
+def reference(fstar):
+    """(psi_fp, psi_straight) [rad] at this load: the freeplay angle y_fp /
+    r_tlk at straight rolling (r_tlk depends on the strut compression, so on
+    F*: 2.56e-3 at F* = 0.02, 2.05e-3 at 3.5) and straight rolling's psi
+    (None where there is no straight rolling; psi_fp then at the simulator's
+    equilibrium)."""
+    model = mlgmodel.Model("figures", Fstar=fstar, **FREEPLAY, **geometry.parameters())
+    u0 = straight_rolling(fstar)
+    eta = (model.equilibrium() if u0 is None else u0)["eta"]
+    return FREEPLAY["yfp"] * 1e-3 / model.r_tlk(eta), None if u0 is None else u0["psi"]
 
 
-def end_state(data, psi_fp):
-    """attractor.classify of the samples, with the lateral (delta) and tyre
-    (lambda_L) motion relative to psi at the orbit's frequency as
-    [amplitude ratio, phase lead in degrees] for a shimmy end."""
+def end_state(data, fstar):
+    """attractor.classify of the samples at this load (reference), with the
+    lateral (delta) and tyre (lambda_L) motion relative to psi at the orbit's
+    frequency as [amplitude ratio, phase lead in degrees] for a shimmy end."""
     t, psi = data[:, 0], data[:, 1]
-    result = attractor.classify(t, psi, WINDOW, psi_fp)
+    result = attractor.classify(t, psi, WINDOW, *reference(fstar))
     if result["frequency_hz"] > 0:
         last = t >= t[-1] - WINDOW
         for name, col in (("delta_over_psi", 2), ("lambda_over_psi", 3)):
@@ -105,13 +128,13 @@ def run_stage(v, fstar, psi0, t_end, rundir):
         result = {"kind": "domain", "t_end": t_end, "psi0": psi0, "reason": reason,
                   "before": None}
         if data is not None and data[-1, 0] - data[0, 0] >= 2 * WINDOW:
-            result["before"] = end_state(data, freeplay_angle(fstar))
+            result["before"] = end_state(data, fstar)
             result["before"]["t_end"] = float(data[-1, 0])
         return result
     if data is None or data[-1, 0] < t_end - 1e-9:
         raise RuntimeError(f"atlas: the run stopped at t = "
                            f"{0 if data is None else data[-1, 0]:g} s of {t_end:g}")
-    result = end_state(data, freeplay_angle(fstar))
+    result = end_state(data, fstar)
     result.update(t_end=t_end, psi0=psi0)
     return result
 
