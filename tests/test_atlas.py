@@ -232,15 +232,36 @@ def test_compare_with_a_stub_region_map():
     r = atlas_compare.compare(cells, stub)
     assert [(e["V"], e["Fstar"]) for e in r["on_curve"]] == [(303, 1)], \
         f"V = 303 (distance 0.005 < NEAR) not the one on the curve: {r['on_curve']}"
-    assert [e["V"] for e in r["agree"]] == [100, 450, 550], \
-        f"V = 100, 450 and 550 (yaw bit not compared) should agree: {r['agree']}"
-    assert [e["V"] for e in r["yaw_differs"]] == [550], r["yaw_differs"]
-    assert [(e["V"], e["atlas_name"]) for e in r["disagree"]] \
-        == [(500, "straight + high"), (150, "not settled")], \
-        f"V = 500 (straight + high in the high region) and 150 (not settled): {r['disagree']}"
-    assert close(r["fraction"], 0.6, rel=1e-12), r["fraction"]
-    assert sum("disagree V" in line for line in atlas_compare.report(r)) == 2, \
+    assert [e["V"] for e in r["agree"]] == [100, 450], \
+        f"V = 100 and 450 should agree: {r['agree']}"
+    assert [(e["V"], e["atlas_name"], e["differs"]) for e in r["disagree"]] \
+        == [(500, "straight + high", "straight"), (150, "not settled", "unsettled"),
+            (550, "high + yaw", "yaw")], \
+        (f"V = 500 (straight + high in the high region), 150 (not settled) and 550 (a yawed "
+         f"end where Fig. 11 has no stable yawed equilibrium): {r['disagree']}")
+    assert close(r["fraction"], 0.4, rel=1e-12), r["fraction"]
+    assert sum("disagree V" in line for line in atlas_compare.report(r)) == 3, \
         atlas_compare.report(r)
+
+
+def test_compare_yaw_edge_counts_as_a_curve():
+    """The edge of Fig. 11's yaw region (stable yawed equilibria below
+    V = 125 m/s at F* <= 0.35 here) is a curve: a cell 3 m/s from it is not
+    compared, one 25 m/s away is, with the yaw bit."""
+    V = np.arange(0.0, 600.5, 0.5)
+    F = np.arange(0.0, 3.51, 0.01)
+    code = np.where(V[None, :] < 125.0, 9, 1) * (F[:, None] <= 0.35) + (F[:, None] > 0.35)
+    stub = {"region_map": {"V": V, "Fstar": F, "code": code.tolist(), "names": {}},
+            "edge_curves": []}
+    assert close(atlas_compare.yaw_edge_distance(stub["region_map"], 100.0, 0.2), 25 / 600,
+                 rel=1e-9), atlas_compare.yaw_edge_distance(stub["region_map"], 100.0, 0.2)
+    cells = [stub_cell(122, 0.2, "yaw"), stub_cell(100, 0.2, "straight", "yaw"),
+             stub_cell(100, 0.1, "straight"), stub_cell(150, 0.2, "straight")]
+    r = atlas_compare.compare(cells, stub)
+    assert [(e["V"], e["curve"]) for e in r["on_curve"]] == [(122, "yaw edge")], r["on_curve"]
+    assert [(e["V"], e["Fstar"]) for e in r["agree"]] == [(100, 0.2), (150, 0.2)], r["agree"]
+    assert [(e["V"], e["Fstar"], e["differs"]) for e in r["disagree"]] == [(100, 0.1, "yaw")], \
+        r["disagree"]
 
 
 # --- the command line ----------------------------------------------------------

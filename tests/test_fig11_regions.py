@@ -17,7 +17,10 @@ slice_row = fig11_regions.slice_row
 
 V = fig11.V_GRID
 HIGH, QUASI = fig11.ATTRACTORS["high"], fig11.ATTRACTORS["quasi"]
-PITCHFORKS = [0.037, 0.408]
+# a stable yawed equilibrium (yaw_stable's grid) between the pitchforks
+# below the yawed states' Hopf point
+YAW_BAND = (fig11.F_GRID >= 0.037) & (fig11.F_GRID <= 0.408)
+YAW = YAW_BAND[:, None] & (V < 130.0)[None, :]
 
 
 def branch(Vs, Fs, mx_at_end):
@@ -97,7 +100,7 @@ EDGES = [{"name": "hopf1.1", "kind": "hopf", "V": [300.0, 300.0], "Fstar": [0.0,
 
 @pytest.fixture(scope="module")
 def one_curve_map():
-    return fig11.region_map(SR, ROWS, EDGES, PITCHFORKS)
+    return fig11.region_map(SR, ROWS, EDGES, YAW)
 
 
 def test_region_map_around_one_curve(one_curve_map):
@@ -107,9 +110,8 @@ def test_region_map_around_one_curve(one_curve_map):
         "right of the curve: not high-frequency shimmy at every load above the band"
     assert np.all(found[np.ix_(above, V < 299)] == 0), \
         "left of it: not code 0 (nothing stable found) at every load above the band"
-    band = (fig11.F_GRID >= 0.037) & (fig11.F_GRID <= 0.408)
-    assert np.all(found[band] & fig11.ATTRACTORS["yaw"]), \
-        "the pitchfork band does not carry the yaw bit everywhere"
+    assert np.array_equal((found & fig11.ATTRACTORS["yaw"]) != 0, YAW), \
+        "the yaw bit is not exactly where the yawed equilibria are stable"
     assert report["disagree"] == 0, f"synthetic samples disagree with their pieces: {report}"
     assert not np.any(found & QUASI), "a quasi-periodic code without a torus point"
 
@@ -125,7 +127,7 @@ TONGUE = {"name": "tongue1.1", "kind": "tongue", "V": [400.0, 500.0, 500.0, 400.
 def test_region_map_inside_a_closed_curve(kind, code):
     inside = (slice_row(2.5), (V > 420) & (V < 480))
     rows_in = ROWS + [(2.5, np.where((V > 300) & ((V < 410) | (V > 490)), HIGH, 0))]
-    mapped, _ = fig11.region_map(SR, rows_in, EDGES + [dict(TONGUE, kind=kind)], PITCHFORKS)
+    mapped, _ = fig11.region_map(SR, rows_in, EDGES + [dict(TONGUE, kind=kind)], YAW)
     assert np.all(mapped[inside] == code), \
         f"inside a closed curve of kind {kind}: {np.unique(mapped[inside])}, not {code}"
 
@@ -144,7 +146,7 @@ def liftoff_map():
     edges = EDGES + [{"name": "liftoff", "kind": "liftoff", "V": lift["V"],
                       "Fstar": lift["Fstar"]}]
     rows = [(F, np.where(V > 300, HIGH, 0)) for F in (1.0, 1.5, 2.0)]
-    return fig11.region_map(SR, rows, edges, PITCHFORKS, lift)
+    return fig11.region_map(SR, rows, edges, YAW, lift)
 
 
 def test_region_map_pocket_of_a_liftoff_edge_is_liftoff(liftoff_map):

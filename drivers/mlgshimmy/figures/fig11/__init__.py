@@ -24,7 +24,7 @@ from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_
                                             straight_rolling_stable)
 from mlgshimmy.figures.fig11.plane import F_GRID, SLICES, V_GRID
 from mlgshimmy.figures.fig11.regions import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
-                                                region_map, region_name, slice_codes)
+                                                region_map, region_name, slice_codes, yaw_stable)
 from mlgshimmy.figures.fig11.tori import TONGUE_EDGES, TONGUE_TOL, tongue_curve, torus_curves
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import liftoff
@@ -46,6 +46,7 @@ def parts():
     work.update({part: lambda Fstar=Fstar: liftoff_speed(Fstar)
                  for part, Fstar in zip(liftoff_parts, LIFTOFF_LOADS)})
     work["grid"] = straight_rolling_stable
+    work["yaw"] = yaw_stable
     slice_parts = [f"slice_{Fstar:.4f}" for Fstar in SLICES]
     work.update({part: lambda Fstar=Fstar: slice_diagram(Fstar)
                  for part, Fstar in zip(slice_parts, SLICES)})
@@ -73,7 +74,7 @@ def compute(parts):
                         [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
     edges = curve_list(drawn, pitchforks, lift)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
-                              pitchforks, lift)
+                              numpy.asarray(parts["yaw"], dtype=bool), lift)
     for row, col, n, votes in check["pieces"]:
         if n - max(votes.values()) > PIECE_DISAGREEMENT * n:
             print(f"REPORTED: fig11 region near V = {V_GRID[col]:.1f}, F* = {F_GRID[row]:.2f}: "

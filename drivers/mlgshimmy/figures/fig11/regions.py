@@ -2,13 +2,14 @@
 by the attractors the slices' samples find there (shared.regions)."""
 import numpy
 
-from mlgshimmy.figures.fig11.plane import F_GRID, V_GRID, V_MAX, V_MIN
+from mlgshimmy.figures.fig11.plane import F_GRID, FREEPLAY, GEOMETRY, V_GRID, V_MAX, V_MIN
 from mlgshimmy.figures.fig11.tori import torus_speed
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import regions
+from mlgshimmy.shared import yawed
 
 ATTRACTORS, NAMES = regions.ATTRACTORS, regions.ATTRACTOR_NAMES
-BAND = "; between the pitchforks: off-centre yaw equilibria (their stability not computed)"
+BAND = "; stable off-centre yaw equilibria"
 PIECE_DISAGREEMENT = 0.05   # a piece whose samples disagree more than this is reported
 
 
@@ -45,13 +46,22 @@ def curve_list(drawn, pitchforks, lift=None):
     return out
 
 
-def region_map(sr_stable, orbits, edge_curves, pitchforks, lift=None):
+def yaw_stable(parameter_set="figures"):
+    """[F*, V] on F_GRID x V_GRID: True where a stable off-centre yawed
+    equilibrium exists (shared.yawed: the stationary states off straight
+    rolling, on both sides, and the eigenvalues of the exact Jacobian there;
+    the band between the pitchforks at the paper's gear, up to the Hopf
+    points of the yawed states in V, 123-138 m/s)."""
+    return yawed.stable_grid(parameter_set, F_GRID, V_GRID, FREEPLAY, **GEOMETRY)
+
+
+def region_map(sr_stable, orbits, edge_curves, yaw, lift=None):
     """(code [F*, V] on F_GRID x V_GRID, check): the regions bounded by the
     edge curves (and by the edges of the straight-rolling stability grid,
     which are the Hopf curves and pitchforks again, closing them where AUTO
     stopped), each labelled by the attractors the slices find inside it
-    (regions.paint).  Straight rolling and the yaw band are exact (grid,
-    pitchfork loads); where a slice finds no stable orbit nor straight
+    (regions.paint).  Straight rolling and off-centre yaw are exact
+    (eigenvalue grids sr_stable, yaw: yaw_stable); where a slice finds no stable orbit nor straight
     rolling beyond its first torus curve (torus_speed), the attractor is
     quasi-periodic shimmy (simulations, docs/reproduction.md).  orbits:
     [(slice load, its orbit bits along V_GRID)].  Right of the lift-off
@@ -71,8 +81,6 @@ def region_map(sr_stable, orbits, edge_curves, pitchforks, lift=None):
                                                     if c["kind"] != "tongue"])
     edges |= regions.boundary_pixels(sr_stable.astype(int))
     painted, check = regions.paint(edges, samples)
-    lo, hi = min(pitchforks), max(pitchforks)
-    yaw = ((F_GRID >= lo) & (F_GRID <= hi))[:, None] & numpy.ones(len(V_GRID), dtype=bool)
     found = painted | numpy.where(sr_stable, ATTRACTORS["straight"], 0) \
         | numpy.where(yaw, ATTRACTORS["yaw"], 0)
     return found, check
@@ -110,12 +118,11 @@ def shade(ax, found):
               vmax=len(values) - 0.5, alpha=0.45, origin="lower", aspect="auto",
               interpolation="nearest", extent=(V_GRID[0] - half_V, V_GRID[-1] + half_V,
                                                F_GRID[0] - half_F, F_GRID[-1] + half_F))
-    band = F_GRID[((found & ATTRACTORS["yaw"]) != 0).any(axis=1)]
-    ax.fill_between([0, V_MAX], band.min(), band.max(), facecolor="none", edgecolor="0.3",
-                    hatch="///", lw=0)
+    band = ((found & ATTRACTORS["yaw"]) != 0).astype(float)
+    if band.any():
+        ax.contourf(V_GRID, F_GRID, band, levels=[0.5, 1.5], colors="none", hatches=["///"])
     handles = [Patch(facecolor=c, edgecolor="0.4", alpha=0.45, label=region_name(v))
                for v, c in zip(values, colours)]
-    return handles + [Patch(facecolor="none", edgecolor="0.3", hatch="///",
-                            label="between the pitchforks: off-centre yaw equilibria\n"
-                                  "(straight rolling unstable; their stability\n"
-                                  "in V not computed)")]
+    return handles + [Patch(facecolor="none", edgecolor="k", hatch="///",
+                            label="stable off-centre yaw equilibria\n"
+                                  "(eigenvalues at the yawed states)")]

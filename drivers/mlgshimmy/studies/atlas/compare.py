@@ -10,12 +10,13 @@ the OR over the end states its starts reached (cell_code).
 A cell is "on a curve" if an edge curve passes within NEAR of it, measured
 in V / 600 m/s and F* / 3.5 (the plane drawn as a unit square; NEAR = 0.01
 is 6 m/s or 0.035): there one grid point cannot say on which side it lies.
-A cell with a start that did not settle has no code and counts as a
-disagreement ("not settled").  The codes are compared on the bits in
-COMPARED: Fig. 11 sets the yaw bit over the whole band between the
-pitchforks, where the yawed equilibria exist, without their stability, while
-the atlas sets it only where a start settles on one; cells whose yaw bits
-differ are counted apart ("yaw_differs").
+The edge of Fig. 11's off-centre-yaw region (where a stable yawed
+equilibrium exists: an eigenvalue grid, its edges the pitchforks or folds
+of the yawed states and their Hopf points in V) counts as a curve too,
+measured on region_map (yaw_edge_distance).  A cell with a start that did
+not settle has no code and counts as a disagreement ("not settled").  Every
+bit is compared, off-centre yaw included; a disagreement names the bits
+that differ ("differs").
 """
 import numpy
 
@@ -24,7 +25,6 @@ from mlgshimmy.shared import regions
 CODES = regions.ATTRACTORS
 SCALE = (600.0, 3.5)      # V [m/s], F*: the plane's extent
 NEAR = 0.01               # distance to a curve, in units of SCALE
-COMPARED = ~CODES["yaw"]  # bits compared (see above)
 
 
 def cell_code(cell):
@@ -81,6 +81,19 @@ def curve_distance(curves, v, fstar):
     return best
 
 
+def yaw_edge_distance(region_map, v, fstar):
+    """Distance (in units of SCALE) from (v, fstar) to the nearest grid point
+    of region_map whose yaw bit differs from the one at (v, fstar); inf if
+    the bit is the same everywhere."""
+    F, V = numpy.asarray(region_map["Fstar"], float), numpy.asarray(region_map["V"], float)
+    yaw = (numpy.asarray(region_map["code"]) & CODES["yaw"]) != 0
+    other = yaw != bool(region_at(region_map, v, fstar) & CODES["yaw"])
+    if not other.any():
+        return numpy.inf
+    i, j = numpy.nonzero(other)
+    return float(numpy.min(numpy.hypot((V[j] - v) / SCALE[0], (F[i] - fstar) / SCALE[1])))
+
+
 def compare(cells, fig11):
     """Every cell sorted into on a curve / agrees / disagrees, and the
     fraction of the cells off the curves that agree."""
@@ -88,22 +101,24 @@ def compare(cells, fig11):
     names = region_map.get("names", {})
     out = {"criterion": f"a cell is on a curve if an edge curve of Fig. 11 passes within "
                         f"{NEAR:g} of it in (V / {SCALE[0]:g} m/s, F* / {SCALE[1]:g})",
-           "compared_bits": "all but off-centre yaw (see yaw_differs)",
-           "on_curve": [], "agree": [], "disagree": [], "yaw_differs": []}
+           "compared_bits": "all, off-centre yaw included",
+           "on_curve": [], "agree": [], "disagree": []}
     for c in cells:
         atlas, region = cell_code(c), region_at(region_map, c["V"], c["Fstar"])
         distance, curve = curve_distance(curves, c["V"], c["Fstar"])
+        yaw_edge = yaw_edge_distance(region_map, c["V"], c["Fstar"])
+        if yaw_edge < distance:
+            distance, curve = yaw_edge, "yaw edge"
         entry = {"V": c["V"], "Fstar": c["Fstar"], "atlas": atlas, "fig11": region,
                  "atlas_name": code_name(atlas, names), "fig11_name": code_name(region, names),
                  "curve": curve, "curve_distance": round(distance, 4)}
         if distance < NEAR:
             out["on_curve"].append(entry)
             continue
-        if atlas is not None and (atlas ^ region) & CODES["yaw"]:
-            out["yaw_differs"].append(entry)
-        if atlas is not None and atlas & COMPARED == region & COMPARED:
+        if atlas == region:
             out["agree"].append(entry)
         else:
+            entry["differs"] = "unsettled" if atlas is None else code_name(atlas ^ region)
             out["disagree"].append(entry)
     off = len(out["agree"]) + len(out["disagree"])
     out["off_curve"] = off
@@ -116,9 +131,9 @@ def report(result):
     lines = [f"atlas vs Fig. 11: {len(result['agree'])} of {result['off_curve']} cells off the "
              f"curves agree ({100 * (result['fraction'] or 0):.1f} %); "
              f"{len(result['on_curve'])} cells on a curve not compared ({result['criterion']}); "
-             f"yaw bit not compared, it differs in {len(result['yaw_differs'])} cells"]
+             f"bits compared: {result['compared_bits']}"]
     for e in result["disagree"]:
         lines.append(f"  disagree V = {e['V']:g}, F* = {e['Fstar']:g}: atlas {e['atlas_name']}, "
-                     f"Fig. 11 {e['fig11_name']} (nearest curve {e['curve']}, "
-                     f"{e['curve_distance']:.3f})")
+                     f"Fig. 11 {e['fig11_name']} (differ in {e['differs']}; nearest curve "
+                     f"{e['curve']}, {e['curve_distance']:.3f})")
     return lines
