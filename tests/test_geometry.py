@@ -95,6 +95,19 @@ def test_the_studies_with_their_own_angles_stay_in_the_base_tree():
     assert "MLG_RUN_ROOT=" in line and "/geometry/" not in line and "MLG_RHO_DEG= " in line
 
 
+@pytest.mark.parametrize("args, tree", [((), "/build/atlas/"),
+                                        (("RHO=10", "MU=10"), "/build/geometry/rho10_mu10_eom2/atlas/")])
+def test_a_job_grid_lists_its_cells_in_the_geometry_tree(args, tree):
+    """The cells make waits for (mk/jobs.mk: `atlas targets` in a $(shell),
+    which does not see make's exported geometry) lie in the tree the cells
+    are written to."""
+    proc = make("-n", "atlas", "ATLAS_V=10", "ATLAS_FSTAR=0.1", *args)
+    assert proc.returncode == 0, proc.stderr
+    assert any(l.startswith("mkdir -p ") and l.endswith(tree.rstrip("/"))
+               for l in proc.stdout.splitlines()), proc.stdout
+    assert "cell V10_F0.1" in proc.stdout, proc.stdout
+
+
 def test_y_tlk_at_rho_mu_10_as_in_the_model_notes():
     """docs/model.md 8.7: the links sit at y_tlk = -0.46 mm inside the
     freeplay (y_fp = 1 mm, eps = 0.1 mm, F* = 1)."""
