@@ -58,7 +58,11 @@ def states(parameter_set: str, Fstar: float, freeplay: Dict[str, float],
     order) or None, "yawed": [the other stationary states found, by psi]}."""
     m = model(parameter_set, Fstar, freeplay, **overrides)
     sr = straight(parameter_set, Fstar, freeplay, **overrides)
-    base = sr if sr is not None else m.equilibrium()
+    try:
+        base = sr if sr is not None else m.equilibrium()    # the seeds' other states
+    except RuntimeError as exc:
+        raise RuntimeError(f"yawed: no straight rolling from zero freeplay at F* = {Fstar:g} "
+                           f"and no equilibrium to seed from ({exc})") from None
     d = domain.diagnose(m, base)
     twist = base["psi"] + base["beta"] * math.sin(d["p"])    # psi_s of the base state
     psi_fp = freeplay["yfp"] * 1e-3 / d["r_tlk"]

@@ -43,7 +43,8 @@ def settings():
     """What a cell's result depends on besides (V, F*), the code and the
     simulator (recorded in its provenance)."""
     return {"freeplay": atlas_cell.FREEPLAY, "starts": atlas_cell.STARTS,
-            "stages_s": atlas_cell.STAGES, "window_s": atlas_cell.WINDOW,
+            "stages_s": atlas_cell.STAGES, "settle_s": atlas_cell.SETTLE,
+            "window_s": atlas_cell.WINDOW,
             "dt_out_s": atlas_cell.DT_OUT}
 
 
