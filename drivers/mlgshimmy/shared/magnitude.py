@@ -315,9 +315,16 @@ def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
 
 def yfp_crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed", first_only=False, **model):
     """y_fp values where the growth of `band` changes sign along `grid`
-    (bisection to 1e-10 mm); with first_only, only the first of them."""
-    return spectrum.sign_changes(lambda y: growth(Fstar, y, V, scaling, **model)[band], grid,
-                                 tol=1e-10, first_only=first_only)
+    (bisection to 1e-10 mm); with first_only, only the first of them.  The
+    scan starts at zero freeplay, so a band already unstable at grid[0] is
+    not missed: its crossing is bisected below grid[0], or is 0 if the band
+    is unstable without freeplay (side-stay geometries at light load)."""
+    def rate(y):
+        return growth(Fstar, y, V, scaling, **model)[band]
+    found = spectrum.sign_changes(rate, numpy.r_[0.0, grid], tol=1e-10, first_only=first_only)
+    if rate(0.0) > 0:
+        found = [0.0] + found[:0 if first_only else None]
+    return found
 
 
 def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN, V_LIMIT, 25),

@@ -81,8 +81,22 @@ def write(name, data):
     jobs.write("criterion", data, "figures", part=name)
 
 
-def read(name):
-    return jobs.read("criterion", name)
+def read(name, root=None):
+    return jobs.read("criterion", name, root=root)
+
+
+def baseline_parts():
+    """{group: results} of the paper's geometry, to print beside a side-stay
+    geometry's ({} at the baseline; a group not computed there is left out)."""
+    if geometry.current().baseline:
+        return {}
+    out = {}
+    for group in GROUPS:
+        try:
+            out[group] = read(group, geometry.base_root())
+        except jobs.MissingResult:
+            continue
+    return out
 
 
 def scan(group):
@@ -201,12 +215,20 @@ def plot(groups):
 def report():
     groups = {group: read(group) for group in GROUPS}
     checks = read("auto")
+    base = baseline_parts()
     rows = [f"{'assumption':44s} {'kappa*':>8s} {'at F*':>7s} {'V [m/s]':>8s} {'eta* [m]':>9s}"
-            f"  mode"]
-    for items in groups.values():
-        for item in items:
+            f"  mode" + ("      baseline kappa*" if not geometry.current().baseline else "")]
+    for group, items in groups.items():
+        for k, item in enumerate(items):
+            beside = ""
+            if not geometry.current().baseline:
+                there = base.get(group)
+                beside = f"  {there[k]['kappa']:19.4f}" if there else f"  {'-':>19s}"
             rows.append(f"{label(item):44s} {item['kappa']:8.4f} {item['Fstar']:7.3f} "
-                        f"{item['V']:8.2f} {item['eta']:9.5f}  {item['mode']}")
+                        f"{item['V']:8.2f} {item['eta']:9.5f}  {str(item['mode']):4s}{beside}")
+    if any(item["kappa"] == 0 for items in groups.values() for item in items):
+        rows.append("kappa* = 0: straight rolling is unstable there without freeplay (the "
+                    "mode, at that load and speed): no freeplay is allowable")
     rows.append("")
     rows.append("two methods (eigenvalue scan in r; AUTO's curve of a in F* at V = 120):")
     for c in checks:
