@@ -17,6 +17,7 @@ from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
+from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
 
 MODEL = os.path.join(paths.BUILD, "models", "mlg")
@@ -32,12 +33,22 @@ SAME_FREQUENCY = 0.05  # relative: an orbit this close to a Hopf frequency may c
 
 class Start:
     """Parameters of a run and the straight-rolling equilibrium there,
-    validated by the c/ library before AUTO starts."""
+    validated by the c/ library before AUTO starts; near: a state
+    ({name: value}) to solve from instead (Newton, rolling.solve), for the
+    equilibrium near it where there are several (side-stay angles)."""
 
-    def __init__(self, parameter_set: str = "figures", **values: float):
+    def __init__(self, parameter_set: str = "figures", near: Optional[dict] = None,
+                 **values: float):
         self.model = mlgmodel.Model(parameter_set, **values)
         self.model.check()
-        self.U = self.model.equilibrium()
+        if near is None:
+            self.U = self.model.equilibrium()
+        else:
+            u = rolling.solve(self.model, [near[n] for n in mlgmodel.UNAMES])
+            if u is None:
+                raise RuntimeError(f"no equilibrium found by Newton near the state {near} "
+                                   f"at {values}")
+            self.U = dict(zip(mlgmodel.UNAMES, u))
         self.PAR = self.model.par()
         mlgmodel.register_constants(self.model)
 
