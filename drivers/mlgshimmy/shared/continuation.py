@@ -98,12 +98,14 @@ def periodic_from(rundir: str, name: str, point, parameter: str = "V",
 
 
 def hopf_point(rundir: str, name: str, parameter_set: str, parameter: str, value: float,
-               width: Optional[float] = None, **values: float):
+               width: Optional[float] = None, state=None, **values: float):
     """AUTO's HB solution at the Hopf point near `value` (from a spectrum
     scan): straight rolling continued through a narrow window around it with
-    steps small enough for AUTO's Hopf test."""
+    steps small enough for AUTO's Hopf test (state(value): straight rolling
+    there, as for spectrum.stability_changes)."""
     width = width or 0.01 * max(abs(value), 1.0)
-    start = Start(parameter_set, **{**values, parameter: value - width})
+    start = Start(parameter_set, near=state(value - width) if state else None,
+                  **{**values, parameter: value - width})
     bd = equilibria(rundir, name, start, parameter, stop={parameter: value + width},
                     DS=width / 100, DSMAX=width / 100, NMX=1000, expect=["HB"])
     point = bd("HB1")
