@@ -20,7 +20,6 @@ from mlgshimmy.shared import jobs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import stationary
 
 DEG = draw.DEG
@@ -41,20 +40,24 @@ def runs(parameter_set="figures", where="fig12", variant=0):
     if stationary.symmetric(values) and not found.pitchforks:
         raise autoglue.RunError(f"{where}: straight rolling of the symmetric gear has no "
                                 f"pitchfork (BP) in F* = {F_MIN}-{F_MAX}")
-    # with side-stay angles Newton from psi = 0 misses straight rolling at
-    # light load: the states come from its branch (stationary.rolling_state)
-    state = None if stationary.symmetric(values) else found.rolling_state
-    changes = spectrum.stability_changes(parameter_set, "Fstar",
-                                         numpy.linspace(F_MIN, F_MAX, 1000), state=state, **values)
-    hopf = [v for v, kind, _ in changes if kind == "HB"]
-    orbits = []
-    for k, v in enumerate(hopf):
-        point = ct.hopf_point(rundir, f"hb{k + 1}", parameter_set, "Fstar", v, state=state,
-                              **values)
-        orbits.append(ct.periodic_from(rundir, f"po{k + 1}", point, "Fstar",
-                                       stop={"Fstar": [F_MIN, F_MAX]}, DS=0.002, DSMAX=0.02,
-                                       NMX=3000, **steps))
+    state = rolling_states(found)
+    # the orbits from each Hopf point, across the others (continuation.follow_orbits;
+    # gap in F*: at rho = mu = 10 deg those from H1 collapse at H2, 0.055 above,
+    # and 0.01 before it they have not yet shrunk to SHRUNK of their largest)
+    diagram = ct.speed_diagram(rundir, parameter_set, values, numpy.linspace(F_MIN, F_MAX, 1000),
+                               parameter="Fstar", gap=1e-3, figure=where, state=state, DS=0.002,
+                               DSMAX=0.02, NMX=3000, **steps)
+    hopf = [v for v, _ in diagram.hopf]
+    orbits = diagram.branches
     return found, hopf, orbits
+
+
+def rolling_states(found):
+    """None at the symmetric gear (Newton from psi = 0 finds straight
+    rolling), else the states of its branch (stationary.rolling_state):
+    with side-stay angles Newton from psi = 0 stalls or lands on the
+    other branch at light load."""
+    return None if stationary.symmetric(found.values) else found.rolling_state
 
 
 def stable_from(found, hopf):
@@ -89,21 +92,25 @@ def numbers(found, hopf, orbits):
         out.update({f"pitchfork {k + 1} F*": None for k in range(2)})
         out.update({f"stationary fold F{k + 1} F*": F for k, (F, _, _) in enumerate(found.folds())})
     out.update({f"H{k + 1} F*": f for k, f in enumerate(hopf)})
-    for diagram in orbits:
-        out.update({f"fold {k + 1} F*": p["Fstar"] for k, p in enumerate(diagram("LP"))})
-        out["orbits: lowest F* (turning point)"] = min(min(b["Fstar"]) for b in diagram)
+    folds = [p["Fstar"] for diagram in orbits for p in diagram("LP")]
+    out.update({f"fold {k + 1} F*": f for k, f in enumerate(folds)})
+    if orbits:
+        out["orbits: lowest F* (turning point)"] = min(min(b["Fstar"]) for d in orbits
+                                                       for b in d)
     a12, b12 = bistable_interval(stable_from(found, hopf), hopf, orbits)
     out.update({"a_12": a12, "b_12": b12})
     return out
 
 
-def freeplay_boundary(parameter_set, loads, variant=0):
-    """psi_fp = y_fp / r_tlk(eta*) [rad] along straight rolling."""
+def freeplay_boundary(parameter_set, loads, variant=0, state=None):
+    """psi_fp = y_fp / r_tlk(eta*) [rad] along straight rolling (state(F*):
+    its state, as for runs)."""
     out = []
     for F in loads:
         model = mlgmodel.Model(parameter_set, Fstar=F, strut_variant=variant, **VALUES,
                                **geometry.parameters())
-        out.append(1e-3 * VALUES["yfp"] / model.r_tlk(model.equilibrium()["eta"]))
+        u = state(F) if state else model.equilibrium()
+        out.append(1e-3 * VALUES["yfp"] / model.r_tlk(u["eta"]))
     return numpy.array(out)
 
 
@@ -116,7 +123,8 @@ def compute(name="fig12", variant=0, parameter_set="figures"):
             "folds": [(F, psi) for F, psi, _ in found.folds()],
             "yaw": [jobs.stored(d, COLUMNS) for d in found.yawed],
             "orbits": [jobs.stored(d, COLUMNS) for d in orbits],
-            "boundary": (loads, freeplay_boundary(parameter_set, loads, variant))}
+            "boundary": (loads, freeplay_boundary(parameter_set, loads, variant,
+                                                  rolling_states(found)))}
 
 
 def plot(result):
@@ -129,23 +137,23 @@ def plot(result):
     boundary = boundary * DEG
     amp.plot(loads, boundary, color="0.7", lw=3, zorder=1)
     amp.plot(loads, -boundary, color="0.7", lw=3, zorder=1)
-    # straight rolling at its yaw: 0 at the symmetric gear, off 0 with side-stay angles
-    draw.plot_branch(amp, eq, "Fstar", "psi_mean", scale=DEG)
+    draw.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
     shown = [boundary, -boundary]
-    for diagram in yaw:
+    # with side-stay angles straight rolling is yawed too: drawn as a stationary state
+    for diagram in yaw + ([] if geometry.current().symmetric else [eq]):
         for branch in diagram:
             for xs, ys, stable in branches.segments(branch, "Fstar", "psi_mean"):
                 amp.plot(xs, ys * DEG, **{**draw.style_of(stable), "linestyle": YAW[stable]})
                 shown.append(ys * DEG)
+    names = {ax: iter(f"S{k + 1}" for k in range(100)) for ax in (amp, freq)}
     for diagram in orbits:
         draw.plot_branch(amp, diagram, "Fstar", "psi_amp", scale=DEG)
         draw.plot_branch(freq, diagram, "Fstar", "freq")
         for ax, column, scale in ((amp, "psi_amp", DEG), (freq, "freq", 1.0)):
-            names = iter(f"S{k + 1}" for k in range(100))
             for branch in diagram:
                 for index, _, _ in branches.labelled_points(branch, "LP"):
                     draw.mark(ax, branch["Fstar"][index], branch[column][index] * scale, "LP",
-                              name=next(names))
+                              name=next(names[ax]))
             draw.mark_specials(ax, diagram, "Fstar", column, scale=scale, kinds=("TR",))
         shown += [branch["psi_amp"] * DEG for branch in diagram]
     for k, f in enumerate(pitchforks):
@@ -153,8 +161,7 @@ def plot(result):
     for k, (f, psi) in enumerate(result.get("folds", [])):
         draw.mark(amp, f, psi * DEG, "LPeq", name=f"F{k + 1}")
     for k, f in enumerate(hopf):
-        at = numpy.interp(f, eq[0]["Fstar"], eq[0]["psi_mean"]) * DEG
-        draw.mark(amp, f, at, "HB", name=f"H{k + 1}")
+        draw.mark(amp, f, 0, "HB", name=f"H{k + 1}")
         for diagram in orbits:   # the orbit branch born there starts at its frequency
             start = diagram[0]
             if abs(start["Fstar"][0] - f) < 1e-6 * max(1.0, abs(f)):

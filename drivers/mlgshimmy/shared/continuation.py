@@ -218,14 +218,15 @@ class Diagram:
 
 def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
                   parameter="V", tag="", first=1, gap=0.01, allow_failed=False,
-                  figure="orbits", about=None, **steps):
+                  figure="orbits", about=None, state=None, **steps):
     """The Hopf points of straight rolling along `grid` of `parameter` and
     the periodic orbits born at each, followed across the others
     (follow_orbits) within the grid's range; a Hopf point where an earlier
     branch collapsed starts none (AUTO still locates it).  Runs <tag>hb<k>,
     <tag>po<k>[_<n>], k from
-    `first`; steps: AUTO constants of the orbit runs."""
-    changes = spectrum.stability_changes(parameter_set, parameter, grid, **values)
+    `first`; steps: AUTO constants of the orbit runs; state(value): straight
+    rolling there (spectrum.stability_changes)."""
+    changes = spectrum.stability_changes(parameter_set, parameter, grid, state=state, **values)
     hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]
     bp = [v for v, kind, _ in changes if kind == "BP"]
     parts, names, reached = [], [], set()
@@ -234,11 +235,13 @@ def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
             # no branch starts here, but it is stored as a labelled HB (run
             # <tag>hb<k>) like every Hopf point the diagram's numbers give
             try:
-                hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, **values)
+                hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, state=state,
+                           **values)
             except autoglue.RunError as exc:
                 print(f"{figure}: Hopf point {k} left unstored: {exc.brief}", flush=True)
             continue
-        point = hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, **values)
+        point = hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, state=state,
+                           **values)
 
         def name(n, k=k):
             return f"{tag}po{k}" + (f"_{n}" if n else "")
