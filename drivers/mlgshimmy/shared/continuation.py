@@ -108,7 +108,9 @@ def hopf_point(rundir: str, name: str, parameter_set: str, parameter: str, value
                   **{**values, parameter: value - width})
     bd = equilibria(rundir, name, start, parameter, stop={parameter: value + width},
                     DS=width / 100, DSMAX=width / 100, NMX=1000, expect=["HB"])
-    point = bd("HB1")
+    # the HB nearest the scan's: two Hopf points may share the window
+    # (rho = -10, mu = 20 deg, Fig. 12: F* = 0.6947 and 0.6996)
+    point = min(bd("HB"), key=lambda p: abs(p[parameter] - value))
     if abs(point[parameter] - value) > 1e-4 * max(abs(value), 1.0):
         raise autoglue.RunError(f"run {name}: AUTO's HB at {parameter} = {point[parameter]:.6g}, "
                                 f"the eigenvalue scan's at {value:.6g}")
