@@ -17,6 +17,7 @@ from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
+from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
 
 MODEL = os.path.join(paths.BUILD, "models", "mlg")
@@ -32,12 +33,22 @@ SAME_FREQUENCY = 0.05  # relative: an orbit this close to a Hopf frequency may c
 
 class Start:
     """Parameters of a run and the straight-rolling equilibrium there,
-    validated by the c/ library before AUTO starts."""
+    validated by the c/ library before AUTO starts; near: a state
+    ({name: value}) to solve from instead (Newton, rolling.solve), for the
+    equilibrium near it where there are several (side-stay angles)."""
 
-    def __init__(self, parameter_set: str = "figures", **values: float):
+    def __init__(self, parameter_set: str = "figures", near: Optional[dict] = None,
+                 **values: float):
         self.model = mlgmodel.Model(parameter_set, **values)
         self.model.check()
-        self.U = self.model.equilibrium()
+        if near is None:
+            self.U = self.model.equilibrium()
+        else:
+            u = rolling.solve(self.model, [near[n] for n in mlgmodel.UNAMES])
+            if u is None:
+                raise RuntimeError(f"no equilibrium found by Newton near the state {near} "
+                                   f"at {values}")
+            self.U = dict(zip(mlgmodel.UNAMES, u))
         self.PAR = self.model.par()
         mlgmodel.register_constants(self.model)
 
@@ -87,15 +98,19 @@ def periodic_from(rundir: str, name: str, point, parameter: str = "V",
 
 
 def hopf_point(rundir: str, name: str, parameter_set: str, parameter: str, value: float,
-               width: Optional[float] = None, **values: float):
+               width: Optional[float] = None, state=None, **values: float):
     """AUTO's HB solution at the Hopf point near `value` (from a spectrum
     scan): straight rolling continued through a narrow window around it with
-    steps small enough for AUTO's Hopf test."""
+    steps small enough for AUTO's Hopf test (state(value): straight rolling
+    there, as for spectrum.stability_changes)."""
     width = width or 0.01 * max(abs(value), 1.0)
-    start = Start(parameter_set, **{**values, parameter: value - width})
+    start = Start(parameter_set, near=state(value - width) if state else None,
+                  **{**values, parameter: value - width})
     bd = equilibria(rundir, name, start, parameter, stop={parameter: value + width},
                     DS=width / 100, DSMAX=width / 100, NMX=1000, expect=["HB"])
-    point = bd("HB1")
+    # the HB nearest the scan's: two Hopf points may share the window
+    # (rho = -10, mu = 20 deg, Fig. 12: F* = 0.6947 and 0.6996)
+    point = min(bd("HB"), key=lambda p: abs(p[parameter] - value))
     if abs(point[parameter] - value) > 1e-4 * max(abs(value), 1.0):
         raise autoglue.RunError(f"run {name}: AUTO's HB at {parameter} = {point[parameter]:.6g}, "
                                 f"the eigenvalue scan's at {value:.6g}")
@@ -205,14 +220,15 @@ class Diagram:
 
 def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
                   parameter="V", tag="", first=1, gap=0.01, allow_failed=False,
-                  figure="orbits", about=None, **steps):
+                  figure="orbits", about=None, state=None, **steps):
     """The Hopf points of straight rolling along `grid` of `parameter` and
     the periodic orbits born at each, followed across the others
     (follow_orbits) within the grid's range; a Hopf point where an earlier
     branch collapsed starts none (AUTO still locates it).  Runs <tag>hb<k>,
     <tag>po<k>[_<n>], k from
-    `first`; steps: AUTO constants of the orbit runs."""
-    changes = spectrum.stability_changes(parameter_set, parameter, grid, **values)
+    `first`; steps: AUTO constants of the orbit runs; state(value): straight
+    rolling there (spectrum.stability_changes)."""
+    changes = spectrum.stability_changes(parameter_set, parameter, grid, state=state, **values)
     hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]
     bp = [v for v, kind, _ in changes if kind == "BP"]
     parts, names, reached = [], [], set()
@@ -221,11 +237,13 @@ def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
             # no branch starts here, but it is stored as a labelled HB (run
             # <tag>hb<k>) like every Hopf point the diagram's numbers give
             try:
-                hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, **values)
+                hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, state=state,
+                           **values)
             except autoglue.RunError as exc:
                 print(f"{figure}: Hopf point {k} left unstored: {exc.brief}", flush=True)
             continue
-        point = hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, **values)
+        point = hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, state=state,
+                           **values)
 
         def name(n, k=k):
             return f"{tag}po{k}" + (f"_{n}" if n else "")
