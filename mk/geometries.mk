@@ -4,6 +4,7 @@
 # at eom_terms = 2 with its runs and result.json in $(RUN_ROOT)/design_map/rho<r>_mu<m>/:
 #   make -j2 design-map                         the default 5 x 5 grid, -20:20:10 each
 #   make -j2 design-map DESIGN_RHO=-10,10 DESIGN_MU=0:20:5
+#   make submit-design-map DESIGN_RHO=-20:20:2 DESIGN_MU=-20:20:2   on Slurm (mk/cluster/submit.mk)
 # Then the maps $(RUN_ROOT)/figures/design_map.png, the table
 # $(RUN_ROOT)/tables/design_map.txt and design_map.json.  The map sets its own
 # angles: RHO, MU and EOM do not apply to it.
@@ -14,8 +15,8 @@ ifneq ($(filter design-map,$(MAKECMDGOALS)),)
 MAKECMDGOALS += design_map
 endif
 $(eval $(call py_deps,design_map,studies.design_map))
-$(eval $(call job_grid,design_map,--rho=$(call shell_quote,$(DESIGN_RHO)) \
-    --mu=$(call shell_quote,$(DESIGN_MU)),$$(PYDEPS_design_map) $(MODEL_INPUTS) | auto,point))
+DESIGN_GRID_ARGS = --rho=$(call shell_quote,$(DESIGN_RHO)) --mu=$(call shell_quote,$(DESIGN_MU))
+$(eval $(call job_grid,design_map,$(DESIGN_GRID_ARGS),$$(PYDEPS_design_map) $(MODEL_INPUTS) | auto,point))
 .PHONY: design-map
 design-map: design_map
 
