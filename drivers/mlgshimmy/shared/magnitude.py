@@ -403,13 +403,48 @@ def refined_minimum(evaluate, loads, key, points=None, finer=(10,)):
     return best
 
 
-def kappa_star(evaluate, loads, points=None, finer=(10,)):
+def kappa_star(evaluate, loads, points=None, finer=(10,), also=()):
     """Eq. (17)'s kappa*: the least y_fp/eps at which straight rolling is
     unstable below V_LIMIT, minimised over the loads (refined_minimum of
-    evaluate(F*)["first"], the least unstable y_fp there); (kappa*, the
-    evaluation at the minimum)."""
+    evaluate(F*)["first"], the least unstable y_fp there) and the loads
+    `also` (stage_switch_loads); (kappa*, the evaluation at the minimum)."""
     best = refined_minimum(evaluate, loads, lambda p: p["first"], points, finer)
+    for Fstar in also:
+        point = evaluate(Fstar)
+        if point["first"] < best["first"]:
+            best = point
     return best["first"] / EPSILON, best
+
+
+SWITCH_WIDTHS = 3.0    # the stage switch: eta* within this many 1/k_stage of eta_stage
+SWITCH_LOADS = 5       # loads evaluated across it
+
+
+def stage_switch_loads(loads, parameter_set="figures", **model):
+    """SWITCH_LOADS loads, evenly from where straight rolling's eta* enters
+    the oleo's stage switch to where it leaves it (|eta* - eta_s| up to
+    SWITCH_WIDTHS / k_stage, c/strut.h), within [loads[0], loads[-1]]; []
+    if eta* does not cross it there.  On the switch the spring's local
+    stiffness is steepest (k_stage = 1e5 /m), over a window of F* narrower
+    than an envelope grid's step (F* 0.64-0.68 at rho = mu = 10 deg, where
+    a 19-33 Hz strut-torsion mode is unstable without freeplay), so
+    kappa_star evaluates these loads as well."""
+    constants = mlgmodel.Model(parameter_set, **model)
+    eta_s, width = constants["eta_stage"], SWITCH_WIDTHS / constants["k_stage"]
+
+    def eta(Fstar):
+        return rolling_state(Fstar, 0.0, parameter_set=parameter_set, **model)["eta"]
+    lo, hi = float(loads[0]), float(loads[-1])
+    edges = []
+    for target in (eta_s - width, eta_s + width):
+        below = eta(lo) < target
+        if below == (eta(hi) < target):
+            return []
+        edges.append(spectrum.bisect(lambda F, b=below: (eta(F) < target) == b, lo, hi,
+                                     tol=1e-6))
+    # one load where eta* jumps across the switch at a fold (the printed strut)
+    return [float(F) for F in numpy.unique(numpy.linspace(min(edges), max(edges),
+                                                          SWITCH_LOADS))]
 
 
 def window_points(Fstar, **model):
