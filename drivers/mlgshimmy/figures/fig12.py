@@ -154,7 +154,7 @@ def plot(result):
                 for index, _, _ in branches.labelled_points(branch, "LP"):
                     draw.mark(ax, branch["Fstar"][index], branch[column][index] * scale, "LP",
                               name=next(names[ax]))
-            draw.mark_specials(ax, diagram, "Fstar", column, scale=scale, kinds=("TR",))
+            draw.mark_specials(ax, diagram, "Fstar", column, scale=scale, kinds=("TR", "PD"))
         shown += [branch["psi_amp"] * DEG for branch in diagram]
     for k, f in enumerate(pitchforks):
         draw.mark(amp, f, 0, "BP", name=f"P{k + 1}")

@@ -61,6 +61,8 @@ POINTS = {
              "legend": "fold of stationary states"},
     "TR": {"name": "TR", "marker": "^", "mfc": "white", "ms": 5.0,
            "legend": "torus (Neimark-Sacker) point"},
+    "PD": {"name": "PD", "marker": "v", "mfc": "white", "ms": 5.0,
+           "legend": "period doubling"},
     "change": {"name": "", "marker": "o", "mfc": "white", "ms": 4.5,
                "legend": "stability change AUTO did not label"},
 }
