@@ -111,6 +111,19 @@ def closure(orbits, hopf, column, scale=1.0):
     return None
 
 
+def fold_name(numbers, V):
+    """The table's name of the fold at speed V ("S2", "L1" for the
+    low-frequency fold 1), so that the figure and its table agree; None if
+    the table has none there."""
+    for quantity, value in numbers.items():
+        if value is not None and abs(value - V) <= 1e-9 * max(1.0, abs(V)):
+            if quantity.startswith("S"):
+                return quantity.split()[0]
+            if quantity.startswith("low-frequency fold"):
+                return "L" + quantity.split()[2]
+    return None
+
+
 def plot(result):
     paper.report("fig10", result["numbers"], result["numbers_table"])
     freeplay, zero = result["freeplay"], result["zero"]
@@ -133,8 +146,9 @@ def plot(result):
             draw.plot_branch(ax, orbits, "V", column, scale=scale)
             for branch in orbits:
                 for index, _, _ in branches.labelled_points(branch, "LP"):
-                    draw.mark(ax, branch["V"][index], branch[column][index] * scale, "LP",
-                              name=next(names))
+                    V = branch["V"][index]
+                    draw.mark(ax, V, branch[column][index] * scale, "LP",
+                              name=fold_name(result["numbers"], V) or next(names))
             draw.mark_specials(ax, orbits, "V", column, scale=scale, kinds=("TR",))
             line = closure(orbits, freeplay["hopf"], column, scale)
             if line:
