@@ -4,6 +4,7 @@
 # at eom_terms = 2 with its runs and result.json in $(RUN_ROOT)/design_map/rho<r>_mu<m>/:
 #   make -j2 design-map                         the default 5 x 5 grid, -20:20:10 each
 #   make -j2 design-map DESIGN_RHO=-10,10 DESIGN_MU=0:20:5
+#   make submit-design-map DESIGN_RHO=-20:20:2 DESIGN_MU=-20:20:2   on Slurm (mk/cluster/submit.mk)
 # Then the maps $(RUN_ROOT)/figures/design_map.png, the table
 # $(RUN_ROOT)/tables/design_map.txt and design_map.json.  The map sets its own
 # angles: RHO, MU and EOM do not apply to it.
@@ -14,20 +15,24 @@ ifneq ($(filter design-map,$(MAKECMDGOALS)),)
 MAKECMDGOALS += design_map
 endif
 $(eval $(call py_deps,design_map,studies.design_map))
-$(eval $(call job_grid,design_map,--rho=$(call shell_quote,$(DESIGN_RHO)) \
-    --mu=$(call shell_quote,$(DESIGN_MU)),$$(PYDEPS_design_map) $(MODEL_INPUTS) | auto,point))
+DESIGN_GRID_ARGS = --rho=$(call shell_quote,$(DESIGN_RHO)) --mu=$(call shell_quote,$(DESIGN_MU))
+$(eval $(call job_grid,design_map,$(DESIGN_GRID_ARGS),$$(PYDEPS_design_map) $(MODEL_INPUTS) | auto,point))
 .PHONY: design-map
 design-map: design_map
 
 # Figures at a non-zero side-stay geometry with a regression reference, beside
-# sidestay_rho10_mu10 (mk/studies.mk): `make fig10_rho10_mu10` makes
-# `fig10 RHO=10 MU=10 EOM=2` in its geometry tree and copies its runs to
-# $(RUN_ROOT)/fig10_rho10_mu10/, where `make regress-fig10_rho10_mu10` compares
-# them with tests/reference/fig10_rho10_mu10/ (`make refs-fig10_rho10_mu10`
-# writes that set).
-.PHONY: fig10_rho10_mu10
-fig10_rho10_mu10: $(AUTO_DRIVER_DEPS)
-	$(MAKE) --no-print-directory fig10 RHO=10 MU=10 EOM=2
-	set -e; rm -rf $(RUN_ROOT)/$@.tmp && cp -a $(RUN_ROOT)/geometry/rho10_mu10_eom2/fig10 $(RUN_ROOT)/$@.tmp
-	set -e; rm -rf $(RUN_ROOT)/$@ && mv $(RUN_ROOT)/$@.tmp $(RUN_ROOT)/$@
-REGRESS_FIGURES += fig10_rho10_mu10
+# sidestay_rho10_mu10 (mk/studies.mk): $(call geometry_reference,fig10,10,10)
+# makes the target fig10_rho10_mu10: `fig10 RHO=10 MU=10 EOM=2` in its geometry
+# tree, its runs copied to $(RUN_ROOT)/fig10_rho10_mu10/, where `make
+# regress-fig10_rho10_mu10` compares them with tests/reference/fig10_rho10_mu10/
+# (`make refs-fig10_rho10_mu10` writes that set).
+define geometry_reference
+.PHONY: $(1)_rho$(2)_mu$(3)
+$(1)_rho$(2)_mu$(3): $$(AUTO_DRIVER_DEPS)
+	$$(MAKE) --no-print-directory $(1) RHO=$(2) MU=$(3) EOM=2
+	set -e; rm -rf $$(RUN_ROOT)/$$@.tmp && cp -a $$(RUN_ROOT)/geometry/rho$(2)_mu$(3)_eom2/$(1) $$(RUN_ROOT)/$$@.tmp
+	set -e; rm -rf $$(RUN_ROOT)/$$@ && mv $$(RUN_ROOT)/$$@.tmp $$(RUN_ROOT)/$$@
+REGRESS_FIGURES += $(1)_rho$(2)_mu$(3)
+endef
+$(eval $(call geometry_reference,fig10,10,10))
+$(eval $(call geometry_reference,fig12,10,10))

@@ -244,6 +244,10 @@ def test_the_submit_targets_run_the_package_with_every_value_quoted():
     atlas = make_dry_run("submit-atlas", "ATLAS_V=100,300", "ATLAS_FSTAR=1")
     assert "-m mlgshimmy.studies.atlas jobs --missing --V='100,300' --Fstar='1' | " \
         in atlas.stdout, atlas.stdout + atlas.stderr
+    design = make_dry_run("submit-design-map", "DESIGN_RHO=-20:20:2", "DESIGN_MU=-20:20:2")
+    assert "-m mlgshimmy.studies.design_map jobs --missing --rho='-20:20:2' --mu='-20:20:2' | " \
+        in design.stdout and "--name design_map --stage -" in design.stdout, \
+        design.stdout + design.stderr
     figure = make_dry_run("submit-fig11", "AUTO_THREADS=2")
     assert "set -e; stages=$(/" in figure.stdout and "-m mlgshimmy.figures.fig11 stages)" \
         in figure.stdout, figure.stdout
@@ -255,3 +259,14 @@ def test_the_submit_targets_run_the_package_with_every_value_quoted():
     assert bad.returncode != 0 and "SCHEDULER=pbs must be slurm or parallel" in bad.stderr
     # a bad SCHEDULER in the environment does not stop other targets
     assert make_dry_run("help", "SCHEDULER=pbs").returncode == 0
+
+
+def test_a_21_by_21_design_map_is_441_job_lines(tmp_path):
+    """The cluster-sized design map: one job line per geometry, each naming its point."""
+    listed = subprocess.run([sys.executable, "-m", "mlgshimmy.studies.design_map", "jobs",
+                             "--rho=-20:20:2", "--mu=-20:20:2"], cwd=ROOT, text=True,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=120,
+                            env={**os.environ, "MLG_RUN_ROOT": str(tmp_path)})
+    lines = listed.stdout.splitlines()
+    assert listed.returncode == 0 and len(lines) == 441, listed.stderr
+    assert len(set(lines)) == 441 and all("design_map" in line for line in lines), lines[:2]

@@ -105,3 +105,50 @@ def test_bad_criterion_parameter_rejected_by_name(name, value, what):
     with pytest.raises(ValueError) as error:
         mlgmodel.Model(**{name: value}).check()
     assert f"parameter {name} = {value:g}" in str(error.value), f"{what}: {error.value}"
+
+
+def test_a_band_unstable_at_the_scan_floor_is_followed_to_zero_freeplay():
+    """Printed strut, c_psi = 410 (Table 1), F* = 0.2, V = 90 m/s: the
+    high-frequency mode is unstable already without freeplay, so its first
+    crossing is y_fp = 0 (kappa* = 0), not the scan's first grid point
+    YFP_MIN (what the scan reported before: kappa* = 0.050)."""
+    model = dict(strut_variant=1.0, c_psi=410.0)
+    assert mg.growth(0.2, 0.0, 90.0, **model)["high"] > 0
+    assert mg.yfp_crossings(0.2, 90.0, "high", first_only=True, **model) == [0.0]
+
+
+def test_a_crossing_below_the_scan_floor_is_bisected():
+    """rho = mu = 10 deg, eta_s = 0, F* = 0.16, V = 7.5 m/s: the
+    high-frequency mode turns unstable between zero freeplay and YFP_MIN;
+    the crossing found there has the growth change sign across it
+    (1e-6 relative)."""
+    model = dict(rho=math.radians(10), mu=math.radians(10), eom_terms=2.0, eta_stage=0.0)
+    y, = mg.yfp_crossings(0.16, 7.5, "high", first_only=True, **model)
+    assert 0.0 < y < mg.YFP_MIN
+    assert mg.growth(0.16, y * (1 - 1e-6), 7.5, **model)["high"] < 0
+    assert mg.growth(0.16, y * (1 + 1e-6), 7.5, **model)["high"] > 0
+
+
+def test_the_stage_switch_loads_put_the_strut_on_its_switch():
+    """stage_switch_loads spans the loads where eta* crosses the oleo's stage
+    switch: eta* within 3 / k_stage of eta_s at its ends, below and above
+    eta_s at its ends in turn (default strut, F* about 0.63-0.69)."""
+    loads = mg.stage_switch_loads(criterion.LOADS)
+    model = mlgmodel.Model("figures")
+    eta_s, width = model["eta_stage"], mg.SWITCH_WIDTHS / model["k_stage"]
+    etas = [mg.rolling_state(F, 0.0)["eta"] for F in loads]
+    assert len(loads) == mg.SWITCH_LOADS and 0.6 < loads[0] < loads[-1] < 0.72, loads
+    assert math.isclose(etas[0], eta_s - width, abs_tol=1e-7), etas
+    assert math.isclose(etas[-1], eta_s + width, abs_tol=1e-7), etas
+
+
+def test_on_the_stage_switch_at_side_stay_angles_kappa_is_zero_and_the_switch_decides():
+    """rho = mu = 10 deg, default strut, on the stage switch: straight rolling
+    is unstable without freeplay (kappa* = 0 there, docs/design-map.md);
+    with a switch ten times less steep (k_stage = 1e4 /m) it is not."""
+    geometry = dict(rho=math.radians(10), mu=math.radians(10), eom_terms=2.0)
+    middle = mg.stage_switch_loads(criterion.LOADS, **geometry)[mg.SWITCH_LOADS // 2]
+    assert mg.least_unstable(middle, **geometry)["first"] == 0.0
+    softer = mg.stage_switch_loads(criterion.LOADS, k_stage=1e4, **geometry)
+    # y_fp [mm]: kappa = 0.48 there
+    assert mg.least_unstable(softer[len(softer) // 2], k_stage=1e4, **geometry)["first"] > 0.01

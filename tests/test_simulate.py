@@ -103,9 +103,12 @@ def test_invalid_yfp_rejected_naming_yfp(scratch):
     (["--t-end", "1e20", "--dt-out", "1"], "--t-end"),
     (["--dt-out", "inf"], "--dt-out"),
     (["--t-end", "0.01", "--dt-out", "0.1"], "--dt-out"),
-    (["--t-end", "nan"], "--t-end")])
-def test_invalid_output_window_refused_naming_the_option(scratch, args, option):
-    """(d2) no output window or no steps: exit status 2 naming the option."""
+    (["--t-end", "nan"], "--t-end"),
+    (["--u0", "0,0,0"], "--u0"),
+    (["--u0", "0,0,0,0.3,0,0,0,0,0,nan"], "--u0"),
+    (["--u0", "0,0,0,0.3,0,0,0,0,0,0,0"], "--u0")])
+def test_invalid_window_or_state_refused_naming_the_option(scratch, args, option):
+    """(d2) no output window, no steps, or not a state: exit status 2 naming the option."""
     status, _, _, err = simulate(scratch, "window", *args)
     assert status == 2 and option in err, f"exit status {status}, stderr {err.strip()!r}"
 

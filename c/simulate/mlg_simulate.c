@@ -1,7 +1,7 @@
 /* mlg_simulate: time simulation of the MLG model with SUNDIALS CVODE.
  *
  * Integrates u' = f(u; p) (c/mlg_model.h) from the straight-rolling equilibrium
- * (or the state given by --u0) plus a small perturbation, as in Fig. 8 of Howcroft et al. (section IV.A:
+ * plus a small perturbation, as in Fig. 8 of Howcroft et al. (section IV.A:
  * V = 300 m/s, F* = 0.2, zero freeplay, 15 s from near the unstable
  * equilibrium).  BDF with Newton iterations and a dense linear solver fed by
  * the exact Jacobian mlg_rhs_jacobian.  Writes the samples as CSV and prints
@@ -41,9 +41,9 @@ static const char *const STATE_NAMES[MLG_NX] = {
 typedef struct {
     mlg_params p;
     double t_end, dt_out, rtol, atol, psi0, delta0;
+    double u0[MLG_NX];          /* --u0: the initial state, if has_u0 */
+    int has_u0;
     double max_memory_mb, max_output_mb;    /* budgets (file comment) */
-    double u0[MLG_NX];          /* --u0: the state to start from */
-    int u0_given;
     int lmm;                    /* CV_BDF or CV_ADAMS */
     const char *out;
 } options;
@@ -81,17 +81,15 @@ static void usage(FILE *stream)
         "  --psi0 X              perturbation of psi added to the equilibrium [rad]\n"
         "                        (default 1e-3)\n"
         "  --delta0 X            perturbation of delta [rad] (default 0)\n"
-        "  --u0 X,X,...          the state to perturb instead of the equilibrium that\n"
-        "                        Newton finds from psi = 0 (which at side-stay angles\n"
-        "                        may fail or be another stationary state): all %d\n"
-        "                        values, in the order psi delta beta eta psi_dot\n"
-        "                        delta_dot beta_dot eta_dot lambda_L lambda_R\n"
+        "  --u0 X,X,...          the initial state itself, all 10 states in the CSV's\n"
+        "                        order (e.g. a point of an AUTO orbit), instead of the\n"
+        "                        equilibrium; --psi0 and --delta0 default to 0 then\n"
         "  --out FILE            CSV output (default: none)\n"
         "  --max-memory MB       memory budget of the last second's samples (default\n"
         "                        1024, or MLG_SIMULATE_MAX_MEMORY_MB): a run needing more\n"
         "                        (88 bytes a sample) is refused before it starts\n"
         "  --max-output MB       size budget of the --out CSV (default 1024, or\n"
-        "                        MLG_SIMULATE_MAX_OUTPUT_MB; at most 280 bytes a sample)\n", MLG_NX);
+        "                        MLG_SIMULATE_MAX_OUTPUT_MB; at most 280 bytes a sample)\n");
 }
 
 static double parse_number(const char *option, const char *text)
@@ -104,6 +102,25 @@ static double parse_number(const char *option, const char *text)
         exit(2);
     }
     return value;
+}
+
+/* --u0 X,X,...: exactly MLG_NX finite numbers separated by commas */
+static void parse_state(const char *option, const char *text, double u[MLG_NX])
+{
+    const char *at = text;
+    for (int i = 0; i < MLG_NX; i++) {
+        char *end;
+        errno = 0;
+        u[i] = strtod(at, &end);
+        int last = i == MLG_NX - 1;
+        if (errno != 0 || end == at || !isfinite(u[i]) || *end != (last ? '\0' : ',')) {
+            fprintf(stderr, "mlg_simulate: %s needs %d finite numbers separated by commas "
+                            "(%s, ..., %s), got '%s'\n", option, MLG_NX, STATE_NAMES[0],
+                    STATE_NAMES[MLG_NX - 1], text);
+            exit(2);
+        }
+        at = end + 1;
+    }
 }
 
 /* --param NAME=VALUE: any field of mlg_params, by name; returns the field */
@@ -125,24 +142,6 @@ static double *set_named(mlg_params *p, const char *arg)
     }
     *ref = parse_number("--param", eq + 1);
     return ref;
-}
-
-/* --u0: MLG_NX comma-separated numbers into u */
-static void parse_state(const char *text, double u[MLG_NX])
-{
-    const char *at = text;
-    for (int i = 0; i < MLG_NX; i++) {
-        char *end;
-        errno = 0;
-        u[i] = strtod(at, &end);
-        char want = i + 1 < MLG_NX ? ',' : '\0';
-        if (errno != 0 || end == at || *end != want || !isfinite(u[i])) {
-            fprintf(stderr, "mlg_simulate: --u0 needs %d finite numbers separated by commas "
-                            "(%s first), got '%s'\n", MLG_NX, STATE_NAMES[0], text);
-            exit(2);
-        }
-        at = end + 1;
-    }
 }
 
 /* Stop with exit status 2 and a message naming the option. */
@@ -203,7 +202,7 @@ static options parse_options(int argc, char **argv)
     o.p = mlg_params_figures();
     o.p.V = 300.0;
     o.p.Fstar = 0.2;
-    int eps_abs_given = 0, eps_rel_given = 0;
+    int eps_abs_given = 0, eps_rel_given = 0, psi0_given = 0, delta0_given = 0;
 
     for (int k = 1; k < argc; k++) {
         const char *opt = argv[k];
@@ -259,11 +258,17 @@ static options parse_options(int argc, char **argv)
         else if (strcmp(opt, "--dt-out") == 0) o.dt_out = parse_number(opt, arg);
         else if (strcmp(opt, "--rtol") == 0) o.rtol = parse_number(opt, arg);
         else if (strcmp(opt, "--atol") == 0) o.atol = parse_number(opt, arg);
-        else if (strcmp(opt, "--psi0") == 0) o.psi0 = parse_number(opt, arg);
-        else if (strcmp(opt, "--delta0") == 0) o.delta0 = parse_number(opt, arg);
+        else if (strcmp(opt, "--psi0") == 0) {
+            o.psi0 = parse_number(opt, arg);
+            psi0_given = 1;
+        }
+        else if (strcmp(opt, "--delta0") == 0) {
+            o.delta0 = parse_number(opt, arg);
+            delta0_given = 1;
+        }
         else if (strcmp(opt, "--u0") == 0) {
-            parse_state(arg, o.u0);
-            o.u0_given = 1;
+            parse_state(opt, arg, o.u0);
+            o.has_u0 = 1;
         }
         else if (strcmp(opt, "--out") == 0) o.out = arg;
         else if (strcmp(opt, "--max-memory") == 0) o.max_memory_mb = parse_budget(opt, arg);
@@ -275,6 +280,9 @@ static options parse_options(int argc, char **argv)
         }
     }
 
+    /* a given initial state is perturbed only as asked */
+    if (o.has_u0 && !psi0_given) o.psi0 = 0.0;
+    if (o.has_u0 && !delta0_given) o.delta0 = 0.0;
     /* epsilon is what was given: one part alone sets the other to 0 */
     if (eps_abs_given && !eps_rel_given) o.p.eps_rel = 0.0;
     if (eps_rel_given && !eps_abs_given) o.p.eps_abs = 0.0;
@@ -454,18 +462,19 @@ int main(int argc, char **argv)
     options o = parse_options(argc, argv);
 
     double u0[MLG_NX];
-    int eq = 0;
-    if (o.u0_given)
+    if (o.has_u0) {
         memcpy(u0, o.u0, sizeof u0);
-    else
-        eq = mlg_equilibrium(&o.p, 0.0, u0);
-    if (eq != 0) {
-        fprintf(stderr, "mlg_simulate: no straight-rolling equilibrium at V = %g, F* = %g "
-                        "(code %d: %s)\n", o.p.V, o.p.Fstar, eq,
-                eq > 0 ? mlg_status_text(eq) : "Newton did not converge");
-        return 1;
+    } else {
+        int eq = mlg_equilibrium(&o.p, 0.0, u0);
+        if (eq != 0) {
+            fprintf(stderr, "mlg_simulate: no straight-rolling equilibrium at V = %g, F* = %g "
+                            "(code %d: %s)\n", o.p.V, o.p.Fstar, eq,
+                    eq > 0 ? mlg_status_text(eq) : "Newton did not converge");
+            return 1;
+        }
+        printf("equilibrium_beta_rad %.10e\nequilibrium_eta_m %.10e\n", u0[MLG_BETA],
+               u0[MLG_ETA]);
     }
-    printf("equilibrium_beta_rad %.10e\nequilibrium_eta_m %.10e\n", u0[MLG_BETA], u0[MLG_ETA]);
     u0[MLG_PSI] += o.psi0;
     u0[MLG_DELTA] += o.delta0;
 

@@ -6,6 +6,7 @@
 #                                                   then `make <fig>` assembles and draws
 #   make submit-sweep [SWEEP_RHO=... SWEEP_MU=...]  the side-stay sweep, then its summary
 #   make submit-atlas [ATLAS_V=... ATLAS_FSTAR=...] the atlas, then its summary
+#   make submit-design-map [DESIGN_RHO=... DESIGN_MU=...]  the design map, then its summary
 #
 #   SUBMIT_ARGS     options of the submit command (--per-task 50, --throttle 20,
 #                   --jobs 8 for parallel, --env VAR=VALUE, --dry-run)
@@ -45,7 +46,7 @@ SUBMIT_PREREQUISITES := setup $(MLG_MODEL).exe $(MLG_SHARED) $(MLG_SIMULATE)
 SUBMIT_PY = PYTHONPATH=$(call shell_quote,$(CURDIR)/drivers) $(PYTHON)
 SUBMIT_MAKE = make --no-print-directory AUTO_THREADS=$(AUTO_THREADS)
 
-.PHONY: $(addprefix submit-,$(FIGURES_WITH_PARTS)) submit-sweep submit-atlas
+.PHONY: $(addprefix submit-,$(FIGURES_WITH_PARTS)) submit-sweep submit-atlas submit-design-map
 # the figure says how many stages it has (`stages`), so an empty `jobs --missing`
 # stage does not end the list
 $(addprefix submit-,$(FIGURES_WITH_PARTS)): submit-%: $(SUBMIT_PREREQUISITES)
@@ -55,18 +56,17 @@ $(addprefix submit-,$(FIGURES_WITH_PARTS)): submit-%: $(SUBMIT_PREREQUISITES)
 	    --assemble $(call shell_quote,$(SUBMIT_MAKE) $*) $(SUBMIT_AFTER)
 
 SWEEP_GRID_ARGS = --rho=$(call shell_quote,$(SWEEP_RHO)) --mu=$(call shell_quote,$(SWEEP_MU))
-submit-sweep: $(SUBMIT_PREREQUISITES)
-	$(PYTHON) -m mlgshimmy.studies.sweep check $(SWEEP_GRID_ARGS)
+# submit-<target>: a job grid (shared.jobs.grid) of the study <module>, its axes in the
+# variable <args> (expanded when the recipe runs): its points in one stage, then its summary
+define submit_grid
+submit-$(1): $$(SUBMIT_PREREQUISITES)
+	$$(PYTHON) -m mlgshimmy.studies.$(2) check $$($(3))
 	set -eo pipefail; \
-	$(PYTHON) -m mlgshimmy.studies.sweep jobs $(SUBMIT_MISSING) $(SWEEP_GRID_ARGS) | $(SUBMIT) \
-	    --name sweep --stage - \
-	    --assemble $(call shell_quote,$(SUBMIT_PY) -m mlgshimmy.studies.sweep summary $(SWEEP_GRID_ARGS)) \
-	    $(SUBMIT_AFTER)
-
-submit-atlas: $(SUBMIT_PREREQUISITES)
-	$(PYTHON) -m mlgshimmy.studies.atlas check $(ATLAS_ARGS)
-	set -eo pipefail; \
-	$(PYTHON) -m mlgshimmy.studies.atlas jobs $(SUBMIT_MISSING) $(ATLAS_ARGS) | $(SUBMIT) \
-	    --name atlas --stage - \
-	    --assemble $(call shell_quote,$(SUBMIT_PY) -m mlgshimmy.studies.atlas summary $(ATLAS_ARGS)) \
-	    $(SUBMIT_AFTER)
+	$$(PYTHON) -m mlgshimmy.studies.$(2) jobs $$(SUBMIT_MISSING) $$($(3)) | $$(SUBMIT) \
+	    --name $(2) --stage - \
+	    --assemble $$(call shell_quote,$$(SUBMIT_PY) -m mlgshimmy.studies.$(2) summary $$($(3))) \
+	    $$(SUBMIT_AFTER)
+endef
+$(eval $(call submit_grid,sweep,sweep,SWEEP_GRID_ARGS))
+$(eval $(call submit_grid,atlas,atlas,ATLAS_ARGS))
+$(eval $(call submit_grid,design-map,design_map,DESIGN_GRID_ARGS))

@@ -31,7 +31,8 @@ def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
     eq = ct.equilibria(rundir, "eq", start, stop={"V": V_MAX})
     return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID,
                                 allow_failed=allow_failed or not geometry.current().baseline,
-                                figure="fig10", DS=0.05, DSMAX=1.0, NMX=2000, **steps())
+                                figure="fig10", **{"DS": 0.05, "DSMAX": 1.0, "NMX": 2000,
+                                                   **steps()})
 
 
 def steps():
@@ -40,8 +41,11 @@ def steps():
     orbits fold sharply (four folds between H1 and H2 at rho = mu = 10 deg)
     where they first reach its edge on one side: steps down to 1e-9 (AUTO's
     default DSMIN 1e-5 stops there, MX).  A run that still ends in MX is
-    kept up to there and named in the table (numbers)."""
-    return {} if geometry.current().baseline else {"DSMIN": 1e-9}
+    kept up to there and named in the table (numbers).  The first step is
+    smaller, 0.005: a Hopf point can be nearly degenerate there (at
+    rho = -10, mu = 20 deg H1's orbits grow by 1e-5 rad over 0.02 m/s), and
+    a first step of 0.05 lands 6.8 m/s along the branch."""
+    return {} if geometry.current().baseline else {"DSMIN": 1e-9, "DS": 0.005}
 
 
 def numbers(diagram):
@@ -107,6 +111,19 @@ def closure(orbits, hopf, column, scale=1.0):
     return None
 
 
+def fold_name(numbers, V):
+    """The table's name of the fold at speed V ("S2", "L1" for the
+    low-frequency fold 1), so that the figure and its table agree; None if
+    the table has none there."""
+    for quantity, value in numbers.items():
+        if value is not None and abs(value - V) <= 1e-9 * max(1.0, abs(V)):
+            if quantity.startswith("S"):
+                return quantity.split()[0]
+            if quantity.startswith("low-frequency fold"):
+                return "L" + quantity.split()[2]
+    return None
+
+
 def plot(result):
     paper.report("fig10", result["numbers"], result["numbers_table"])
     freeplay, zero = result["freeplay"], result["zero"]
@@ -129,8 +146,9 @@ def plot(result):
             draw.plot_branch(ax, orbits, "V", column, scale=scale)
             for branch in orbits:
                 for index, _, _ in branches.labelled_points(branch, "LP"):
-                    draw.mark(ax, branch["V"][index], branch[column][index] * scale, "LP",
-                              name=next(names))
+                    V = branch["V"][index]
+                    draw.mark(ax, V, branch[column][index] * scale, "LP",
+                              name=fold_name(result["numbers"], V) or next(names))
             draw.mark_specials(ax, orbits, "V", column, scale=scale, kinds=("TR",))
             line = closure(orbits, freeplay["hopf"], column, scale)
             if line:

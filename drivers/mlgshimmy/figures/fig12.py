@@ -11,6 +11,7 @@ import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 import numpy
 
+from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
@@ -19,7 +20,7 @@ from mlgshimmy.shared import jobs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import spectrum
+from mlgshimmy.shared import stationary
 
 DEG = draw.DEG
 COLUMNS = ("Fstar", "psi_amp", "psi_mean", "freq")
@@ -28,45 +29,53 @@ VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
 
 
 def runs(parameter_set="figures", where="fig12", variant=0):
-    """(straight rolling, pitchfork loads, yaw branches, Hopf loads, orbit runs)."""
+    """(stationary states, Hopf loads, orbit runs)."""
     rundir = paths.rundir(where)
     values = {**VALUES, "strut_variant": float(variant), **geometry.parameters()}
     # The printed strut (variant 1) folds straight rolling twice in F* while
     # eta crosses its 1e-5 m stage switch (F* 0.63-0.70): steps must shrink
     # below AUTO's default DSMIN of 1e-5 there (constants/runs/c.stage_switch).
     steps = {"overlay": "stage_switch"} if variant else {}
-    start = ct.Start(parameter_set, Fstar=F_MIN, **values)
-    # MXBF = 0: the stationary yaw branches are computed explicitly below
-    eq = ct.equilibria(rundir, "eq", start, "Fstar", stop={"Fstar": F_MAX}, DS=0.002,
-                       DSMAX=0.01, MXBF=0, NMX=5000, expect=["BP"], **steps)
-    changes = spectrum.stability_changes(parameter_set, "Fstar",
-                                         numpy.linspace(F_MIN, F_MAX, 1000), **values)
-    pitchforks = [p["Fstar"] for p in eq("BP")]
-    yaw = []
-    for k, point in enumerate(eq("BP")[:1]):
-        # from the first pitchfork to the second, both signs of psi
-        for sign in (1, -1):
-            yaw.append(ct.run(rundir, f"yaw{'pm'[sign < 0]}", "equilibria", data=point, ISW=-1,
-                              ICP=["Fstar"] + mlgmodel.MEASURES, DS=0.001 * sign, DSMAX=0.005,
-                              NMX=3000, MXBF=0,
-                              UZSTOP={"Fstar": [F_MIN, F_MAX, pitchforks[-1] + 1e-3]}))
-    hopf = [v for v, kind, _ in changes if kind == "HB"]
-    orbits = []
-    for k, v in enumerate(hopf):
-        point = ct.hopf_point(rundir, f"hb{k + 1}", parameter_set, "Fstar", v, **values)
-        orbits.append(ct.periodic_from(rundir, f"po{k + 1}", point, "Fstar",
-                                       stop={"Fstar": [F_MIN, F_MAX]}, DS=0.002, DSMAX=0.02,
-                                       NMX=3000, **steps))
-    return eq, pitchforks, yaw, hopf, orbits
+    found = stationary.states(rundir, parameter_set, (F_MIN, F_MAX), steps, **values)
+    if stationary.symmetric(values) and not found.pitchforks:
+        raise autoglue.RunError(f"{where}: straight rolling of the symmetric gear has no "
+                                f"pitchfork (BP) in F* = {F_MIN}-{F_MAX}")
+    state = rolling_states(found)
+    # the orbits from each Hopf point, across the others (continuation.follow_orbits;
+    # gap in F*: at rho = mu = 10 deg those from H1 collapse at H2, 0.055 above,
+    # and 0.01 before it they have not yet shrunk to SHRUNK of their largest)
+    diagram = ct.speed_diagram(rundir, parameter_set, values, numpy.linspace(F_MIN, F_MAX, 1000),
+                               parameter="Fstar", gap=1e-3, figure=where, state=state, DS=0.002,
+                               DSMAX=0.02, NMX=3000, **steps)
+    hopf = [v for v, _ in diagram.hopf]
+    orbits = diagram.branches
+    return found, hopf, orbits
 
 
-def bistable_interval(pitchforks, hopf, orbits):
-    """(a_12, b_12): the loads where straight rolling is stable (between the
-    last pitchfork and the Hopf point) and a stable orbit coexists with it,
+def rolling_states(found):
+    """None at the symmetric gear (Newton from psi = 0 finds straight
+    rolling), else the states of its branch (stationary.rolling_state):
+    with side-stay angles Newton from psi = 0 stalls or lands on the
+    other branch at light load."""
+    return None if stationary.symmetric(found.values) else found.rolling_state
+
+
+def stable_from(found, hopf):
+    """The load from which straight rolling is stable up to the first Hopf
+    point: its last pitchfork (symmetric gear) or fold below it, else the
+    lowest load (with side-stay angles the branch from light load is the
+    smooth side of the imperfect pitchforks and stays stable)."""
+    below = [F for F, _, d in found.folds() if d is found.straight and F < hopf[0]]
+    return max(found.pitchforks + below, default=F_MIN)
+
+
+def bistable_interval(lower, hopf, orbits):
+    """(a_12, b_12): the loads where straight rolling is stable (from
+    `lower` to the Hopf point) and a stable orbit coexists with it,
     separated from it by unstable orbits.  The orbit branch leaves the Hopf
     point stable (low frequency); the stable orbits that coexist with stable
     straight rolling are on its later stable segments."""
-    lower, upper = pitchforks[-1], hopf[0]
+    upper = hopf[0]
     pieces = [piece for diagram in orbits for branch in diagram
               for piece in branches.segments(branch, "Fstar", "psi_amp")]
     coexisting = [min(xs) for xs, _, stable in pieces[1:] if stable]
@@ -76,37 +85,46 @@ def bistable_interval(pitchforks, hopf, orbits):
     return max(lower, min(coexisting)), min(upper, max(separating))
 
 
-def numbers(eq, pitchforks, yaw, hopf, orbits):
-    out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(pitchforks)}
+def numbers(found, hopf, orbits):
+    out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(found.pitchforks)}
+    if not geometry.current().symmetric:
+        # the baseline's pitchforks (its column) beside the folds they became
+        out.update({f"pitchfork {k + 1} F*": None for k in range(2)})
+        out.update({f"stationary fold F{k + 1} F*": F for k, (F, _, _) in enumerate(found.folds())})
     out.update({f"H{k + 1} F*": f for k, f in enumerate(hopf)})
-    for diagram in orbits:
-        out.update({f"fold {k + 1} F*": p["Fstar"] for k, p in enumerate(diagram("LP"))})
-        out["orbits: lowest F* (turning point)"] = min(min(b["Fstar"]) for b in diagram)
-    a12, b12 = bistable_interval(pitchforks, hopf, orbits)
+    folds = [p["Fstar"] for diagram in orbits for p in diagram("LP")]
+    out.update({f"fold {k + 1} F*": f for k, f in enumerate(folds)})
+    if orbits:
+        out["orbits: lowest F* (turning point)"] = min(min(b["Fstar"]) for d in orbits
+                                                       for b in d)
+    a12, b12 = bistable_interval(stable_from(found, hopf), hopf, orbits)
     out.update({"a_12": a12, "b_12": b12})
     return out
 
 
-def freeplay_boundary(parameter_set, loads, variant=0):
-    """psi_fp = y_fp / r_tlk(eta*) [rad] along straight rolling."""
+def freeplay_boundary(parameter_set, loads, variant=0, state=None):
+    """psi_fp = y_fp / r_tlk(eta*) [rad] along straight rolling (state(F*):
+    its state, as for runs)."""
     out = []
     for F in loads:
         model = mlgmodel.Model(parameter_set, Fstar=F, strut_variant=variant, **VALUES,
                                **geometry.parameters())
-        out.append(1e-3 * VALUES["yfp"] / model.r_tlk(model.equilibrium()["eta"]))
+        u = state(F) if state else model.equilibrium()
+        out.append(1e-3 * VALUES["yfp"] / model.r_tlk(u["eta"]))
     return numpy.array(out)
 
 
 def compute(name="fig12", variant=0, parameter_set="figures"):
-    found = runs(parameter_set, name, variant)
-    eq, pitchforks, yaw, hopf, orbits = found
+    found, hopf, orbits = runs(parameter_set, name, variant)
     loads = numpy.linspace(F_MIN, F_MAX, 200)
-    return {"name": name, "variant": variant, "numbers": numbers(*found),
-            "eq": jobs.stored(eq, COLUMNS),
-            "pitchforks": pitchforks, "hopf": hopf,
-            "yaw": [jobs.stored(d, COLUMNS) for d in yaw],
+    return {"name": name, "variant": variant, "numbers": numbers(found, hopf, orbits),
+            "eq": jobs.stored(found.straight, COLUMNS),
+            "pitchforks": found.pitchforks, "hopf": hopf,
+            "folds": [(F, psi) for F, psi, _ in found.folds()],
+            "yaw": [jobs.stored(d, COLUMNS) for d in found.yawed],
             "orbits": [jobs.stored(d, COLUMNS) for d in orbits],
-            "boundary": (loads, freeplay_boundary(parameter_set, loads, variant))}
+            "boundary": (loads, freeplay_boundary(parameter_set, loads, variant,
+                                                  rolling_states(found)))}
 
 
 def plot(result):
@@ -121,24 +139,27 @@ def plot(result):
     amp.plot(loads, -boundary, color="0.7", lw=3, zorder=1)
     draw.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
     shown = [boundary, -boundary]
-    for diagram in yaw:
+    # with side-stay angles straight rolling is yawed too: drawn as a stationary state
+    for diagram in yaw + ([] if geometry.current().symmetric else [eq]):
         for branch in diagram:
             for xs, ys, stable in branches.segments(branch, "Fstar", "psi_mean"):
                 amp.plot(xs, ys * DEG, **{**draw.style_of(stable), "linestyle": YAW[stable]})
                 shown.append(ys * DEG)
+    names = {ax: iter(f"S{k + 1}" for k in range(100)) for ax in (amp, freq)}
     for diagram in orbits:
         draw.plot_branch(amp, diagram, "Fstar", "psi_amp", scale=DEG)
         draw.plot_branch(freq, diagram, "Fstar", "freq")
         for ax, column, scale in ((amp, "psi_amp", DEG), (freq, "freq", 1.0)):
-            names = iter(f"S{k + 1}" for k in range(100))
             for branch in diagram:
                 for index, _, _ in branches.labelled_points(branch, "LP"):
                     draw.mark(ax, branch["Fstar"][index], branch[column][index] * scale, "LP",
-                              name=next(names))
-            draw.mark_specials(ax, diagram, "Fstar", column, scale=scale, kinds=("TR",))
+                              name=next(names[ax]))
+            draw.mark_specials(ax, diagram, "Fstar", column, scale=scale, kinds=("TR", "PD"))
         shown += [branch["psi_amp"] * DEG for branch in diagram]
     for k, f in enumerate(pitchforks):
         draw.mark(amp, f, 0, "BP", name=f"P{k + 1}")
+    for k, (f, psi) in enumerate(result.get("folds", [])):
+        draw.mark(amp, f, psi * DEG, "LPeq", name=f"F{k + 1}")
     for k, f in enumerate(hopf):
         draw.mark(amp, f, 0, "HB", name=f"H{k + 1}")
         for diagram in orbits:   # the orbit branch born there starts at its frequency

@@ -18,17 +18,34 @@ from mlgshimmy.shared.draw import magnitude as draw_magnitude
 FREEPLAYS = freeplay.FIG13_FREEPLAYS
 COLOURS = draw.sequence(len(FREEPLAYS))
 FIT_RANGE = (0.05, 2.0)   # y_fp range of the linear fits [mm]
+ORBITS_FROM = 1.0         # y_fp [mm] the orbits at fixed V are continued from
 
 
 def parts():
     """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one),
     each in its own run directory build/fig13/<part>/."""
-    return mg.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=1.0, **geometry.parameters())
+    return mg.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=ORBITS_FROM,
+                           **geometry.parameters())
 
 
 def compute(parts):
     diagrams, orbits = mg.diagrams_of(parts.all())
     return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits}
+
+
+def stable_piece(stable, start):
+    """A mask of the stable points of an orbit curve (ordered) next to each
+    other around index `start` (none if that point is unstable)."""
+    mask = numpy.zeros(len(stable), dtype=bool)
+    if not stable[start]:
+        return mask
+    lo, hi = start, start
+    while lo > 0 and stable[lo - 1]:
+        lo -= 1
+    while hi < len(stable) - 1 and stable[hi + 1]:
+        hi += 1
+    mask[lo:hi + 1] = True
+    return mask
 
 
 def numbers(diagrams, orbits):
@@ -41,7 +58,15 @@ def numbers(diagrams, orbits):
                                                                     "stable"))
         inside = (ys >= FIT_RANGE[0]) & (ys <= FIT_RANGE[1])
         if not stable[inside].all():
-            raise autoglue.RunError(f"fig13: orbit at V = {V:g} loses stability in y_fp")
+            # side-stay angles break the scaling with y_fp (the links' static
+            # offset does not scale): fit the stable orbits continued from the start
+            piece = stable_piece(stable, int(numpy.argmin(numpy.abs(ys - ORBITS_FROM))))
+            if not piece.any():
+                raise autoglue.RunError(f"fig13: the orbit at V = {V:g} is unstable where it "
+                                        f"starts, y_fp = {ORBITS_FROM:g} mm")
+            inside &= piece
+            out[f"V = {V:g}: stable from y_fp [mm]"] = ys[piece].min()
+            out[f"V = {V:g}: stable up to y_fp [mm]"] = ys[piece].max()
         s0, residual, _, c = mg.linear_fit(ys[inside], amp[inside])
         out[f"V = {V:g}: psi_amp/y_fp [rad/mm]"] = s0
         out[f"V = {V:g}: largest rel. residual"] = residual

@@ -17,7 +17,10 @@ SPAN = 3.0
 
 def rescaled(kappa, x):
     """Eq. (15) rescaled (x* = y_tlk/y_fp, y* = M_kpsi/(r_tlk k_tlk y_fp)) for
-    y_fp/eps = kappa: the profile of y_fp = 1 mm, eps = 1/kappa mm."""
+    y_fp/eps = kappa: the profile of y_fp = 1 mm, eps = 1/kappa mm; kappa = 0
+    (no freeplay allowed) is its eps -> infinity limit y* = x*."""
+    if kappa == 0:
+        return numpy.array(x, dtype=float)
     return numpy.array([mlgmodel.torque_link_force(1.0, 1e-3 * v, 1e-3, 1e-3 / kappa) / 1e-3
                         for v in x])
 
@@ -34,8 +37,9 @@ def main():
     x = numpy.linspace(-SPAN, SPAN, 601)
     limit, printed = rescaled(kappa, x), rescaled(kappa_printed, x)
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    ax.fill_between(x, printed, x, color="tab:cyan", alpha=0.4,
-                    label=rf"allowed by both: $y_{{fp}}/\epsilon < {kappa_printed:.3f}$")
+    both = (rf"$y_{{fp}}/\epsilon < {kappa_printed:.3f}$" if kappa_printed > 0
+            else r"none ($\kappa^*$ = 0: unstable without freeplay)")
+    ax.fill_between(x, printed, x, color="tab:cyan", alpha=0.4, label=f"allowed by both: {both}")
     ax.fill_between(x, limit, printed, color="khaki", alpha=0.6,
                     label=rf"allowed by variant 0 only: ${kappa_printed:.3f} \leq "
                           rf"y_{{fp}}/\epsilon < {kappa:.3f}$")

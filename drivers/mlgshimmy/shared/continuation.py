@@ -17,6 +17,7 @@ from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
+from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
 
 MODEL = os.path.join(paths.BUILD, "models", "mlg")
@@ -28,16 +29,27 @@ SPEED_SCAN = numpy.linspace(V_MIN, V_MAX, 3000)   # the eigenvalue scan of strai
 COLLAPSED = 1e-8      # rad: an orbit with a smaller psi amplitude is straight rolling
 SHRUNK = 0.3          # an orbit below this part of its branch's largest amplitude has shrunk
 SAME_FREQUENCY = 0.05  # relative: an orbit this close to a Hopf frequency may collapse there
+COLLAPSING = 0.01     # a least amplitude below this part of the branch's largest: collapsed
 
 
 class Start:
     """Parameters of a run and the straight-rolling equilibrium there,
-    validated by the c/ library before AUTO starts."""
+    validated by the c/ library before AUTO starts; near: a state
+    ({name: value}) to solve from instead (Newton, rolling.solve), for the
+    equilibrium near it where there are several (side-stay angles)."""
 
-    def __init__(self, parameter_set: str = "figures", **values: float):
+    def __init__(self, parameter_set: str = "figures", near: Optional[dict] = None,
+                 **values: float):
         self.model = mlgmodel.Model(parameter_set, **values)
         self.model.check()
-        self.U = self.model.equilibrium()
+        if near is None:
+            self.U = self.model.equilibrium()
+        else:
+            u = rolling.solve(self.model, [near[n] for n in mlgmodel.UNAMES])
+            if u is None:
+                raise RuntimeError(f"no equilibrium found by Newton near the state {near} "
+                                   f"at {values}")
+            self.U = dict(zip(mlgmodel.UNAMES, u))
         self.PAR = self.model.par()
         mlgmodel.register_constants(self.model)
 
@@ -87,15 +99,19 @@ def periodic_from(rundir: str, name: str, point, parameter: str = "V",
 
 
 def hopf_point(rundir: str, name: str, parameter_set: str, parameter: str, value: float,
-               width: Optional[float] = None, **values: float):
+               width: Optional[float] = None, state=None, **values: float):
     """AUTO's HB solution at the Hopf point near `value` (from a spectrum
     scan): straight rolling continued through a narrow window around it with
-    steps small enough for AUTO's Hopf test."""
+    steps small enough for AUTO's Hopf test (state(value): straight rolling
+    there, as for spectrum.stability_changes)."""
     width = width or 0.01 * max(abs(value), 1.0)
-    start = Start(parameter_set, **{**values, parameter: value - width})
+    start = Start(parameter_set, near=state(value - width) if state else None,
+                  **{**values, parameter: value - width})
     bd = equilibria(rundir, name, start, parameter, stop={parameter: value + width},
                     DS=width / 100, DSMAX=width / 100, NMX=1000, expect=["HB"])
-    point = bd("HB1")
+    # the HB nearest the scan's: two Hopf points may share the window
+    # (rho = -10, mu = 20 deg, Fig. 12: F* = 0.6947 and 0.6996)
+    point = min(bd("HB"), key=lambda p: abs(p[parameter] - value))
     if abs(point[parameter] - value) > 1e-4 * max(abs(value), 1.0):
         raise autoglue.RunError(f"run {name}: AUTO's HB at {parameter} = {point[parameter]:.6g}, "
                                 f"the eigenvalue scan's at {value:.6g}")
@@ -124,10 +140,13 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
     amplitude has shrunk (below SHRUNK of the branch's largest amplitude)
     and has h's frequency (within SAME_FREQUENCY); it ends there.  Otherwise
     it only passes h and is continued past it from the stop, as a further
-    run.  names(n) names the n-th run.  With allow_failed a run ending in MX
-    is kept up to the MX and a run that fails is reported and the branch
-    ends; else RunError.  A step longer than 2 DSMAX in the parameter raises
-    RunError (AUTO switched to another branch).
+    run.  A run whose orbits reach straight rolling at a Hopf point before
+    its end (one passed before: collapse_within) is run again up to there,
+    and the branch ends there.  names(n) names the n-th run.  With
+    allow_failed a run ending in MX is kept up to the MX and a run that
+    fails is reported and the branch ends; else RunError.  A step longer
+    than 2 DSMAX in the parameter raises RunError (AUTO switched to another
+    branch).
     Returns (runs, {h: True if the branch collapsed there})."""
     runs, left, ends, origin = [], dict(hopf), {}, start
     while origin is not None:
@@ -141,6 +160,21 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
                 raise
             print(f"{figure}: orbits {name} left out: {exc.brief}", flush=True)
             break
+        before = max((numpy.max(r[0]["psi_amp"]) for r in runs), default=0.0)
+        inside = collapse_within(orbits[0], parameter, hopf, gap, before)
+        if inside is not None:
+            # AUTO went on through the Hopf point, back along the same orbits
+            # (half a period shifted): the run again, up to the collapse
+            index, h = inside
+            print(f"{figure}: orbits {name} reach straight rolling at the Hopf point "
+                  f"{parameter} = {h:.5g} (point {index + 1}), and AUTO goes on back along "
+                  "them: run again up to there", flush=True)
+            full = orbits[0]
+            orbits = periodic_from(rundir, name, origin, parameter, stop={parameter: stops},
+                                   allow_mx=allow_failed, **{**kw, "NMX": index + 1})
+            _same_start(orbits[0], full, index, parameter, name)
+            left.pop(h, None)
+            ends[h] = True
         runs.append(orbits)
         last = orbits[0]
         values = numpy.asarray(last[parameter])
@@ -159,7 +193,7 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
         folds = ", ".join(f"{p[parameter]:.5g}" for p in orbits("LP")) or "none"
         print(f"{figure}: orbits {name} from {parameter} = {last[parameter][0]:.5g}: "
               f"{len(values)} points, ends at {end:.5g}, folds at {folds}", flush=True)
-        for h in [h for h in left if abs(end - h) < 2 * gap(h)]:
+        for h in [] if inside else [h for h in left if abs(end - h) < 2 * gap(h)]:
             del left[h]
             ends[h] = bool(amp[i] < SHRUNK * largest
                            and abs(freq - hopf[h]) <= SAME_FREQUENCY * hopf[h])
@@ -169,6 +203,43 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
                       flush=True)
                 origin = orbits("UZ")[-1]
     return runs, ends
+
+
+def collapse_within(branch, parameter, hopf, gap, largest=0.0):
+    """(index, h): the first point after the run's start where its orbits
+    reach straight rolling at the Hopf point h of `hopf` ({value: frequency
+    in Hz}), or None.  There the amplitude has a least value below COLLAPSING
+    of the branch's largest (`largest` before this run, or this run's), the
+    parameter is within gap(h) of h (the window of follow_orbits' stops) and
+    the frequency h's (SAME_FREQUENCY).  AUTO does not stop there but goes on
+    through the Hopf point, back along the same orbits: between two Hopf
+    points (rho = -10, mu = 20 deg, Fig. 12: F* = 0.700 and 0.876) until
+    NMX.  Points of zero amplitude (COLLAPSED: an MX run going on along
+    straight rolling) are left to the collapse rule at the run's end.  A
+    least value farther than gap(h) from h is not taken: Fig. 14's orbits
+    at V = 80 m/s step through the Hopf point y_fp = 0.0705 mm with their
+    least amplitude 1.7e-4 mm from it (docs/reproduction.md, Fig. 14)."""
+    values = numpy.asarray(branch[parameter])
+    amp, freq = numpy.asarray(branch["psi_amp"]), numpy.asarray(branch["freq"])
+    for i in range(1, len(amp) - 1):
+        if not (COLLAPSED < amp[i] < amp[i - 1] and amp[i] <= amp[i + 1]
+                and amp[i] < COLLAPSING * max(largest, numpy.max(amp[:i + 1]))):
+            continue
+        near = [h for h in hopf if abs(values[i] - h) <= gap(h)
+                and abs(freq[i] - hopf[h]) <= SAME_FREQUENCY * hopf[h]]
+        if near:
+            return i, min(near, key=lambda h: abs(values[i] - h))
+    return None
+
+
+def _same_start(branch, full, index, parameter, name):
+    """The run repeated up to `index` must be the first run's points."""
+    if len(branch) != index + 1 or \
+            abs(branch[parameter][-1] - full[parameter][index]) > 1e-9 * max(1.0, abs(
+                full[parameter][index])):
+        raise autoglue.RunError(f"run {name}: repeated up to point {index + 1}, it ends at "
+                                f"{parameter} = {branch[parameter][-1]:.9g} after {len(branch)} "
+                                f"points, not at the first run's {full[parameter][index]:.9g}")
 
 
 class Diagram:
@@ -205,14 +276,15 @@ class Diagram:
 
 def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
                   parameter="V", tag="", first=1, gap=0.01, allow_failed=False,
-                  figure="orbits", about=None, **steps):
+                  figure="orbits", about=None, state=None, **steps):
     """The Hopf points of straight rolling along `grid` of `parameter` and
     the periodic orbits born at each, followed across the others
     (follow_orbits) within the grid's range; a Hopf point where an earlier
     branch collapsed starts none (AUTO still locates it).  Runs <tag>hb<k>,
     <tag>po<k>[_<n>], k from
-    `first`; steps: AUTO constants of the orbit runs."""
-    changes = spectrum.stability_changes(parameter_set, parameter, grid, **values)
+    `first`; steps: AUTO constants of the orbit runs; state(value): straight
+    rolling there (spectrum.stability_changes)."""
+    changes = spectrum.stability_changes(parameter_set, parameter, grid, state=state, **values)
     hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]
     bp = [v for v, kind, _ in changes if kind == "BP"]
     parts, names, reached = [], [], set()
@@ -221,11 +293,13 @@ def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
             # no branch starts here, but it is stored as a labelled HB (run
             # <tag>hb<k>) like every Hopf point the diagram's numbers give
             try:
-                hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, **values)
+                hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, state=state,
+                           **values)
             except autoglue.RunError as exc:
                 print(f"{figure}: Hopf point {k} left unstored: {exc.brief}", flush=True)
             continue
-        point = hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, **values)
+        point = hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, state=state,
+                           **values)
 
         def name(n, k=k):
             return f"{tag}po{k}" + (f"_{n}" if n else "")

@@ -315,9 +315,16 @@ def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
 
 def yfp_crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed", first_only=False, **model):
     """y_fp values where the growth of `band` changes sign along `grid`
-    (bisection to 1e-10 mm); with first_only, only the first of them."""
-    return spectrum.sign_changes(lambda y: growth(Fstar, y, V, scaling, **model)[band], grid,
-                                 tol=1e-10, first_only=first_only)
+    (bisection to 1e-10 mm); with first_only, only the first of them.  The
+    scan starts at zero freeplay, so a band already unstable at grid[0] is
+    not missed: its crossing is bisected below grid[0], or is 0 if the band
+    is unstable without freeplay (side-stay geometries at light load)."""
+    def rate(y):
+        return growth(Fstar, y, V, scaling, **model)[band]
+    found = spectrum.sign_changes(rate, numpy.r_[0.0, grid], tol=1e-10, first_only=first_only)
+    if rate(0.0) > 0:
+        found = [0.0] + found[:0 if first_only else None]
+    return found
 
 
 def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN, V_LIMIT, 25),
@@ -396,13 +403,55 @@ def refined_minimum(evaluate, loads, key, points=None, finer=(10,)):
     return best
 
 
-def kappa_star(evaluate, loads, points=None, finer=(10,)):
+def kappa_star(evaluate, loads, points=None, finer=(10,), also=()):
     """Eq. (17)'s kappa*: the least y_fp/eps at which straight rolling is
     unstable below V_LIMIT, minimised over the loads (refined_minimum of
-    evaluate(F*)["first"], the least unstable y_fp there); (kappa*, the
-    evaluation at the minimum)."""
+    evaluate(F*)["first"], the least unstable y_fp there) and the loads
+    `also` (stage_switch_loads); (kappa*, the evaluation at the minimum)."""
     best = refined_minimum(evaluate, loads, lambda p: p["first"], points, finer)
+    for Fstar in also:
+        point = evaluate(Fstar)
+        if point["first"] < best["first"]:
+            best = point
     return best["first"] / EPSILON, best
+
+
+SWITCH_WIDTHS = 3.0    # the stage switch: eta* within this many 1/k_stage of eta_stage
+SWITCH_LOADS = 5       # loads evaluated across it
+
+
+def stage_switch_loads(loads, parameter_set="figures", **model):
+    """SWITCH_LOADS loads, evenly from where straight rolling's eta* enters
+    the oleo's stage switch to where it leaves it (|eta* - eta_s| up to
+    SWITCH_WIDTHS / k_stage, c/strut.h), within [loads[0], loads[-1]]; []
+    if eta* does not cross it there.  On the switch the spring's local
+    stiffness is steepest (k_stage = 1e5 /m), over a window of F* narrower
+    than an envelope grid's step (F* 0.64-0.68 at rho = mu = 10 deg, where
+    a 19-33 Hz strut-torsion mode is unstable without freeplay), so
+    kappa_star evaluates these loads as well."""
+    constants = mlgmodel.Model(parameter_set, **model)
+    eta_s, width = constants["eta_stage"], SWITCH_WIDTHS / constants["k_stage"]
+
+    def eta(Fstar):
+        return rolling_state(Fstar, 0.0, parameter_set=parameter_set, **model)["eta"]
+    lo, hi = float(loads[0]), float(loads[-1])
+    edges = []
+    for target in (eta_s - width, eta_s + width):
+        below = eta(lo) < target
+        if below == (eta(hi) < target):
+            return []
+        edges.append(spectrum.bisect(lambda F, b=below: (eta(F) < target) == b, lo, hi,
+                                     tol=1e-6))
+    loads = [float(F) for F in numpy.linspace(min(edges), max(edges), SWITCH_LOADS)]
+    try:
+        etas = [eta(F) for F in loads]
+    except RuntimeError:
+        etas = []
+    if len(etas) < len(loads) or numpy.any(numpy.diff(etas) <= 0):
+        # straight rolling folds on the switch (the printed strut): loading
+        # up jumps across it, and Newton lands on either side or fails there
+        return []
+    return loads
 
 
 def window_points(Fstar, **model):

@@ -25,9 +25,10 @@ class SimulationError(RuntimeError):
 
 
 def run(csv, *args, params=None):
-    """Run the simulator writing the samples to csv; the completed process.
-    params: {name: value} passed as --param name=value."""
-    command = [SIMULATOR, *map(str, args), "--out", csv]
+    """Run the simulator writing the samples to csv (None: none, only the
+    summary); the completed process.  params: {name: value} passed as
+    --param name=value."""
+    command = [SIMULATOR, *map(str, args)] + (["--out", csv] if csv else [])
     for name, value in (params or {}).items():
         command += ["--param", f"{name}={value}"]
     return subprocess.run(command, capture_output=True, text=True)

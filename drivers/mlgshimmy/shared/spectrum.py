@@ -40,21 +40,25 @@ def bisect(same_as_lo: Callable[[float], bool], lo: float, hi: float, tol: float
     return 0.5 * (lo + hi)
 
 
-def _unstable(parameter_set, values):
-    """(number of real, number of complex eigenvalues with Re > 0, eigenvalues)."""
-    eig = eigenvalues(mlgmodel.Model(parameter_set, **values))
+def _unstable(parameter_set, values, u=None):
+    """(number of real, number of complex eigenvalues with Re > 0, eigenvalues)
+    at the state u (default: the model's straight-rolling equilibrium)."""
+    eig = eigenvalues(mlgmodel.Model(parameter_set, **values), u)
     real = numpy.abs(eig.imag) <= 1e-9 * numpy.maximum(1.0, numpy.abs(eig.real))
     return int(numpy.sum(real & (eig.real > 0))), int(numpy.sum(~real & (eig.real > 0))), eig
 
 
 def stability_changes(parameter_set: str, parameter: str, grid: Sequence[float],
+                      state: Optional[Callable[[float], dict]] = None,
                       **values: float) -> List[Tuple[float, str, float]]:
     """Where straight rolling changes stability along `grid` of `parameter`,
     refined by bisection (60 halvings of a grid step): [(value, kind, omega)],
     kind "HB" (complex pair, omega its imaginary part in rad/s) or "BP"
-    (real eigenvalue)."""
+    (real eigenvalue).  state(value): the state of straight rolling there,
+    where Newton from psi = 0 may miss it (shared.stationary)."""
     def counts(value):
-        return _unstable(parameter_set, {**values, parameter: value})
+        return _unstable(parameter_set, {**values, parameter: value},
+                         state(value) if state else None)
 
     changes = []
     previous, before = grid[0], counts(grid[0])[:2]

@@ -8,7 +8,7 @@
    0   ITMX=   8   ITNW=   7   NWTN=   3   JAC =   1   NUZR=   1
    0   NPAR=  30   THL = {11: 0}    THU = {}
    0   UZSTOP = {'V': 600}
-   0   e = '/work/g1/build/models/mlg' s = '/' sv = 'eq'
+   0   e = '/work/main/build/models/mlg' s = '/' sv = 'eq'
    0   parnames = {1: 'V', 2: 'Fstar', 3: 'yfp', 4: 'eps_abs', 5: 'eps_rel', 6: 'c_psi', 7: 'rho', 8: 'mu', 9: 'k_tlk', 11: 'T', 13: 'eom_terms', 14: 'strut_variant', 15: 'constants', 21: 'psi_amp', 22: 'delta_amp', 23: 'beta_mean', 24: 'beta_amp', 25: 'eta_mean', 26: 'eta_amp', 27: 'freq', 28: 'psi_mean'}
    0   unames   = {1: 'psi', 2: 'delta', 3: 'beta', 4: 'eta', 5: 'psi_dot', 6: 'delta_dot', 7: 'beta_dot', 8: 'eta_dot', 9: 'lambda_L', 10: 'lambda_R'}
    0   PAR     = {'V': 5.0000000000E-001, 'Fstar': 1, 'yfp': 1, 'eps_abs': 0, 'eps_rel': 1.0000000000E-001, 'c_psi': 7.2400340000E+002, 'rho': 1.7453292520E-001, 'mu': 1.7453292520E-001, 'k_tlk': 39000000, 'eom_terms': 2, 'strut_variant': 0, 'constants': 0}

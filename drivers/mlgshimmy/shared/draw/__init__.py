@@ -57,8 +57,12 @@ POINTS = {
     "LP": {"name": "S", "marker": "s", "mfc": "k", "ms": 4.0,
            "legend": "fold of periodic orbits"},
     "BP": {"name": "P", "marker": "D", "mfc": "k", "ms": 4.0, "legend": "pitchfork"},
+    "LPeq": {"name": "F", "marker": "s", "mfc": "white", "ms": 4.5,
+             "legend": "fold of stationary states"},
     "TR": {"name": "TR", "marker": "^", "mfc": "white", "ms": 5.0,
            "legend": "torus (Neimark-Sacker) point"},
+    "PD": {"name": "PD", "marker": "v", "mfc": "white", "ms": 5.0,
+           "legend": "period doubling"},
     "change": {"name": "", "marker": "o", "mfc": "white", "ms": 4.5,
                "legend": "stability change AUTO did not label"},
 }

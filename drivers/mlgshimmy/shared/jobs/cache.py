@@ -27,11 +27,12 @@ class MissingResult(RuntimeError):
     """No cached result for a figure (its compute step has not run)."""
 
 
-def path(figure: str, part: Optional[str] = None) -> str:
-    """$MLG_RUN_ROOT/<fig>/result.json, or parts/<part>.json there."""
-    if part is None:
-        return paths.under_root(figure, "result.json")
-    return paths.under_root(figure, "parts", f"{part}.json")
+def path(figure: str, part: Optional[str] = None, root: Optional[str] = None) -> str:
+    """$MLG_RUN_ROOT/<fig>/result.json, or parts/<part>.json there (root:
+    another run root, e.g. the baseline's beside a geometry's)."""
+    where = [figure] if part is None else [figure, "parts"]
+    name = "result.json" if part is None else f"{part}.json"
+    return os.path.join(root, *where, name) if root else paths.under_root(*where, name)
 
 
 def _auto_version() -> Optional[str]:
@@ -171,11 +172,11 @@ def compute_once(figure: str, compute: Callable[[], Any], parameter_set: str = "
         os.close(fd)
 
 
-def read(figure: str, part: Optional[str] = None) -> Any:
+def read(figure: str, part: Optional[str] = None, root: Optional[str] = None) -> Any:
     """The data of a figure's cached result (or of one part of it), checked:
     whole JSON, the figure's and the part's names, the checksum.  A file
-    that fails raises BadResult naming it and what to run."""
-    where = path(figure, part)
+    that fails raises BadResult naming it and what to run.  root: as path."""
+    where = path(figure, part, root)
     remedy = f"remove it and run `make {figure}`"
     try:
         with open(where) as source:
