@@ -82,8 +82,7 @@ def runs(where="fig18", **model):
 def kappa_star(points, **model):
     """min over F* of the smallest y_fp/eps with unstable straight rolling:
     the grid minimum, refined on a grid 10 times finer around it."""
-    return mg.kappa_star(lambda F: mg.window_points(F, **model), FSTARS, points,
-                         also=mg.stage_switch_loads(FSTARS, **model))
+    return mg.kappa_star(lambda F: mg.window_points(F, **model), FSTARS, model, points)
 
 
 def numbers(points, auto, kappa, best):

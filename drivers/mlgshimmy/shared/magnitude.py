@@ -403,13 +403,14 @@ def refined_minimum(evaluate, loads, key, points=None, finer=(10,)):
     return best
 
 
-def kappa_star(evaluate, loads, points=None, finer=(10,), also=()):
+def kappa_star(evaluate, loads, model, points=None, finer=(10,)):
     """Eq. (17)'s kappa*: the least y_fp/eps at which straight rolling is
     unstable below V_LIMIT, minimised over the loads (refined_minimum of
-    evaluate(F*)["first"], the least unstable y_fp there) and the loads
-    `also` (stage_switch_loads); (kappa*, the evaluation at the minimum)."""
+    evaluate(F*)["first"], the least unstable y_fp there) and the loads on
+    the stage switch of the gear `model` (parameter overrides,
+    stage_switch_loads); (kappa*, the evaluation at the minimum)."""
     best = refined_minimum(evaluate, loads, lambda p: p["first"], points, finer)
-    for Fstar in also:
+    for Fstar in stage_switch_loads(loads, **model):
         point = evaluate(Fstar)
         if point["first"] < best["first"]:
             best = point

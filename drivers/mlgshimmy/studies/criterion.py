@@ -71,8 +71,8 @@ def kappa_star(overrides):
     """{kappa, Fstar, V, eta} at the minimum over the envelope's loads, at the
     side-stay geometry of the run (shared.geometry)."""
     overrides = {**overrides, **geometry.parameters()}
-    kappa, best = mg.kappa_star(lambda F: first_unstable(F, **overrides), LOADS, finer=(5, 4),
-                                also=mg.stage_switch_loads(LOADS, **overrides))
+    kappa, best = mg.kappa_star(lambda F: first_unstable(F, **overrides), LOADS, overrides,
+                                finer=(5, 4))
     return {"kappa": kappa, "Fstar": best["Fstar"], "V": best["V"],
             "eta": best["eta"], "mode": best["mode"]}
 

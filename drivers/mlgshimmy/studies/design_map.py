@@ -147,8 +147,8 @@ def fold_S(rundir, hopf, values):
 
 def kappa(values, loads=KAPPA_LOADS, finer=KAPPA_FINER):
     """kappa* over the envelope's loads (the criterion's recipe)."""
-    value, best = mg.kappa_star(lambda F: mg.least_unstable(F, **values), loads, finer=finer,
-                                also=mg.stage_switch_loads(loads, **values))
+    value, best = mg.kappa_star(lambda F: mg.least_unstable(F, **values), loads, values,
+                                finer=finer)
     return {"kappa": value, "kappa_Fstar": best["Fstar"], "kappa_V": best["V"],
             "kappa_mode": best["mode"], "kappa_eta": best["eta"], "kappa_yfp": best["first"]}
 
