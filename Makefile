@@ -75,7 +75,7 @@ export MLG_PAPER_STYLE := $(PAPER)
 endif
 
 PACKAGES := gcc gfortran make liblapack-dev python3-numpy python3-matplotlib \
-            python3-scipy python3-pytest python3-pytest-xdist pkgconf libsundials-dev dpkg-dev
+            python3-scipy python3-pytest python3-pytest-xdist pkgconf libsundials-dev dpkg-dev patch
 PACKAGES_STAMP := build/.stamp-packages
 
 TEST_DEPS :=

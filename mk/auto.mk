@@ -39,8 +39,8 @@ auto: $(AUTO_STAMP)
 	@$(if $(filter given,$(AUTO_FROM)),rm -f $(AUTO_CHOICE))
 	@$(call auto_say,"auto: using AUTO-07p built from source in $(AUTO_DIR)")
 
-$(AUTO_STAMP): mk/build-auto.sh | $(PACKAGES_STAMP)
-	@echo "auto: no AUTO-07p chosen: building it from source under build/auto/ (about 80 s;" \
+$(AUTO_STAMP): mk/build-auto.sh $(wildcard mk/auto-patches/*.patch) | $(PACKAGES_STAMP)
+	@echo "auto: building AUTO-07p from source under build/auto/ (the first time, or when mk/auto-patches changes; about 80 s;" \
 	    "to use an installed one instead, e.g. Debian's auto-07p: make ... AUTO_DIR=/usr/lib/auto-07p)"
 	mk/build-auto.sh build/auto $(if $(AUTO_SRC),$(abspath $(AUTO_SRC)))
 	touch $@

@@ -10,6 +10,7 @@
 set -euo pipefail
 
 build_dir=$1
+patches=$(cd "$(dirname "$0")/auto-patches" && pwd)
 tarball=${2:-}
 mkdir -p "$build_dir"
 build_dir=$(cd "$build_dir" && pwd)
@@ -71,6 +72,11 @@ mv "$(dirname "$configure")" "$auto_dir"
 rm -rf "$unpack"
 
 cd "$auto_dir"
+# Our fixes to AUTO's source (mk/auto-patches/README.md says what each fixes).
+for fix in "$patches"/*.patch; do
+    echo "build-auto: applying $(basename "$fix")"
+    patch -p1 --quiet --forward < "$fix" || die "$(basename "$fix") does not apply to $tarball"
+done
 # The dfsg tarball drops tek2ps/, but configure still wants tek2ps/Makefile.in.
 if [ ! -f tek2ps/Makefile.in ]; then
     mkdir -p tek2ps

@@ -57,7 +57,7 @@ def test_no_choice_builds_from_source_and_says_so(tree):
     status, out = make(tree, "-n", "auto")
     assert status == 0, out
     assert "mk/build-auto.sh build/auto" in out
-    assert "no AUTO-07p chosen" in out
+    assert "building AUTO-07p from source under build/auto/" in out
     assert exported_auto_dir(tree) == str(tree / "build" / "auto" / "07p")
 
 

@@ -70,3 +70,22 @@ def test_lifts_off_simulated_at_600_and_100_m_s(tmp_path):
     assert not liftoff.lifts_off(csv, 100.0, 1.0, t_end=5.0), \
         "V = 100 m/s, F* = 1: a wheel lifted off within 5 s"
     assert list(tmp_path.iterdir()) == [], list(tmp_path.iterdir())
+
+
+def test_edge_speed_moves_its_bracket_down_where_a_wheel_lifts_off_at_its_bottom(monkeypatch):
+    """At a side-stay geometry the edge can lie below the bracket's low end:
+    it moves down by LOWER_BY until a speed without lift-off, then bisects
+    there (the edge at 420 m/s from a bracket 500-600, to half TOL_V)."""
+    tried = []
+    monkeypatch.setattr(liftoff, "lifts_off",
+                        lambda csv, V, Fstar, **_: tried.append(V) or V >= 420.0)
+    found = liftoff.edge_speed("x.csv", 0.2, 500.0, 600.0)
+    assert abs(found - 420.0) <= 0.5 * liftoff.TOL_V, (found, tried)
+    assert 400.0 in tried and min(tried) == 400.0, tried
+
+
+def test_edge_speed_gives_up_below_its_lowest_bracket(monkeypatch):
+    monkeypatch.setattr(liftoff, "lifts_off", lambda csv, V, Fstar, **_: True)
+    with pytest.raises(liftoff.HoldsAtLow) as error:
+        liftoff.edge_speed("x.csv", 0.2, 500.0, 600.0)
+    assert "V = 500" in str(error.value), str(error.value)

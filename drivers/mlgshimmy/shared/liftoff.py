@@ -24,18 +24,23 @@ PSI0 = simulator.STARTS["rolling"]
 LIFT_OFF = "a wheel lifts off"    # c/parameters.c mlg_status_text
 TOL_V = 2.0               # m/s: the edge speed's bisection interval
 TOL_F = 0.005             # the edge's ends in F* (on V = V_MAX)
+LOWER_BY, LOWEST_V = 100.0, 100.0   # m/s: edge_speed's bracket moves down this way
 
 
-def lifts_off(csv, V, Fstar, case=freeplay.NOMINAL, t_end=T_END, params=None):
+def lifts_off(csv, V, Fstar, case=freeplay.NOMINAL, t_end=T_END, params=None, rolling=None):
     """Whether the run from straight rolling (psi + PSI0) at (V, F*) stops
     on a negative tyre load within t_end; a stop for another reason raises
     SimulationError naming it.  params: more model parameters for the
-    simulator ({name: value}, e.g. geometry.simulator_params())."""
+    simulator ({name: value}, e.g. geometry.simulator_params()); rolling:
+    rolling(F*) is straight rolling's state (default: the simulator's own
+    Newton solve, which can miss it at side-stay angles)."""
     if not (V > 0 and Fstar > 0 and t_end > 0):
         raise ValueError(f"liftoff: V = {V}, Fstar = {Fstar} and t_end = {t_end} must be > 0")
     proc = simulator.run(csv, "--set", "figures", "--V", V, "--Fstar", Fstar,
                          *simulator.freeplay_args(case), "--t-end", t_end, "--dt-out", 1.0,
-                         "--psi0", PSI0, params=params)
+                         "--psi0", PSI0,
+                         *simulator.state_args(rolling(Fstar) if rolling else None),
+                         params=params)
     if os.path.exists(csv):
         os.remove(csv)
     if proc.returncode == 0:
@@ -46,6 +51,10 @@ def lifts_off(csv, V, Fstar, case=freeplay.NOMINAL, t_end=T_END, params=None):
             f"liftoff: at V = {V:g}, F* = {Fstar:g} the simulator stopped otherwise: "
             f"{proc.stderr.strip()}")
     return True
+
+
+class HoldsAtLow(ValueError):
+    """The bisection's test holds at its low end already."""
 
 
 def bisected(test, lo, hi, tol, what, checked=False):
@@ -62,7 +71,7 @@ def bisected(test, lo, hi, tol, what, checked=False):
     sign = 1.0 if hi >= lo else -1.0   # spectrum.bisect wants lo < hi
     found = sign * spectrum.bisect(lambda x: not test(sign * x), sign * lo, sign * hi, tol=tol)
     if not checked and abs(found - lo) <= tol and test(lo):
-        raise ValueError(f"liftoff: a wheel lifts off already at {what} = {lo:g} "
+        raise HoldsAtLow(f"liftoff: a wheel lifts off already at {what} = {lo:g} "
                          "(move the bracket)")
     return found
 
@@ -70,8 +79,18 @@ def bisected(test, lo, hi, tol, what, checked=False):
 def edge_speed(csv, Fstar, lo, hi, tol=TOL_V, **options):
     """The lowest speed in [lo, hi] at which a wheel lifts off (within
     T_END) at load F*, or None if none does up to hi (one crossing: lift-off
-    within a fixed time need not be monotone in V)."""
-    return bisected(lambda V: lifts_off(csv, V, Fstar, **options), lo, hi, tol, "V")
+    within a fixed time need not be monotone in V).  Where a wheel lifts
+    off at lo already (a side-stay geometry can move the edge), the bracket
+    moves down by LOWER_BY, to lo no lower than LOWEST_V."""
+    test = lambda V: lifts_off(csv, V, Fstar, **options)
+    try:
+        return bisected(test, lo, hi, tol, "V")
+    except HoldsAtLow:
+        while lo - LOWER_BY >= LOWEST_V:
+            lo, hi = lo - LOWER_BY, lo
+            if not test(lo):
+                return bisected(test, lo, hi, tol, "V", checked=True)
+        raise
 
 
 def edge_load(csv, V, lo, hi, tol=TOL_F, checked=False, **options):

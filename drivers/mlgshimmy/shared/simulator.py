@@ -8,6 +8,7 @@ Python: the one place that runs it and reads its summary.
 import os
 import subprocess
 
+from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 
 SIMULATOR = os.path.join(paths.BUILD, "bin", "mlg_simulate")
@@ -38,6 +39,12 @@ def freeplay_args(freeplay):
     """--yfp/--eps-abs/--eps-rel of a freeplay case {yfp, eps_abs, eps_rel}."""
     return ["--yfp", freeplay["yfp"], "--eps-abs", freeplay["eps_abs"],
             "--eps-rel", freeplay["eps_rel"]]
+
+
+def state_args(u):
+    """--u0 of a state {name: value} (the simulator then starts there, not at
+    its own straight-rolling Newton solve); [] for None."""
+    return [] if u is None else ["--u0", ",".join(repr(u[n]) for n in mlgmodel.UNAMES)]
 
 
 def left_domain(proc):

@@ -114,19 +114,24 @@ def sign_changes(f: Callable[[float], float], grid: Sequence[float], tol: float 
 
 
 def stable_on_grid(parameter_set: str, outer: str, outer_grid: Sequence[float], inner: str,
-                   inner_grid: Sequence[float], **values: float) -> numpy.ndarray:
+                   inner_grid: Sequence[float], state: Optional[Callable[[float], dict]] = None,
+                   **values: float) -> numpy.ndarray:
     """[outer, inner]: True where every eigenvalue of straight rolling has a
     negative real part.  The equilibrium must not depend on the inner
     parameter (checked at both ends of its grid); it is solved once per
-    outer value."""
+    outer value.  state(outer value): the state of straight rolling there
+    instead (as in stability_changes; not checked)."""
     model = mlgmodel.Model(parameter_set, **values)
     stable = numpy.zeros((len(outer_grid), len(inner_grid)), dtype=bool)
     for i, x in enumerate(outer_grid):
         model.set(**{outer: x, inner: inner_grid[-1]})
-        u = model.equilibrium()
-        model.set(**{inner: inner_grid[0]})
-        if max(abs(a - b) for a, b in zip(u.values(), model.equilibrium().values())) > 1e-9:
-            raise RuntimeError(f"straight rolling at {outer} = {x:g} depends on {inner}")
+        if state:
+            u = state(x)
+        else:
+            u = model.equilibrium()
+            model.set(**{inner: inner_grid[0]})
+            if max(abs(a - b) for a, b in zip(u.values(), model.equilibrium().values())) > 1e-9:
+                raise RuntimeError(f"straight rolling at {outer} = {x:g} depends on {inner}")
         for j, y in enumerate(inner_grid):
             model.set(**{inner: y})
             stable[i, j] = eigenvalues(model, u).real.max() < 0

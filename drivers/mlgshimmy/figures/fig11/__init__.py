@@ -69,7 +69,7 @@ def compute(parts):
     drawn["fold"] += parts["upper_folds"]["curves"]
     drawn["torus"] = parts["torus"]["curves"]
     drawn["tongue"] = [curve for part in TONGUE_EDGES for curve in parts[part]["curves"]]
-    pitchforks = stored["pitchfork"][1]
+    pitchforks = stored["pitchfork"][1] + stored.get("stationary_folds", [])
     lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS],
                         [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
     edges = curve_list(drawn, pitchforks, lift)
@@ -94,6 +94,8 @@ def compute(parts):
     points = [p for p in parts["torus"]["points"] if not on_curves(p, tongue, TONGUE_TOL)]
     return {"curves": drawn, "torus_points": points,
             "pitchfork": stored["pitchfork"], "mx_joins": joins,
+            **({"stationary_folds": stored["stationary_folds"]}
+               if "stationary_folds" in stored else {}),
             "mx_stops": stops, "edge_curves": edges, "region_check": check,
             "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
                                  "psi0": liftoff.PSI0},

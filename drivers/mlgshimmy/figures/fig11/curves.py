@@ -12,14 +12,16 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import spectrum
+from mlgshimmy.shared import stationary
 
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
 
 
 def curves(rundir, parameter_set="figures"):
     """Hopf and fold curves continued from the F* = 1 points of Fig. 10, the
-    pitchfork loads (at three speeds: they do not depend on V) and the
-    zero-freeplay Hopf curve."""
+    zero-freeplay Hopf curve and the pitchfork loads (at three speeds: they
+    do not depend on V), or with side-stay angles the loads of the folds
+    of the yawed states (shared.stationary), "stationary_folds"."""
     out = {"hopf": [], "fold": [], "zero": []}
     points = ct.hopf_points(rundir, "hb", parameter_set, "V", V_SCAN, Fstar=1.0, **MODEL)
     for k, point in enumerate(points):
@@ -42,6 +44,16 @@ def curves(rundir, parameter_set="figures"):
         out["zero"].append(ct.hopf_curve(rundir, f"hopf_zero{'+-'[sign < 0]}", zero,
                                          ("Fstar", "V"), stop=STOP, DS=0.02 * sign,
                                          allow_mx=True))
+    if not stationary.symmetric(MODEL):
+        # the pitchforks are imperfect: the folds of the yawed states bound
+        # where they exist (at every V: the states do not depend on it)
+        found = stationary.states(paths.rundir("fig11/stationary"), parameter_set,
+                                  (F_MIN, F_MAX), V=50.0, **MODEL)
+        out["stationary_folds"] = [f for f, _, _ in found.folds()]
+        print("fig11: folds of the yawed states at F* = "
+              + (", ".join(f"{f:.6f}" for f in out["stationary_folds"]) or "none"))
+        out["pitchfork"] = [[], [], []]
+        return out
     out["pitchfork"] = []
     for V in (5.0, 50.0, 300.0):
         loads = [f for f, kind, _ in spectrum.stability_changes(
@@ -102,7 +114,8 @@ def upper_folds(rundir, first, folds):
 def stored_curves():
     out = curves(paths.rundir("fig11/curves"))
     return {**{kind: [jobs.stored(d, ("V", "Fstar")) for d in out[kind]]
-               for kind in ("hopf", "fold", "zero")}, "pitchfork": out["pitchfork"]}
+               for kind in ("hopf", "fold", "zero")},
+            **{k: out[k] for k in ("pitchfork", "stationary_folds") if k in out}}
 
 
 def upper_fold_curves(parts):

@@ -7,11 +7,21 @@ from mlgshimmy.figures.fig11.plane import FREEPLAY, V_MAX
 from mlgshimmy.shared import geometry
 from mlgshimmy.shared import liftoff
 from mlgshimmy.shared import paths
+from mlgshimmy.shared import yawed
 
 # The lift-off edge: bisected in V on these loads (from a speed without
 # lift-off within liftoff.T_END up to V_MAX), its ends in F* on V = V_MAX.
 LIFTOFF_LOADS = numpy.round(numpy.arange(0.1, 0.71, 0.1), 2)
 LIFTOFF_FROM = 500.0   # m/s: the bisection's lower end (no lift-off there; liftoff.bisected)
+
+
+def straight_rolling(Fstar):
+    """The state the lift-off runs start next to: with side-stay angles
+    straight rolling continued from zero freeplay (shared.yawed.straight),
+    at the paper's gear the simulator's own (None)."""
+    if geometry.current().symmetric:
+        return None
+    return yawed.straight("figures", Fstar, FREEPLAY, **geometry.parameters())
 
 
 def liftoff_rundir():
@@ -24,7 +34,7 @@ def liftoff_speed(Fstar):
     does at V_MAX."""
     csv = os.path.join(liftoff_rundir(), f"F{Fstar:.2f}.csv")
     V = liftoff.edge_speed(csv, Fstar, LIFTOFF_FROM, V_MAX, case=FREEPLAY,
-                           params=geometry.simulator_params())
+                           params=geometry.simulator_params(), rolling=straight_rolling)
     print(f"fig11: lift-off at F* = {Fstar:.2f}: "
           + (f"from V = {V:.1f} m/s" if V else f"none up to V = {V_MAX:g} m/s"), flush=True)
     return {"Fstar": float(Fstar), "V": V}
@@ -64,7 +74,7 @@ def liftoff_end(parts, part):
     csv = os.path.join(liftoff_rundir(), f"{part}.csv")
     Fstar = liftoff.edge_load(csv, V_MAX, speeds[outside]["Fstar"], speeds[inside]["Fstar"],
                               checked=True, case=FREEPLAY,
-                              params=geometry.simulator_params())
+                              params=geometry.simulator_params(), rolling=straight_rolling)
     print(f"fig11: lift-off on V = {V_MAX:g} from F* = {Fstar:.4f}", flush=True)
     return {"Fstar": Fstar}
 

@@ -3,13 +3,15 @@ the large-amplitude family (not Hopf-born in range) followed from F* = 1,
 the eigenvalue grid of straight rolling, and which orbits are stable."""
 import numpy
 
-from mlgshimmy.figures.fig11.plane import (MODEL, F_GRID, F_MAX, F_MIN, SLICES, V_GRID, V_MAX, V_MIN, V_SCAN)
+from mlgshimmy.figures.fig11.plane import (FREEPLAY, GEOMETRY, MODEL, F_GRID, F_MAX, F_MIN, SLICES, V_GRID, V_MAX, V_MIN, V_SCAN)
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
+from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
+from mlgshimmy.shared import stationary
 from mlgshimmy.shared import torus
 
 # An orbit family is low-frequency if it is born at a Hopf point below this:
@@ -74,8 +76,15 @@ def large_upwards(Fstar):
 
 
 def straight_rolling_stable(parameter_set="figures"):
-    """[F*, V] on F_GRID x V_GRID: True where straight rolling is stable."""
-    return spectrum.stable_on_grid(parameter_set, "Fstar", F_GRID, "V", V_GRID, **MODEL)
+    """[F*, V] on F_GRID x V_GRID: True where straight rolling is stable
+    (with side-stay angles straight rolling is the state continued from
+    zero freeplay, shared.rolling: Newton from psi = 0 may miss it)."""
+    state = None if stationary.symmetric(MODEL) else (
+        lambda Fstar: rolling.state(parameter_set, Fstar, FREEPLAY["yfp"],
+                                    {k: v for k, v in FREEPLAY.items() if k != "yfp"},
+                                    **GEOMETRY))
+    return spectrum.stable_on_grid(parameter_set, "Fstar", F_GRID, "V", V_GRID, state,
+                                   **MODEL)
 
 
 ORBIT_COLUMNS = ("V", "freq", "psi_amp")

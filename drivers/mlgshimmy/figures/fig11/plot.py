@@ -26,7 +26,13 @@ def plot(result):
         handles.append(plt.Line2D([], [], color=style[0], ls=style[1:], label=label))
     for f in result["pitchfork"][1]:
         ax.axhline(f, color="g", lw=1.4, ls="-.")
-    handles.append(plt.Line2D([], [], color="g", ls="-.", label="pitchfork"))
+    if result["pitchfork"][1]:
+        handles.append(plt.Line2D([], [], color="g", ls="-.", label="pitchfork"))
+    for f in result.get("stationary_folds", []):
+        ax.axhline(f, color="g", lw=1.4, ls=":")
+    if result.get("stationary_folds"):
+        handles.append(plt.Line2D([], [], color="g", ls=":", label=(
+            "fold of yawed equilibria (the imperfect\npitchforks of the gear with side-stay angles)")))
     for diagram in result["curves"]["torus"]:
         for branch in jobs.loaded(diagram):
             ax.plot(branch["V"], branch["Fstar"], color="m", lw=1.4)

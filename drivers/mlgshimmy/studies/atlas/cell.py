@@ -55,8 +55,7 @@ def simulator_args(v, fstar, psi0, t_end):
     run (shared.geometry; none at the paper's)."""
     at = [word for name, value in geometry.simulator_params().items()
           for word in ("--param", f"{name}={value}")]
-    u0 = straight_rolling(fstar)
-    start = [] if u0 is None else ["--u0", ",".join(repr(u0[n]) for n in mlgmodel.UNAMES)]
+    start = simulator.state_args(straight_rolling(fstar))
     return ["--set", "figures", "--V", v, "--Fstar", fstar, *simulator.freeplay_args(FREEPLAY),
             "--t-end", t_end, "--dt-out", DT_OUT, "--psi0", psi0, *start, *at]
 
