@@ -75,6 +75,22 @@ def solve(model: mlgmodel.Model, start: numpy.ndarray, iterations: int = 30,
     return None
 
 
+def fan_states(model: mlgmodel.Model, base: numpy.ndarray, psis, same: float,
+               iterations: int = 30) -> List[numpy.ndarray]:
+    """The distinct stationary states Newton (solve) converges to from the
+    state `base` with psi set to each of `psis` in turn (psi within `same`
+    of a state found before: the same state), sorted by psi; how
+    shared.yawed and shared.stationary look for the yawed states."""
+    found: List[numpy.ndarray] = []
+    for psi in psis:
+        guess = numpy.array(base, dtype=float)
+        guess[0] = psi
+        u = solve(model, guess, iterations=iterations)
+        if u is not None and all(abs(u[0] - v[0]) > same for v in found):
+            found.append(u)
+    return sorted(found, key=lambda u: u[0])
+
+
 _paths: Dict[tuple, List[Tuple[float, numpy.ndarray]]] = {}
 
 

@@ -196,14 +196,9 @@ def newton_states(parameter_set, at_loads, reach, values):
     for F in at_loads:
         model = mlgmodel.Model(parameter_set, **{**values, "Fstar": F})
         base = mlgmodel.Model(parameter_set, **{**companion, "Fstar": F}).equilibrium()
-        found = []
-        for psi in numpy.linspace(-reach, reach, FAN):
-            guess = numpy.array([base[n] for n in mlgmodel.UNAMES])
-            guess[0] = psi
-            u = rolling.solve(model, guess, iterations=60)
-            if u is not None and all(abs(u[0] - v[0]) > SAME for v in found):
-                found.append(u)
-        out += [(F, dict(zip(mlgmodel.UNAMES, u))) for u in sorted(found, key=lambda u: u[0])]
+        found = rolling.fan_states(model, [base[n] for n in mlgmodel.UNAMES],
+                                   numpy.linspace(-reach, reach, FAN), SAME, iterations=60)
+        out += [(F, dict(zip(mlgmodel.UNAMES, u))) for u in found]
     return out
 
 

@@ -19,7 +19,7 @@ stability does, from the eigenvalues of the exact Jacobian at each V.
     grid = stable_grid("figures", F_GRID, V_GRID, freeplay.NOMINAL, **geometry)
 """
 import math
-from typing import Dict, List, Optional, Sequence
+from typing import Dict, Optional, Sequence
 
 import numpy
 
@@ -66,17 +66,11 @@ def states(parameter_set: str, Fstar: float, freeplay: Dict[str, float],
     d = domain.diagnose(m, base)
     twist = base["psi"] + base["beta"] * math.sin(d["p"])    # psi_s of the base state
     psi_fp = freeplay["yfp"] * 1e-3 / d["r_tlk"]
-    found: List[numpy.ndarray] = []
-    for seed in [s * k for k in SEEDS for s in (1.0, -1.0)]:
-        x = _vector(base)
-        x[0] += seed * psi_fp - twist
-        u = rolling.solve(m, x)
-        if u is not None and not any(abs(u[0] - v[0]) < SAME for v in found):
-            found.append(u)
+    found = rolling.fan_states(m, _vector(base), [base["psi"] + (seed * psi_fp - twist)
+                                                   for k in SEEDS for seed in (k, -k)], SAME)
     centre = None if sr is None else sr["psi"]
-    yawed = [u for u in found if centre is None or abs(u[0] - centre) >= attractor.CENTRE]
     return {"straight": None if sr is None else _vector(sr),
-            "yawed": sorted(yawed, key=lambda u: u[0])}
+            "yawed": [u for u in found if centre is None or abs(u[0] - centre) >= attractor.CENTRE]}
 
 
 def stable_speeds(m: mlgmodel.Model, u: numpy.ndarray, speeds: Sequence[float]) -> numpy.ndarray:
