@@ -31,21 +31,9 @@ def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
     eq = ct.equilibria(rundir, "eq", start, stop={"V": V_MAX})
     return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID,
                                 allow_failed=allow_failed or not geometry.current().baseline,
-                                figure="fig10", **{"DS": 0.05, "DSMAX": 1.0, "NMX": 2000,
-                                                   **steps()})
-
-
-def steps():
-    """AUTO constants of the orbit runs beyond the paper's: with side-stay
-    angles the links sit off-centre in the freeplay, and the low-frequency
-    orbits fold sharply (four folds between H1 and H2 at rho = mu = 10 deg)
-    where they first reach its edge on one side: steps down to 1e-9 (AUTO's
-    default DSMIN 1e-5 stops there, MX).  A run that still ends in MX is
-    kept up to there and named in the table (numbers).  The first step is
-    smaller, 0.005: a Hopf point can be nearly degenerate there (at
-    rho = -10, mu = 20 deg H1's orbits grow by 1e-5 rad over 0.02 m/s), and
-    a first step of 0.05 lands 6.8 m/s along the branch."""
-    return {} if geometry.current().baseline else {"DSMIN": 1e-9, "DS": 0.005}
+                                figure="fig10", **{**ct.SPEED_ORBIT_STEPS,
+                                                   **ct.geometry_orbit_steps(
+                                                       geometry.current().baseline)})
 
 
 def numbers(diagram):

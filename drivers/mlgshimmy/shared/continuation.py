@@ -30,6 +30,7 @@ COLLAPSED = 1e-8      # rad: an orbit with a smaller psi amplitude is straight r
 SHRUNK = 0.3          # an orbit below this part of its branch's largest amplitude has shrunk
 SAME_FREQUENCY = 0.05  # relative: an orbit this close to a Hopf frequency may collapse there
 COLLAPSING = 0.01     # a least amplitude below this part of the branch's largest: collapsed
+FIRST_STEP_FLOOR = 1e-5   # follow_orbits retries a jumping first step down to this DS
 
 
 class Start:
@@ -146,7 +147,8 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
     allow_failed a run ending in MX is kept up to the MX and a run that
     fails is reported and the branch ends; else RunError.  A step longer
     than 2 DSMAX in the parameter raises RunError (AUTO switched to another
-    branch).
+    branch), except on the first step from `start` alone: the run is made
+    again with a tenth of DS (down to FIRST_STEP_FLOOR).
     Returns (runs, {h: True if the branch collapsed there})."""
     runs, left, ends, origin = [], dict(hopf), {}, start
     while origin is not None:
@@ -160,6 +162,17 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
                 raise
             print(f"{figure}: orbits {name} left out: {exc.brief}", flush=True)
             break
+        values = numpy.asarray(orbits[0][parameter])
+        jumps = _jumps(values, kw)
+        if not runs and jumps.size and jumps[0] and not jumps[1:].any() \
+                and abs(kw.get("DS", 0.0)) > FIRST_STEP_FLOOR:
+            # the first step alone jumped: the Hopf point is nearly
+            # degenerate (the orbits grow slowly in amplitude along V)
+            kw = {**kw, "DS": 0.1 * kw["DS"]}
+            print(f"{figure}: orbits {name}: the first step jumped by "
+                  f"{abs(values[1] - values[0]):.3g} in {parameter}: run again with "
+                  f"DS = {kw['DS']:.3g}", flush=True)
+            continue
         before = max((numpy.max(r[0]["psi_amp"]) for r in runs), default=0.0)
         inside = collapse_within(orbits[0], parameter, hopf, gap, before)
         if inside is not None:
@@ -178,8 +191,7 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
         runs.append(orbits)
         last = orbits[0]
         values = numpy.asarray(last[parameter])
-        if "DSMAX" in kw and len(values) > 1 and \
-                numpy.max(numpy.abs(numpy.diff(values))) > 2 * kw["DSMAX"]:
+        if _jumps(values, kw).any():
             raise autoglue.RunError(f"run {name}: a step jumped by more than {2 * kw['DSMAX']} "
                                     f"in {parameter} (switched to another branch)")
         # the last orbit of non-zero amplitude (an MX run may go on along
@@ -203,6 +215,13 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
                       flush=True)
                 origin = orbits("UZ")[-1]
     return runs, ends
+
+
+def _jumps(values, kw):
+    """Where a step of a run moved more than 2 DSMAX in its parameter."""
+    if "DSMAX" not in kw or len(values) < 2:
+        return numpy.zeros(0, dtype=bool)
+    return numpy.abs(numpy.diff(values)) > 2 * kw["DSMAX"]
 
 
 def collapse_within(branch, parameter, hopf, gap, largest=0.0):
@@ -272,6 +291,23 @@ class Diagram:
                 for run in self.branches for branch in run
                 for _, lab, _ in branches.labelled_points(branch, "LP")
                 if all(abs(run(lab)[p] - h) > 1e-3 * abs(h) for h, _ in self.hopf)]
+
+
+# AUTO constants of the orbit runs of a diagram in V (Figs. 10 and 11)
+SPEED_ORBIT_STEPS = {"DS": 0.05, "DSMAX": 1.0, "NMX": 2000}
+
+
+def geometry_orbit_steps(baseline):
+    """The orbit runs' constants beyond the paper's ({} at the baseline):
+    with side-stay angles the links sit off-centre in the freeplay, and the
+    low-frequency orbits fold sharply (four folds between H1 and H2 at
+    rho = mu = 10 deg) where they first reach its edge on one side: steps
+    down to 1e-9 (AUTO's default DSMIN 1e-5 stops there, MX).  The first
+    step is smaller, 0.005: a Hopf point can be nearly degenerate (at
+    rho = -10, mu = 20 deg H1's orbits grow by 1e-5 rad over 0.02 m/s; at
+    rho = mu = 10 deg, F* = 0.1875 the Hopf point at 111.0 m/s), and a first
+    step of 0.05 lands 6.8 and 7.6 m/s along the branch."""
+    return {} if baseline else {"DSMIN": 1e-9, "DS": 0.005}
 
 
 def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,

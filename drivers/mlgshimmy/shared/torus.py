@@ -95,7 +95,7 @@ def simulated_rate(values, v, psi0, span=SIM_T, rtol=None):
 
 def tr_point(rundir, name, bd, v, slope):
     """AUTO's TR label near speed v, a crossing of the branch bd (which ends
-    at V_MAX): the branch's own label if it has one within 0.5 m/s; else
+    at V_MAX, or in MX at a side-stay geometry): the branch's own label if it has one within 0.5 m/s; else
     back from the end to v + 3h, then fixed steps of -2h, one of them
     across, h such that |mu| - 1 changes by 4e-5 or more over a step (AUTO's
     count of stable multipliers, tolerance 1e-5, then changes with the
@@ -104,7 +104,10 @@ def tr_point(rundir, name, bd, v, slope):
     labelled = [p for p in bd("TR") if abs(p["V"] - v) < 0.5]
     if labelled:
         return labelled[0]
-    end = [p for p in bd() if p["TY name"] in ("UZ", "EP")][-1]      # V = V_MAX
+    ends = [p for p in bd() if p["TY name"] in ("UZ", "EP")]      # V = V_MAX
+    # a branch stopped short (MX): its labelled orbit furthest above v instead
+    end = ends[-1] if ends else max((p for p in bd() if p["TY name"] != "MX"),
+                                    key=lambda p: p["V"])
     for factor in (1, 2, 4):
         h = factor * max(2e-5 / abs(slope), 0.05)
         back = ct.run(rundir, f"{name}_back{factor}", "periodic", data=end,

@@ -25,7 +25,7 @@ from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_
 from mlgshimmy.figures.fig11.plane import F_GRID, SLICES, V_GRID
 from mlgshimmy.figures.fig11.regions import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
                                                 region_map, region_name, slice_codes, yaw_stable)
-from mlgshimmy.figures.fig11.tori import TONGUE_EDGES, TONGUE_TOL, tongue_curve, torus_curves
+from mlgshimmy.figures.fig11.tori import TONGUE_TOL, tongue_curve, tongue_parts, torus_curves
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import liftoff
 
@@ -38,9 +38,10 @@ def parts():
     large part (from its diagrams in V), the upper fold curves after the
     slices (from their folds) and the lift-off edge's ends after the
     speeds."""
-    work = {"large": large_family, "torus": jobs.Needs(["large"], lambda _: torus_curves())}
+    work = {"large": large_family,
+            "torus": jobs.Needs(["large"], lambda p: torus_curves(p["large"]))}
     work.update({part: jobs.Needs(["large"], lambda _, part=part: tongue_curve(part))
-                 for part in TONGUE_EDGES})
+                 for part in tongue_parts()})
     work["curves"] = stored_curves
     liftoff_parts = [f"liftoff_{Fstar:.2f}" for Fstar in LIFTOFF_LOADS]
     work.update({part: lambda Fstar=Fstar: liftoff_speed(Fstar)
@@ -68,7 +69,8 @@ def compute(parts):
     drawn = {kind: stored[kind] for kind in ("hopf", "fold", "zero")}
     drawn["fold"] += parts["upper_folds"]["curves"]
     drawn["torus"] = parts["torus"]["curves"]
-    drawn["tongue"] = [curve for part in TONGUE_EDGES for curve in parts[part]["curves"]]
+    drawn["tongue"] = [curve for part in tongue_parts() for curve in parts[part]["curves"]] \
+        + parts["torus"].get("tongue", [])
     pitchforks = stored["pitchfork"][1] + stored.get("stationary_folds", [])
     lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS],
                         [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
@@ -92,7 +94,8 @@ def compute(parts):
     # it (a tighter tolerance: the edge is nearly flat, dV/dF* ~ 850 m/s)
     tongue = [jobs.loaded(d) for d in drawn["tongue"]]
     points = [p for p in parts["torus"]["points"] if not on_curves(p, tongue, TONGUE_TOL)]
-    return {"curves": drawn, "torus_points": points,
+    return {"numbers": numbers(pitchforks, stored, drawn, points, lift, check, stops),
+            "curves": drawn, "torus_points": points,
             "pitchfork": stored["pitchfork"], "mx_joins": joins,
             **({"stationary_folds": stored["stationary_folds"]}
                if "stationary_folds" in stored else {}),
@@ -100,3 +103,26 @@ def compute(parts):
             "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
                                  "psi0": liftoff.PSI0},
             "region_map": {"V": V_GRID, "Fstar": F_GRID, "code": found, "names": names}}
+
+
+def numbers(pitchforks, stored, drawn, points, lift, check, stops):
+    """The figure's table (shared.paper.report; a side-stay geometry's
+    beside the baseline's): the pitchfork loads (with side-stay angles the
+    folds of the yawed states they became), the lift-off edge, how many
+    curves of each kind, the torus points on none, the slice samples that
+    disagree with their region and the MX stops on drawn curves."""
+    out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(stored["pitchfork"][1])}
+    if "stationary_folds" in stored:
+        out.update({f"pitchfork {k + 1} F*": None for k in range(2)})
+        out.update({f"yawed-state fold {k + 1} F*": f
+                    for k, f in enumerate(stored["stationary_folds"])})
+    if lift:
+        V, F = numpy.array(lift["points"]).T
+        out.update({"lift-off: least V [m/s]": float(V.min()),
+                    "lift-off on V = 600 from F*": float(F[0]),
+                    "lift-off on V = 600 up to F*": float(F[-1])})
+    out.update({f"{kind} curves": len(drawn[kind]) for kind in ("hopf", "fold", "torus", "tongue")})
+    out.update({"torus points on no curve": len(points),
+                "slice samples off their region": check["disagree"],
+                "MX stops on drawn curves": len(stops)})
+    return out

@@ -3,25 +3,16 @@ speed bisected on a few loads, its two ends on V = V_MAX bisected in F*."""
 import numpy
 import os
 
+from mlgshimmy.figures.fig11.orbits import straight_rolling
 from mlgshimmy.figures.fig11.plane import FREEPLAY, V_MAX
 from mlgshimmy.shared import geometry
 from mlgshimmy.shared import liftoff
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import yawed
 
 # The lift-off edge: bisected in V on these loads (from a speed without
 # lift-off within liftoff.T_END up to V_MAX), its ends in F* on V = V_MAX.
 LIFTOFF_LOADS = numpy.round(numpy.arange(0.1, 0.71, 0.1), 2)
 LIFTOFF_FROM = 500.0   # m/s: the bisection's lower end (no lift-off there; liftoff.bisected)
-
-
-def straight_rolling(Fstar):
-    """The state the lift-off runs start next to: with side-stay angles
-    straight rolling continued from zero freeplay (shared.yawed.straight),
-    at the paper's gear the simulator's own (None)."""
-    if geometry.current().symmetric:
-        return None
-    return yawed.straight("figures", Fstar, FREEPLAY, **geometry.parameters())
 
 
 def liftoff_rundir():

@@ -7,12 +7,13 @@ from mlgshimmy.figures.fig11.plane import (FREEPLAY, GEOMETRY, MODEL, F_GRID, F_
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import stationary
 from mlgshimmy.shared import torus
+from mlgshimmy.shared import yawed
 
 # An orbit family is low-frequency if it is born at a Hopf point below this:
 # the slices' Hopf frequencies fall in two groups, 1.7-8.3 Hz and 10.3-14.6
@@ -60,29 +61,39 @@ def large_run(Fstar, direction):
     return f"large_{Fstar:.3f}{'+-'[direction < 0]}"
 
 
-def large_upwards(Fstar):
+def large_upwards(Fstar, complete=True):
     """(diagram, torus crossings) of the large part's diagram in V upwards
-    at a slice load (it must reach V_MAX); its torus points are the
-    crossings of a Floquet pair through |mu| = 1 (floquet.torus_crossings)."""
+    at a slice load (it must reach V_MAX unless not `complete`); its torus
+    points are the crossings of a Floquet pair through |mu| = 1
+    (floquet.torus_crossings)."""
     if Fstar not in SLICES:
         raise ValueError(f"fig11: F* = {Fstar} is no slice load: the large part has no "
                          "diagram in V there")
     rundir, name = paths.rundir("fig11/large"), large_run(Fstar, 1)
     orbits = ct.load(rundir, name)
-    if abs(orbits()[-1]["V"] - V_MAX) > 1e-3:   # AUTO's UZ stop: V_MAX to its tolerance
+    if complete and abs(orbits()[-1]["V"] - V_MAX) > 1e-3:   # AUTO's UZ stop: V_MAX
         raise autoglue.RunError(f"run {name} in {rundir} stops at V = {orbits()[-1]['V']:.6g}, "
                                 f"not V = {V_MAX:g}: its torus points are not all found")
     return orbits, torus.torus_crossings(rundir, name)
 
 
+def straight_rolling(Fstar, parameter_set="figures"):
+    """Straight rolling at this load as {name: value} for the solvers to start
+    from: with side-stay angles the state continued from zero freeplay
+    (shared.yawed.straight; Newton from psi = 0 can miss it or land on a
+    yawed state), at the paper's gear None (each solver's own Newton)."""
+    if stationary.symmetric(MODEL):
+        return None
+    u = yawed.straight(parameter_set, Fstar, FREEPLAY, **GEOMETRY)
+    if u is None:
+        raise RuntimeError(f"fig11: straight rolling from zero freeplay ends before "
+                           f"y_fp = {FREEPLAY['yfp']:g} mm at F* = {Fstar:g}")
+    return u
+
+
 def straight_rolling_stable(parameter_set="figures"):
-    """[F*, V] on F_GRID x V_GRID: True where straight rolling is stable
-    (with side-stay angles straight rolling is the state continued from
-    zero freeplay, shared.rolling: Newton from psi = 0 may miss it)."""
-    state = None if stationary.symmetric(MODEL) else (
-        lambda Fstar: rolling.state(parameter_set, Fstar, FREEPLAY["yfp"],
-                                    {k: v for k, v in FREEPLAY.items() if k != "yfp"},
-                                    **GEOMETRY))
+    """[F*, V] on F_GRID x V_GRID: True where straight rolling is stable."""
+    state = None if stationary.symmetric(MODEL) else straight_rolling
     return spectrum.stable_on_grid(parameter_set, "Fstar", F_GRID, "V", V_GRID, state,
                                    **MODEL)
 
@@ -100,8 +111,11 @@ def slice_diagram(Fstar, parameter_set="figures"):
     curves from)."""
     print(f"fig11: slice F* = {Fstar:.4f}")
     diagram = ct.speed_diagram(slice_rundir(Fstar), parameter_set, {"Fstar": Fstar, **MODEL},
-                               V_SCAN, allow_failed=True, figure="fig11", DS=0.05, DSMAX=1.0,
-                               NMX=2000)
+                               V_SCAN, allow_failed=True, figure="fig11",
+                               state=None if stationary.symmetric(MODEL) else (
+                                   lambda V: straight_rolling(Fstar, parameter_set)),
+                               **{**ct.SPEED_ORBIT_STEPS,
+                                  **ct.geometry_orbit_steps(geometry.current().baseline)})
     return {"branches": [b for run in diagram.branches
                          for b in jobs.stored(run, ORBIT_COLUMNS)],
             "folds": [(diagram.name_of(run), lab) for run, lab, _, _ in diagram.folds()

@@ -5,6 +5,7 @@ from mlgshimmy.figures.fig11.curves import JOIN_LABELS
 from mlgshimmy.figures.fig11.plane import F_MAX, SLICES, V_MAX
 from mlgshimmy.figures.fig11.regions import shade
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import paper
 
 STYLES = {"hopf": ("k-", "Hopf (y_fp = 1 mm)"), "fold": ("b--", "fold of periodic orbits"),
           "zero": ("k:", "Hopf, zero freeplay")}
@@ -83,3 +84,4 @@ def plot(result):
                           "curves, labelled from diagrams in V at "
                           f"F* = {SLICES[0]:g}, {SLICES[1]:g}, ..., {SLICES[-1]:g}", fontsize=8)
     draw.save(fig, "fig11")
+    paper.report("fig11", result["numbers"])

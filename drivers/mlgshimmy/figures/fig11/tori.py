@@ -5,9 +5,11 @@ import numpy
 
 from mlgshimmy.figures.fig11.curves import on_curves
 from mlgshimmy.figures.fig11.orbits import large_upwards
-from mlgshimmy.figures.fig11.plane import V_MAX
+from mlgshimmy.figures.fig11.plane import MODEL, V_MAX
+from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
+from mlgshimmy.shared import stationary
 from mlgshimmy.shared import torus
 
 # the torus curve bounding the quasi-periodic region, continued from its
@@ -25,26 +27,86 @@ TORUS_POINT_LOADS = (0.6875, 0.8125, 0.9375)
 TONGUE_EDGES = {"tongue": (0.8125, 0, {"steps": 300}), "tongue2": (0.8125, 1, {}),
                 "tongue3": (0.9375, 0, {"ntst": 120}), "tongue4": (0.9375, 1, {})}
 TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
+# The starts above were chosen at the paper's gear and stay there, so that
+# its reference set stays bit for bit; with side-stay angles the driver
+# finds its starts on the slices (found_curves), at most MAX_CURVES curves.
+PINNED = stationary.symmetric(MODEL)
+MAX_CURVES = 6
+
+
+def tongue_parts():
+    """The tongue-edge parts (TONGUE_EDGES at the paper's gear; none with
+    side-stay angles, where the torus part finds them)."""
+    return TONGUE_EDGES if PINNED else {}
 TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/s in V)
 
 
-def first_torus_curve(rundir, name, found, index=0, **options):
+def first_torus_curve(rundir, name, found, index=0, tr_name="tr", **options):
     """A torus point of an orbit diagram in V (found: (diagram, crossings);
     the first, or torus_points[index]) continued both ways by AUTO
-    (torus.tr_point, torus.torus_curve with its options: steps, ntst)."""
+    (torus.tr_point as run tr_name, torus.torus_curve with its options:
+    steps, ntst)."""
     orbits, torus_points = found
-    tr = torus.tr_point(rundir, "tr", orbits, torus_points[index]["value"],
+    tr = torus.tr_point(rundir, tr_name, orbits, torus_points[index]["value"],
                         torus_points[index]["slope_per_unit"])
     return torus.torus_curve(rundir, name, tr, **options)
 
 
-def torus_curves():
-    """A part, after the large part: the torus (Neimark-Sacker) curve of the
+def crossing_kinds(crossings):
+    """"tongue" for each crossing that opens or closes a window (a loss of
+    stability regained further up, torus.windows), "torus" for a loss never
+    regained (the edge of the quasi-periodic region)."""
+    paired = {id(c) for pair in torus.windows(crossings) for c in pair}
+    return ["tongue" if id(c) in paired else "torus" for c in crossings]
+
+
+def found_curves(loads):
+    """With side-stay angles: the torus curves from the crossings on the
+    large part's diagrams in V at `loads` (its slice loads; a diagram that
+    stops short of V_MAX gives the crossings below its end).  From the
+    lightest load up, each crossing that no curve so far passes through
+    (on_curves, TONGUE_TOL) starts one, a "torus" or "tongue" curve by its
+    kind (crossing_kinds), up to MAX_CURVES; a start that fails is
+    reported.  The crossings on no curve are returned as points."""
+    rundir = paths.rundir("fig11/torus")
+    out = {"torus": [], "tongue": []}
+    points, k = [], 0
+    for Fstar in sorted(loads):
+        found = large_upwards(Fstar, complete=False)
+        for index, (c, kind) in enumerate(zip(found[1], crossing_kinds(found[1]))):
+            point = {"V": c["value"], "Fstar": Fstar, "angle": c["angle"],
+                     "direction": c["direction"]}
+            if on_curves(point, [run for curves in out.values() for curve in curves
+                                 for run in curve], TONGUE_TOL):
+                continue
+            if k < MAX_CURVES:
+                k += 1
+                try:
+                    out[kind].append(first_torus_curve(rundir, f"{kind}{k}", found, index,
+                                                       tr_name=f"tr{k}"))
+                    continue
+                except autoglue.RunError as exc:
+                    print(f"REPORTED: fig11 {kind} curve from V = {c['value']:.4g}, "
+                          f"F* = {Fstar:g} left out: {exc.brief}", flush=True)
+            points.append(point)
+    print(f"fig11: {len(out['torus'])} torus and {len(out['tongue'])} tongue curves found; "
+          f"{len(points)} torus points on none", flush=True)
+    stored = {kind: [[b for run in curve for b in jobs.stored(run, TORUS_COLUMNS)]
+                     for curve in curves] for kind, curves in out.items()}
+    return {"curves": stored["torus"], "tongue": stored["tongue"], "points": points}
+
+
+def torus_curves(large):
+    """A part, after the large part (`large`: its result): the torus
+    (Neimark-Sacker) curve of the
     large-amplitude family in (V, F*) and the torus points off it:
     {"curves": [[stored branches]], "points": [{"V", "Fstar", "angle",
     "direction"}]}: the curve from the first torus point on TORUS_START,
     the points of the TORUS_POINT_LOADS that it does not pass through (the
-    large part's diagrams in V, large_upwards)."""
+    large part's diagrams in V, large_upwards); with side-stay angles the
+    curves found_curves finds (their tongue edges too, "tongue")."""
+    if not PINNED:
+        return found_curves([float(f) for f in large])
     found = {Fstar: large_upwards(Fstar) for Fstar in (TORUS_START,) + TORUS_POINT_LOADS}
     curve = first_torus_curve(paths.rundir("fig11/torus"), "torus", found[TORUS_START])
     points = [{"V": c["value"], "Fstar": Fstar, "angle": c["angle"],
