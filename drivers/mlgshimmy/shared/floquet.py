@@ -57,8 +57,9 @@ def critical(mults):
 
 def torus_crossings(steps):
     """Where a complex pair crosses the unit circle between two steps:
-    [{"value", "angle", "direction"}], the value and angle interpolated
-    linearly in |mu| - 1; direction +1 = leaves (the orbit loses
+    [{"value", "angle", "direction", "slope_per_unit", "between"}], the
+    value and angle interpolated linearly in |mu| - 1 between the two
+    steps' values `between`; direction +1 = leaves (the orbit loses
     stability), -1 = enters."""
     out = []
     previous = None
@@ -69,6 +70,6 @@ def torus_crossings(steps):
             s = g0 / (g0 - g)
             out.append({"value": v0 + s * (value - v0), "angle": a0 + s * (angle - a0),
                         "direction": 1 if g > g0 else -1,
-                        "slope_per_unit": (g - g0) / (value - v0)})
+                        "slope_per_unit": (g - g0) / (value - v0), "between": (v0, value)})
         previous = (value, g, angle)
     return out

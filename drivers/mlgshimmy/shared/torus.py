@@ -93,15 +93,20 @@ def simulated_rate(values, v, psi0, span=SIM_T, rtol=None):
     return fit["rate"], fit["first"], fit["last"]
 
 
-def tr_point(rundir, name, bd, v, slope):
+def tr_point(rundir, name, bd, v, slope, between=None):
     """AUTO's TR label near speed v, a crossing of the branch bd (which ends
-    at V_MAX, or in MX at a side-stay geometry): the branch's own label if it has one within 0.5 m/s; else
-    back from the end to v + 3h, then fixed steps of -2h, one of them
+    at V_MAX, or in MX at a side-stay geometry): the branch's own label if
+    it has one within 0.5 m/s (or inside the crossing's step, `between`);
+    else back from the end to v + 3h, then fixed steps of -2h, one of them
     across, h such that |mu| - 1 changes by 4e-5 or more over a step (AUTO's
     count of stable multipliers, tolerance 1e-5, then changes with the
     sign; AUTO tests nothing on the first step after a restart).  Where
     AUTO still does not label it, h is doubled (twice)."""
     labelled = [p for p in bd("TR") if abs(p["V"] - v) < 0.5]
+    if not labelled and between:
+        # AUTO located it inside the crossing's step `between`, farther
+        # than 0.5 m/s from the interpolated v (long steps, curved |mu|)
+        labelled = [p for p in bd("TR") if min(between) - 0.5 <= p["V"] <= max(between) + 0.5]
     if labelled:
         return labelled[0]
     ends = [p for p in bd() if p["TY name"] in ("UZ", "EP")]      # V = V_MAX

@@ -4,7 +4,7 @@ import numpy
 import os
 
 from mlgshimmy.figures.fig11.orbits import straight_rolling
-from mlgshimmy.figures.fig11.plane import FREEPLAY, V_MAX
+from mlgshimmy.figures.fig11.plane import F_MAX, F_MIN, FREEPLAY, V_MAX
 from mlgshimmy.shared import geometry
 from mlgshimmy.shared import liftoff
 from mlgshimmy.shared import paths
@@ -50,8 +50,9 @@ def liftoff_end(parts, part):
     """A part: the load on V = V_MAX where lift-off starts beyond the
     outermost load with lift-off (LIFTOFF_ENDS), bisected in F* towards
     its neighbour without ({"Fstar": ..., or None if no load lifts a wheel
-    off}).  The bracket's ends are not run again: the liftoff_<F*> parts
-    ran both at V_MAX."""
+    off}), or towards the plane's edge (F_MIN, F_MAX) beyond the outermost
+    load.  The bracket's ends are not run again where the liftoff_<F*>
+    parts ran both at V_MAX."""
     speeds = [parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS]
     found = liftoff_loads(speeds)
     if not found:
@@ -59,13 +60,16 @@ def liftoff_end(parts, part):
     end = LIFTOFF_ENDS[part]
     inside = found[end]
     outside = inside + (-1 if end == 0 else 1)
-    if not 0 <= outside < len(speeds):
-        raise RuntimeError(f"fig11: a wheel lifts off at F* = {speeds[inside]['Fstar']}, "
-                           "the outermost lift-off load: extend LIFTOFF_LOADS")
     csv = os.path.join(liftoff_rundir(), f"{part}.csv")
-    Fstar = liftoff.edge_load(csv, V_MAX, speeds[outside]["Fstar"], speeds[inside]["Fstar"],
-                              checked=True, case=FREEPLAY,
-                              params=geometry.simulator_params(), rolling=straight_rolling)
+    options = dict(case=FREEPLAY, params=geometry.simulator_params(), rolling=straight_rolling)
+    if 0 <= outside < len(speeds):
+        Fstar = liftoff.edge_load(csv, V_MAX, speeds[outside]["Fstar"],
+                                  speeds[inside]["Fstar"], checked=True, **options)
+    else:
+        # the outermost load lifts a wheel off (a side-stay geometry can
+        # move the edge): the bracket's other end is the plane's edge
+        Fstar = liftoff.edge_load(csv, V_MAX, F_MIN if end == 0 else F_MAX,
+                                  speeds[inside]["Fstar"], **options)
     print(f"fig11: lift-off on V = {V_MAX:g} from F* = {Fstar:.4f}", flush=True)
     return {"Fstar": Fstar}
 

@@ -48,7 +48,8 @@ def first_torus_curve(rundir, name, found, index=0, tr_name="tr", **options):
     steps, ntst)."""
     orbits, torus_points = found
     tr = torus.tr_point(rundir, tr_name, orbits, torus_points[index]["value"],
-                        torus_points[index]["slope_per_unit"])
+                        torus_points[index]["slope_per_unit"],
+                        torus_points[index].get("between"))
     return torus.torus_curve(rundir, name, tr, **options)
 
 
