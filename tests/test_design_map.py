@@ -89,3 +89,19 @@ def test_the_mirror_gear_has_the_same_kappa_and_mirrored_links(pair):
         (b["kappa_Fstar"], b["kappa_V"], b["kappa_mode"])
     ya, yb = pair[1]["links"], pair[-1]["links"]
     assert abs(ya) > 0.05 and ya == pytest.approx(-yb, rel=1e-9)
+
+
+def test_summary_writes_the_table_from_the_grids_records(tmp_path, monkeypatch):
+    """summary as shared.jobs.grid calls it (points, their records, their
+    provenance): one row per geometry, and "-" where kappa* = 0 leaves no
+    freeplay for y_tlk/y_fp at kappa* (None)."""
+    monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
+    record = {key: 1.0 for key, _, _, _ in design_map.QUANTITIES}
+    records = [dict(record, rho_deg=rho, mu_deg=0.0, kappa=0.0, ytlk_ratio_kappa=None,
+                    kappa_V=10.5, kappa_mode="strut", cpu_seconds={"scans": 1.0})
+               for rho in (0.0, 10.0)]
+    design_map.summary([(0.0, 0.0), (10.0, 0.0)], records, None)
+    rows = [line.split() for line in (tmp_path / "tables" / "design_map.txt").read_text()
+            .splitlines() if line.split()[:2] in (["0", "0"], ["10", "0"])]
+    assert len(rows) == 2 and all(row[11] == "-" for row in rows), rows
+    assert (tmp_path / "figures" / "design_map.png").exists()

@@ -38,7 +38,6 @@ Subcommands (angles in degrees: "a,b,c" or "start:stop:step"):
 point, summary: $MLG_RUN_ROOT/figures/design_map.png, tables/design_map.txt
 and design_map.json (docs/design-map.md).
 """
-import json
 import os
 import sys
 import time
@@ -202,8 +201,9 @@ def compute(rho, mu, rundir):
     out.update(stage("kappa", lambda: kappa(values)))
     out["ytlk_ratio"] = stage("links", lambda: link_position(
         values, FSTAR, FREEPLAY["yfp"], {k: FREEPLAY[k] for k in ("eps_abs", "eps_rel")}))
+    # no freeplay to sit in where kappa* = 0 (unstable without freeplay)
     out["ytlk_ratio_kappa"] = link_position(values, out["kappa_Fstar"], out["kappa_yfp"],
-                                            mg.SCALINGS["fixed"])
+                                            mg.SCALINGS["fixed"]) if out["kappa_yfp"] else None
     out["cpu_seconds"] = seconds
     return out
 
@@ -222,18 +222,6 @@ def run_point(name):
 
 def _cell(value, fmt):
     return "-" if value is None else format(value, fmt)
-
-
-def load(points):
-    cells = []
-    for rho, mu in points:
-        path = POINTS.result_path(rho, mu)
-        if not os.path.exists(path):
-            sys.exit(f"design_map: no result for rho = {rho:g}, mu = {mu:g} ({path}); "
-                     "run `make design-map` (or design_map.py point) first")
-        with open(path) as f:
-            cells.append(json.load(f))
-    return cells
 
 
 def table(cells):
@@ -262,8 +250,11 @@ def table(cells):
         f"total {sum(cpu):.0f} s over {len(cells)} geometries"]) + "\n"
 
 
-def summary(points):
-    cells = load(points)
+def summary(points, results, provenance):
+    """The table, its JSON and the maps from the points' results (their
+    records, every point's checked present and of one provenance by
+    shared.jobs.grid)."""
+    cells = list(results)
     text = table(cells)
     print(text, end="")
     tables = paths.tables_dir()

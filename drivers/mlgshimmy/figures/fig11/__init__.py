@@ -25,7 +25,7 @@ from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_
 from mlgshimmy.figures.fig11.plane import F_GRID, SLICES, V_GRID
 from mlgshimmy.figures.fig11.regions import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
                                                 region_map, region_name, slice_codes, yaw_stable)
-from mlgshimmy.figures.fig11.tori import TONGUE_TOL, tongue_curve, tongue_parts, torus_curves
+from mlgshimmy.figures.fig11.tori import PINNED, TONGUE_TOL, tongue_curve, tongue_parts, torus_curves
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import liftoff
 
@@ -38,8 +38,11 @@ def parts():
     large part (from its diagrams in V), the upper fold curves after the
     slices (from their folds) and the lift-off edge's ends after the
     speeds."""
+    slice_parts = [f"slice_{Fstar:.4f}" for Fstar in SLICES]
+    # with side-stay angles the torus part starts curves from the slices too
     work = {"large": large_family,
-            "torus": jobs.Needs(["large"], lambda p: torus_curves(p["large"]))}
+            "torus": jobs.Needs(["large"] + ([] if PINNED else slice_parts),
+                                lambda p: torus_curves(p["large"]))}
     work.update({part: jobs.Needs(["large"], lambda _, part=part: tongue_curve(part))
                  for part in tongue_parts()})
     work["curves"] = stored_curves
@@ -48,7 +51,6 @@ def parts():
                  for part, Fstar in zip(liftoff_parts, LIFTOFF_LOADS)})
     work["grid"] = straight_rolling_stable
     work["yaw"] = yaw_stable
-    slice_parts = [f"slice_{Fstar:.4f}" for Fstar in SLICES]
     work.update({part: lambda Fstar=Fstar: slice_diagram(Fstar)
                  for part, Fstar in zip(slice_parts, SLICES)})
     work["upper_folds"] = jobs.Needs(["curves"] + slice_parts, upper_fold_curves)

@@ -1,12 +1,15 @@
 """Fig. 11's torus curve (the edge of the quasi-periodic region) and the
 edges of the tongues of instability left of it, continued by AUTO from
 torus points of the large family (shared.torus)."""
+import os
+
 import numpy
 
 from mlgshimmy.figures.fig11.curves import on_curves
-from mlgshimmy.figures.fig11.orbits import large_upwards
-from mlgshimmy.figures.fig11.plane import MODEL, V_MAX
+from mlgshimmy.figures.fig11.orbits import large_upwards, slice_rundir
+from mlgshimmy.figures.fig11.plane import MODEL, SLICES, V_MAX, V_MIN
 from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import stationary
@@ -31,7 +34,7 @@ TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
 # its reference set stays bit for bit; with side-stay angles the driver
 # finds its starts on the slices (found_curves), at most MAX_CURVES curves.
 PINNED = stationary.symmetric(MODEL)
-MAX_CURVES = 6
+MAX_CURVES = 8
 
 
 def tongue_parts():
@@ -61,35 +64,50 @@ def crossing_kinds(crossings):
     return ["tongue" if id(c) in paired else "torus" for c in crossings]
 
 
-def found_curves(loads):
-    """With side-stay angles: the torus curves from the crossings on the
-    large part's diagrams in V at `loads` (its slice loads; a diagram that
-    stops short of V_MAX gives the crossings below its end).  From the
-    lightest load up, each crossing that no curve so far passes through
-    (on_curves, TONGUE_TOL) starts one, a "torus" or "tongue" curve by its
-    kind (crossing_kinds), up to MAX_CURVES; a start that fails is
-    reported.  The crossings on no curve are returned as points."""
+def diagrams_on(Fstar, large_loads):
+    """[(diagram, torus crossings)] on a slice load: the large part's
+    diagram in V upwards (if the family reaches the load; one that stops
+    short of V_MAX gives the crossings below its end) and the slice's own
+    orbit runs (slice_diagram: the orbits born at its Hopf points)."""
+    out = [large_upwards(Fstar, complete=False)] if Fstar in large_loads else []
+    rundir = slice_rundir(Fstar)
+    for name in sorted(f[2:] for f in os.listdir(rundir) if f.startswith("d.po")):
+        out.append((ct.load(rundir, name), torus.torus_crossings(rundir, name)))
+    return out
+
+
+def found_curves(large_loads):
+    """With side-stay angles: the torus curves from the crossings on every
+    slice's diagrams in V (diagrams_on; large_loads: the loads the large
+    part reached).  From the lightest load up, each crossing that no curve
+    so far passes through (on_curves, TONGUE_TOL) starts one, a "torus" or
+    "tongue" curve by its kind (crossing_kinds), up to MAX_CURVES; a start
+    that fails is reported.  The crossings on no curve are returned as
+    points."""
     rundir = paths.rundir("fig11/torus")
     out = {"torus": [], "tongue": []}
     points, k = [], 0
-    for Fstar in sorted(loads):
-        found = large_upwards(Fstar, complete=False)
-        for index, (c, kind) in enumerate(zip(found[1], crossing_kinds(found[1]))):
-            point = {"V": c["value"], "Fstar": Fstar, "angle": c["angle"],
-                     "direction": c["direction"]}
-            if on_curves(point, [run for curves in out.values() for curve in curves
-                                 for run in curve], TONGUE_TOL):
-                continue
-            if k < MAX_CURVES:
-                k += 1
-                try:
-                    out[kind].append(first_torus_curve(rundir, f"{kind}{k}", found, index,
-                                                       tr_name=f"tr{k}"))
+    for Fstar in SLICES:
+        for found in diagrams_on(Fstar, large_loads):
+            for index, (c, kind) in enumerate(zip(found[1], crossing_kinds(found[1]))):
+                point = {"V": c["value"], "Fstar": Fstar, "angle": c["angle"],
+                         "direction": c["direction"]}
+                if not V_MIN <= c["value"] <= V_MAX:
+                    continue   # interpolated across a step that left the plane
+                if on_curves(point, [run for curves in out.values() for curve in curves
+                                     for run in curve], TONGUE_TOL):
                     continue
-                except autoglue.RunError as exc:
-                    print(f"REPORTED: fig11 {kind} curve from V = {c['value']:.4g}, "
-                          f"F* = {Fstar:g} left out: {exc.brief}", flush=True)
-            points.append(point)
+                if k < MAX_CURVES:
+                    k += 1
+                    try:
+                        out[kind].append(first_torus_curve(rundir, f"{kind}{k}", found, index,
+                                                           tr_name=f"tr{k}"))
+                        continue
+                    except (autoglue.RunError, ValueError) as exc:
+                        print(f"REPORTED: fig11 {kind} curve from V = {c['value']:.4g}, "
+                              f"F* = {Fstar:g} left out: {getattr(exc, 'brief', exc)}",
+                              flush=True)
+                points.append(point)
     print(f"fig11: {len(out['torus'])} torus and {len(out['tongue'])} tongue curves found; "
           f"{len(points)} torus points on none", flush=True)
     stored = {kind: [[b for run in curve for b in jobs.stored(run, TORUS_COLUMNS)]
@@ -107,7 +125,7 @@ def torus_curves(large):
     large part's diagrams in V, large_upwards); with side-stay angles the
     curves found_curves finds (their tongue edges too, "tongue")."""
     if not PINNED:
-        return found_curves([float(f) for f in large])
+        return found_curves({float(f) for f in large})
     found = {Fstar: large_upwards(Fstar) for Fstar in (TORUS_START,) + TORUS_POINT_LOADS}
     curve = first_torus_curve(paths.rundir("fig11/torus"), "torus", found[TORUS_START])
     points = [{"V": c["value"], "Fstar": Fstar, "angle": c["angle"],
