@@ -22,7 +22,7 @@ from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, l
                                                   liftoff_end, liftoff_speed)
 from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits,
                                             straight_rolling_stable)
-from mlgshimmy.figures.fig11.plane import F_GRID, SLICES, V_GRID
+from mlgshimmy.figures.fig11.plane import F_GRID, F_MAX, SLICES, V_GRID, V_MAX
 from mlgshimmy.figures.fig11.regions import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
                                                 region_map, region_name, slice_codes, yaw_stable)
 from mlgshimmy.figures.fig11.tori import PINNED, TONGUE_TOL, tongue_curve, tongue_parts, torus_curves
@@ -77,6 +77,8 @@ def compute(parts):
     lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS],
                         [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
     edges = curve_list(drawn, pitchforks, lift)
+    joins, stops = mx_ends(drawn)
+    edges += closing_segments(stops, edges)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
                               numpy.asarray(parts["yaw"], dtype=bool), lift)
     for row, col, n, votes in check["pieces"]:
@@ -85,7 +87,6 @@ def compute(parts):
                   f"slice samples {votes} (labelled by the majority)")
     print(f"fig11: {check['disagree']} of {check['samples']} slice samples disagree with "
           "their region's label")
-    joins, stops = mx_ends(drawn)
     for stop in stops:
         print(f"REPORTED: fig11 {stop['curve']} stops (MX) at V = {stop['V']:.4g}, "
               f"F* = {stop['Fstar']:.4g}")
@@ -127,4 +128,27 @@ def numbers(pitchforks, stored, drawn, points, lift, check, stops):
     out.update({"torus points on no curve": len(points),
                 "slice samples off their region": check["disagree"],
                 "MX stops on drawn curves": len(stops)})
+    return out
+
+# An MX end of a torus curve this close (in V/V_MAX, F*/F_MAX) to the
+# lift-off edge is joined to it: at rho = mu = 10 deg the torus curve stops
+# 5 m/s short of the edge (its orbits near lift-off), leaving the
+# quasi-periodic region open to the high-frequency one beside it
+CLOSE_TOL = 0.02
+
+
+def closing_segments(stops, edges):
+    """Straight edges from each MX end of a torus curve to the nearest point
+    of the lift-off edge within CLOSE_TOL, as curve_list entries."""
+    lift = [e for e in edges if e["kind"] == "liftoff"]
+    out = []
+    for stop in stops if lift else []:
+        if not stop["curve"].startswith("torus"):
+            continue
+        V, F = numpy.asarray(lift[0]["V"]), numpy.asarray(lift[0]["Fstar"])
+        d = numpy.hypot((V - stop["V"]) / V_MAX, (F - stop["Fstar"]) / F_MAX)
+        k = int(numpy.argmin(d))
+        if d[k] < CLOSE_TOL:
+            out.append({"name": f"{stop['curve']}-liftoff", "kind": "torus",
+                        "V": [stop["V"], float(V[k])], "Fstar": [stop["Fstar"], float(F[k])]})
     return out
