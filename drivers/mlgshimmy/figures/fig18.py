@@ -157,8 +157,10 @@ def plot(result):
                   vmax=len(REGIONS) - 0.5, alpha=0.8, shading="nearest", rasterized=True)
     Fs = [p["Fstar"] for p in points]
     for name, style in (("a", "b-"), ("b", "b--"), ("c", "g-"), ("p", "k:")):
-        ys = [numpy.nan if p[name] is None else p[name] / mg.EPSILON for p in points]
-        ax.plot(ys, Fs, style, lw=1.6, label=name if name != "p" else "pitchfork")
+        ys = numpy.array([numpy.nan if p[name] is None else p[name] / mg.EPSILON
+                          for p in points])
+        if numpy.isfinite(ys).any():   # a curve with no point (no pitchfork at a geometry)
+            ax.plot(ys, Fs, style, lw=1.6, label=name if name != "p" else "pitchfork")
     for run in auto:
         ax.plot(numpy.asarray(run["yfp"]) / mg.EPSILON, run["Fstar"], "w:", lw=1)
     ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
