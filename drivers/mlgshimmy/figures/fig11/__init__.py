@@ -78,7 +78,7 @@ def compute(parts):
                         [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
     edges = curve_list(drawn, pitchforks, lift)
     joins, stops = mx_ends(drawn)
-    edges += closing_segments(stops, edges)
+    edges += closing_segments(stops, lift)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
                               numpy.asarray(parts["yaw"], dtype=bool), lift)
     for row, col, n, votes in check["pieces"]:
@@ -130,6 +130,7 @@ def numbers(pitchforks, stored, drawn, points, lift, check, stops):
                 "MX stops on drawn curves": len(stops)})
     return out
 
+
 # An MX end of a torus curve this close (in V/V_MAX, F*/F_MAX) to the
 # lift-off edge is joined to it: at rho = mu = 10 deg the torus curve stops
 # 5 m/s short of the edge (its orbits near lift-off), leaving the
@@ -137,15 +138,15 @@ def numbers(pitchforks, stored, drawn, points, lift, check, stops):
 CLOSE_TOL = 0.02
 
 
-def closing_segments(stops, edges):
+def closing_segments(stops, lift):
     """Straight edges from each MX end of a torus curve to the nearest point
-    of the lift-off edge within CLOSE_TOL, as curve_list entries."""
-    lift = [e for e in edges if e["kind"] == "liftoff"]
+    of the lift-off edge (liftoff_edge, or None) within CLOSE_TOL, as
+    curve_list entries."""
     out = []
     for stop in stops if lift else []:
         if not stop["curve"].startswith("torus"):
             continue
-        V, F = numpy.asarray(lift[0]["V"]), numpy.asarray(lift[0]["Fstar"])
+        V, F = numpy.asarray(lift["V"]), numpy.asarray(lift["Fstar"])
         d = numpy.hypot((V - stop["V"]) / V_MAX, (F - stop["Fstar"]) / F_MAX)
         k = int(numpy.argmin(d))
         if d[k] < CLOSE_TOL:

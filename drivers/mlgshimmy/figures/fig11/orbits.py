@@ -79,11 +79,9 @@ def large_upwards(Fstar, complete=True):
 
 def straight_rolling(Fstar, parameter_set="figures"):
     """Straight rolling at this load as {name: value} for the solvers to start
-    from: with side-stay angles the state continued from zero freeplay
-    (shared.yawed.straight; Newton from psi = 0 can miss it or land on a
-    yawed state), at the paper's gear None (each solver's own Newton)."""
-    if stationary.symmetric(MODEL):
-        return None
+    from, the state continued from zero freeplay (shared.yawed.straight:
+    with side-stay angles Newton from psi = 0 can miss it or land on a
+    yawed state)."""
     u = yawed.straight(parameter_set, Fstar, FREEPLAY, **GEOMETRY)
     if u is None:
         raise RuntimeError(f"fig11: straight rolling from zero freeplay ends before "
@@ -91,10 +89,14 @@ def straight_rolling(Fstar, parameter_set="figures"):
     return u
 
 
+# what the solvers start from: None at the paper's gear (each its own
+# Newton solve from psi = 0, as the reference set was made)
+ROLLING = None if stationary.symmetric(MODEL) else straight_rolling
+
+
 def straight_rolling_stable(parameter_set="figures"):
     """[F*, V] on F_GRID x V_GRID: True where straight rolling is stable."""
-    state = None if stationary.symmetric(MODEL) else straight_rolling
-    return spectrum.stable_on_grid(parameter_set, "Fstar", F_GRID, "V", V_GRID, state,
+    return spectrum.stable_on_grid(parameter_set, "Fstar", F_GRID, "V", V_GRID, ROLLING,
                                    **MODEL)
 
 
@@ -112,8 +114,7 @@ def slice_diagram(Fstar, parameter_set="figures"):
     print(f"fig11: slice F* = {Fstar:.4f}")
     diagram = ct.speed_diagram(slice_rundir(Fstar), parameter_set, {"Fstar": Fstar, **MODEL},
                                V_SCAN, allow_failed=True, figure="fig11",
-                               state=None if stationary.symmetric(MODEL) else (
-                                   lambda V: straight_rolling(Fstar, parameter_set)),
+                               state=ROLLING and (lambda V: ROLLING(Fstar, parameter_set)),
                                **{**ct.SPEED_ORBIT_STEPS,
                                   **ct.geometry_orbit_steps(geometry.current().baseline)})
     return {"branches": [b for run in diagram.branches
