@@ -142,6 +142,21 @@ def test_the_stage_switch_loads_put_the_strut_on_its_switch():
     assert math.isclose(etas[-1], eta_s + width, abs_tol=1e-7), etas
 
 
+def test_the_stage_switch_window_at_side_stay_angles_is_where_eta_crosses_its_widths():
+    """stage_switch_window at rho = mu = 10 deg, 10 widths (Fig. 11's):
+    eta* of straight rolling at its ends is eta_s -+ 10 / k_stage, and the
+    window holds the 3-width one of stage_switch_loads."""
+    geometry = dict(rho=math.radians(10), mu=math.radians(10), eom_terms=2.0)
+    lo, hi = mg.stage_switch_window(0.02, 3.5, 10.0, **geometry)
+    model = mlgmodel.Model("figures", **geometry)
+    eta_s, width = model["eta_stage"], 10.0 / model["k_stage"]
+    assert math.isclose(mg.zero_freeplay_eta(lo, **geometry), eta_s - width, abs_tol=1e-7)
+    assert math.isclose(mg.zero_freeplay_eta(hi, **geometry), eta_s + width, abs_tol=1e-7)
+    narrow = mg.stage_switch_loads(criterion.LOADS, **geometry)
+    assert lo < narrow[0] < narrow[-1] < hi < 0.72, (lo, hi, narrow)
+    assert mg.stage_switch_window(0.8, 3.5, 10.0, **geometry) is None
+
+
 def test_on_the_stage_switch_at_side_stay_angles_kappa_is_zero_and_the_switch_decides():
     """rho = mu = 10 deg, default strut, on the stage switch: straight rolling
     is unstable without freeplay (kappa* = 0 there, docs/design-map.md);

@@ -1,6 +1,7 @@
 """Fig. 11's region helpers on synthetic input (no AUTO run): where a
 torus curve crosses a slice load, the pairing of MX ends where two Hopf
-curves or two tongue edges meet, and the region map's codes around one
+curves or two tongue edges meet, the ends explained by the stage switch or
+the lift-off edge, and the region map's codes around one
 curve (a tongue edge left out)."""
 import math
 
@@ -8,7 +9,7 @@ import numpy as np
 import pytest
 
 from mlgshimmy.figures import fig11
-from mlgshimmy.figures.fig11 import plane, tori
+from mlgshimmy.figures.fig11 import ends, plane, tori
 from mlgshimmy.figures.fig11 import regions as fig11_regions
 from mlgshimmy.shared import regions
 from mlgshimmy.studies.atlas import compare as atlas_compare
@@ -79,7 +80,7 @@ def test_mx_ends_of_two_hopf_curves_joined_half_way_a_lone_end_stays_a_stop():
 
 def test_mx_ends_of_two_tongue_edges_joined_at_its_tip():
     """A tongue's edges stop 2.1 m/s short of each other at its tip
-    (curves.JOIN_TOL): joined there; Hopf ends as far apart, or a Hopf end
+    (ends.JOIN_TOL): joined there; Hopf ends as far apart, or a Hopf end
     and a tongue end, are not."""
     drawn = {"hopf": [[branch([400.0, 512.9], [0.8, 0.8629], True)],
                       [branch([600.0, 515.0], [0.9, 0.8635], True)]],
@@ -90,6 +91,27 @@ def test_mx_ends_of_two_tongue_edges_joined_at_its_tip():
     assert len(joins) == 1 and joins[0]["curves"] == ["tongue1", "tongue2"] \
         and joins[0]["kind"] == "tongue", joins
     assert sorted(s["curve"] for s in stops) == ["hopf1", "hopf2", "tongue3"], stops
+
+
+LIFT = {"V": [600.0, 480.0, 470.0, 600.0], "Fstar": [0.1, 0.3, 0.5, 1.0]}
+
+
+def test_mx_ends_inside_the_stage_switch_or_at_the_lift_off_edge_are_explained():
+    """An end with F* inside the switch window is a stage-switch end (before
+    the lift-off test), one within ends.CLOSE_TOL of the lift-off edge a
+    lift-off end, the rest stay MX stops; only a torus curve's lift-off end
+    gets a closing segment, to the edge's nearest point."""
+    stops = [{"V": 137.4, "Fstar": 0.6949, "curve": "hopf6"},
+             {"V": 472.6, "Fstar": 0.5407, "curve": "torus1"},
+             {"V": 473.0, "Fstar": 0.5328, "curve": "tongue1"},
+             {"V": 300.0, "Fstar": 0.5407, "curve": "torus2"}]
+    found = ends.explained(stops, (0.627, 0.700), LIFT)
+    assert [s["curve"] for s in found["stage_switch"]] == ["hopf6"], found
+    assert [s["curve"] for s in found["liftoff"]] == ["torus1", "tongue1"], found
+    assert [s["curve"] for s in found["open"]] == ["torus2"], found
+    closing, = ends.closing_segments(found["liftoff"], LIFT)
+    assert closing["V"] == [472.6, 470.0] and closing["Fstar"] == [0.5407, 0.5], closing
+    assert ends.explained(stops, None, None)["open"] == stops
 
 
 # one vertical curve at 300 m/s; the slices find the high orbit right of it

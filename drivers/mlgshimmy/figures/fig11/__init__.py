@@ -17,17 +17,19 @@ holds the map ("region_map": V, Fstar, code per F* row, names) and the
 curves bounding it ("edge_curves") for the attractor atlas."""
 import numpy
 
-from mlgshimmy.figures.fig11.curves import mx_ends, on_curves, stored_curves, upper_fold_curves
+from mlgshimmy.figures.fig11.curves import on_curves, stored_curves, upper_fold_curves
+from mlgshimmy.figures.fig11.ends import SWITCH_WIDTHS, closing_segments, explained, mx_ends
 from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, liftoff_edge,
                                                   liftoff_end, liftoff_speed)
 from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits,
                                             straight_rolling_stable)
-from mlgshimmy.figures.fig11.plane import F_GRID, F_MAX, SLICES, V_GRID, V_MAX
+from mlgshimmy.figures.fig11.plane import F_GRID, F_MAX, F_MIN, GEOMETRY, SLICES, V_GRID
 from mlgshimmy.figures.fig11.regions import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
                                                 region_map, region_name, slice_codes, yaw_stable)
 from mlgshimmy.figures.fig11.tori import PINNED, TONGUE_TOL, tongue_curve, tongue_parts, torus_curves
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import liftoff
+from mlgshimmy.shared import magnitude
 
 
 def parts():
@@ -78,7 +80,9 @@ def compute(parts):
                         [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
     edges = curve_list(drawn, pitchforks, lift)
     joins, stops = mx_ends(drawn)
-    edges += closing_segments(stops, lift)
+    switch = magnitude.stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
+    ends = explained(stops, switch, lift)
+    edges += closing_segments(ends["liftoff"], lift)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
                               numpy.asarray(parts["yaw"], dtype=bool), lift)
     for row, col, n, votes in check["pieces"]:
@@ -87,9 +91,11 @@ def compute(parts):
                   f"slice samples {votes} (labelled by the majority)")
     print(f"fig11: {check['disagree']} of {check['samples']} slice samples disagree with "
           "their region's label")
-    for stop in stops:
-        print(f"REPORTED: fig11 {stop['curve']} stops (MX) at V = {stop['V']:.4g}, "
-              f"F* = {stop['Fstar']:.4g}")
+    for kind, why in (("stage_switch", "inside the oleo stage switch"),
+                      ("liftoff", "at the lift-off edge"), ("open", "")):
+        for stop in ends[kind]:
+            print(f"{'' if why else 'REPORTED: '}fig11 {stop['curve']} stops (MX) "
+                  f"{why + ' ' if why else ''}at V = {stop['V']:.4g}, F* = {stop['Fstar']:.4g}")
     names = {str(v): ((region_name(v & ~ATTRACTORS["yaw"]) if v & ~ATTRACTORS["yaw"] else "")
                       + (BAND if v & ATTRACTORS["yaw"] else "")).lstrip("; ")
              for v in numpy.unique(found).tolist()}
@@ -97,23 +103,26 @@ def compute(parts):
     # it (a tighter tolerance: the edge is nearly flat, dV/dF* ~ 850 m/s)
     tongue = [jobs.loaded(d) for d in drawn["tongue"]]
     points = [p for p in parts["torus"]["points"] if not on_curves(p, tongue, TONGUE_TOL)]
-    return {"numbers": numbers(pitchforks, stored, drawn, points, lift, check, stops),
+    return {"numbers": numbers(pitchforks, stored, drawn, points, lift, check, ends),
             "curves": drawn, "torus_points": points,
             "pitchfork": stored["pitchfork"], "mx_joins": joins,
             **({"stationary_folds": stored["stationary_folds"]}
                if "stationary_folds" in stored else {}),
-            "mx_stops": stops, "edge_curves": edges, "region_check": check,
+            "mx_stops": ends["open"], "stage_switch_ends": ends["stage_switch"],
+            "liftoff_ends": ends["liftoff"], "stage_switch": switch,
+            "edge_curves": edges, "region_check": check,
             "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
                                  "psi0": liftoff.PSI0},
             "region_map": {"V": V_GRID, "Fstar": F_GRID, "code": found, "names": names}}
 
 
-def numbers(pitchforks, stored, drawn, points, lift, check, stops):
+def numbers(pitchforks, stored, drawn, points, lift, check, ends):
     """The figure's table (shared.paper.report; a side-stay geometry's
     beside the baseline's): the pitchfork loads (with side-stay angles the
     folds of the yawed states they became), the lift-off edge, how many
     curves of each kind, the torus points on none, the slice samples that
-    disagree with their region and the MX stops on drawn curves."""
+    disagree with their region and the MX stops on drawn curves (those
+    inside the stage switch and at the lift-off edge apart)."""
     out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(stored["pitchfork"][1])}
     if "stationary_folds" in stored:
         out.update({f"pitchfork {k + 1} F*": None for k in range(2)})
@@ -127,29 +136,7 @@ def numbers(pitchforks, stored, drawn, points, lift, check, stops):
     out.update({f"{kind} curves": len(drawn[kind]) for kind in ("hopf", "fold", "torus", "tongue")})
     out.update({"torus points on no curve": len(points),
                 "slice samples off their region": check["disagree"],
-                "MX stops on drawn curves": len(stops)})
-    return out
-
-
-# An MX end of a torus curve this close (in V/V_MAX, F*/F_MAX) to the
-# lift-off edge is joined to it: at rho = mu = 10 deg the torus curve stops
-# 5 m/s short of the edge (its orbits near lift-off), leaving the
-# quasi-periodic region open to the high-frequency one beside it
-CLOSE_TOL = 0.02
-
-
-def closing_segments(stops, lift):
-    """Straight edges from each MX end of a torus curve to the nearest point
-    of the lift-off edge (liftoff_edge, or None) within CLOSE_TOL, as
-    curve_list entries."""
-    out = []
-    for stop in stops if lift else []:
-        if not stop["curve"].startswith("torus"):
-            continue
-        V, F = numpy.asarray(lift["V"]), numpy.asarray(lift["Fstar"])
-        d = numpy.hypot((V - stop["V"]) / V_MAX, (F - stop["Fstar"]) / F_MAX)
-        k = int(numpy.argmin(d))
-        if d[k] < CLOSE_TOL:
-            out.append({"name": f"{stop['curve']}-liftoff", "kind": "torus",
-                        "V": [stop["V"], float(V[k])], "Fstar": [stop["Fstar"], float(F[k])]})
+                "MX stops on drawn curves": len(ends["open"]),
+                "curve ends inside the stage switch": len(ends["stage_switch"]),
+                "curve ends at the lift-off edge": len(ends["liftoff"])})
     return out

@@ -1,13 +1,11 @@
 """Fig. 11's curves from the Fig. 10 special points at F* = 1: Hopf curves,
 folds of periodic orbits (and the upper fold curves started from the
-slices' folds), the pitchforks and the zero-freeplay Hopf curve; where two
-curves stop in MX at one point (mx_ends)."""
+slices' folds), the pitchforks and the zero-freeplay Hopf curve."""
 import numpy
 
 from mlgshimmy.figures.fig11.orbits import slice_rundir
 from mlgshimmy.figures.fig11.plane import GEOMETRY, MODEL, F_MAX, F_MIN, SLICES, STOP, V_MAX, V_SCAN
 from mlgshimmy.shared import autoglue
-from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
@@ -124,39 +122,3 @@ def upper_fold_curves(parts):
     upper = upper_folds(paths.rundir("fig11/upper_folds"), parts["curves"]["fold"],
                         {Fstar: parts[f"slice_{Fstar:.4f}"]["folds"] for Fstar in SLICES})
     return {"curves": [jobs.stored(d, ("V", "Fstar")) for d in upper]}
-
-
-# MX ends of two curves of one kind closer than this (in V/V_MAX and
-# F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
-# reach their common turning point inside the oleo stage switch from both
-# sides (3e-4 m/s apart); a tongue's two edges stop short of where they
-# meet (2.5 m/s apart at F* = 0.863)
-JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
-JOIN_LABELS = {"hopf": "Hopf curves from H1 and H2 meet: turning point\n"
-                       "inside the oleo stage switch (AUTO stops both)",
-               "tongue": "a tongue's two edges meet: its tip\n"
-                         "(AUTO stops both there)"}
-
-
-def mx_ends(drawn):
-    """(joins, open): the MX ends of the drawn curves, those where two
-    curves of one kind meet (JOIN_TOL) as [{"V", "Fstar", "kind",
-    "curves"}], and the others [{"V", "Fstar", "curve"}]."""
-    ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "kind": kind,
-             "curve": f"{kind}{n + 1}"}
-            for kind in ("hopf", "fold", "torus", "tongue")
-            for n, diagram in enumerate(drawn.get(kind, []))
-            for branch in jobs.loaded(diagram)
-            for i, _, _ in branches.labelled_points(branch, "MX")]
-    joins, used = [], set()
-    for a, p in enumerate(ends):
-        for b in range(a + 1, len(ends)):
-            q = ends[b]
-            if a not in used and b not in used and p["kind"] == q["kind"] in JOIN_TOL \
-                    and numpy.hypot((p["V"] - q["V"]) / V_MAX,
-                                    (p["Fstar"] - q["Fstar"]) / F_MAX) < JOIN_TOL[p["kind"]]:
-                used |= {a, b}
-                joins.append({"V": 0.5 * (p["V"] + q["V"]), "Fstar": 0.5 * (p["Fstar"] + q["Fstar"]),
-                              "kind": p["kind"], "curves": [p["curve"], q["curve"]]})
-    return joins, [{k: e[k] for k in ("V", "Fstar", "curve")}
-                   for n, e in enumerate(ends) if n not in used]

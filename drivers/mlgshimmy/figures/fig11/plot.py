@@ -1,7 +1,7 @@
 """Fig. 11 drawn from its cached result."""
 import numpy
 
-from mlgshimmy.figures.fig11.curves import JOIN_LABELS
+from mlgshimmy.figures.fig11.ends import JOIN_LABELS, SWITCH_WIDTHS
 from mlgshimmy.figures.fig11.plane import F_MAX, SLICES, V_MAX
 from mlgshimmy.figures.fig11.regions import shade
 from mlgshimmy.shared import jobs
@@ -68,6 +68,22 @@ def plot(result):
         if joins:
             handles.append(plt.Line2D([], [], color=colour, marker="o", ms=4, ls="",
                                       label=JOIN_LABELS[kind]))
+    switch_ends = result.get("stage_switch_ends", [])
+    if switch_ends:
+        for f in result["stage_switch"]:
+            ax.axhline(f, color="0.45", lw=0.7)
+        for stop in switch_ends:
+            ax.plot(stop["V"], stop["Fstar"], "D", mfc="none", mec="k", ms=5)
+        handles.append(plt.Line2D([], [], color="0.45", lw=0.7, marker="D", mfc="none",
+                                  mec="k", ms=5, label=(
+            f"oleo stage switch (|eta* - eta_s| < {SWITCH_WIDTHS:g}/k_stage)\n"
+            "and where AUTO stops a curve inside it")))
+    for stop in result.get("liftoff_ends", []):
+        ax.plot(stop["V"], stop["Fstar"], "s", mfc="none", mec="navy", ms=5)
+    if result.get("liftoff_ends"):
+        handles.append(plt.Line2D([], [], color="navy", marker="s", mfc="none", ls="", ms=5,
+                                  label="a curve ends at the lift-off edge\n"
+                                        "(AUTO stops; the wheel lifts off beyond)"))
     for stop in result["mx_stops"]:
         ax.plot(stop["V"], stop["Fstar"], "rx", ms=8)
     if result["mx_stops"]:

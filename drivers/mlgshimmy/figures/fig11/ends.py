@@ -1,0 +1,97 @@
+"""Where Fig. 11's drawn curves end inside the plane (AUTO's MX stops):
+two curves of one kind meeting at one point (mx_ends), an end inside the
+oleo's stage switch, an end at the lift-off edge (explained), and the
+others, drawn as MX crosses."""
+import numpy
+
+from mlgshimmy.figures.fig11.plane import F_MAX, V_MAX
+from mlgshimmy.shared import branches
+from mlgshimmy.shared import jobs
+
+# MX ends of two curves of one kind closer than this (in V/V_MAX and
+# F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
+# reach their common turning point inside the oleo stage switch from both
+# sides (3e-4 m/s apart); a tongue's two edges stop short of where they
+# meet (2.5 m/s apart at F* = 0.863)
+JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
+JOIN_LABELS = {"hopf": "Hopf curves from H1 and H2 meet: turning point\n"
+                       "inside the oleo stage switch (AUTO stops both)",
+               "tongue": "a tongue's two edges meet: its tip\n"
+                         "(AUTO stops both there)"}
+
+
+def mx_ends(drawn):
+    """(joins, open): the MX ends of the drawn curves, those where two
+    curves of one kind meet (JOIN_TOL) as [{"V", "Fstar", "kind",
+    "curves"}], and the others [{"V", "Fstar", "curve"}]."""
+    ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "kind": kind,
+             "curve": f"{kind}{n + 1}"}
+            for kind in ("hopf", "fold", "torus", "tongue")
+            for n, diagram in enumerate(drawn.get(kind, []))
+            for branch in jobs.loaded(diagram)
+            for i, _, _ in branches.labelled_points(branch, "MX")]
+    joins, used = [], set()
+    for a, p in enumerate(ends):
+        for b in range(a + 1, len(ends)):
+            q = ends[b]
+            if a not in used and b not in used and p["kind"] == q["kind"] in JOIN_TOL \
+                    and numpy.hypot((p["V"] - q["V"]) / V_MAX,
+                                    (p["Fstar"] - q["Fstar"]) / F_MAX) < JOIN_TOL[p["kind"]]:
+                used |= {a, b}
+                joins.append({"V": 0.5 * (p["V"] + q["V"]), "Fstar": 0.5 * (p["Fstar"] + q["Fstar"]),
+                              "kind": p["kind"], "curves": [p["curve"], q["curve"]]})
+    return joins, [{k: e[k] for k in ("V", "Fstar", "curve")}
+                   for n, e in enumerate(ends) if n not in used]
+
+
+# The stage switch as Fig. 11 marks it: eta* of straight rolling within
+# this many 1/k_stage of eta_s, where the switch's stiffness is above 1 %
+# of its peak (magnitude.stage_switch_window; F* 0.627-0.700 at the three
+# geometries run).  AUTO's step falls below DSMIN there: the H3 Hopf curve
+# stops at F* = 0.6949 (rho = mu = 10 deg, |eta* - eta_s| = 3.0 / k_stage)
+SWITCH_WIDTHS = 10.0
+# An MX end this close (in V/V_MAX, F*/F_MAX) to the lift-off edge is the
+# curve reaching it: at rho = mu = 10 deg the torus curve stops 5 m/s short
+# of the edge, its orbit's least tyre load 2.5 kN (beyond the edge the
+# wheel lifts off); a torus curve's end is joined to the edge, closing the
+# quasi-periodic region against the high-frequency one beside it
+CLOSE_TOL = 0.02
+
+
+def nearest_on_edge(stop, lift):
+    """(distance in V/V_MAX, F*/F_MAX, index) of the lift-off edge's point
+    nearest an MX end."""
+    V, F = numpy.asarray(lift["V"]), numpy.asarray(lift["Fstar"])
+    d = numpy.hypot((V - stop["V"]) / V_MAX, (F - stop["Fstar"]) / F_MAX)
+    k = int(numpy.argmin(d))
+    return float(d[k]), k
+
+
+def explained(stops, switch, lift):
+    """The MX ends that are no two curves' meeting (mx_ends' open list)
+    sorted: {"stage_switch": those with F* inside the window `switch`
+    ((F*_enter, F*_leave) or None), "liftoff": those within CLOSE_TOL of
+    the lift-off edge `lift` (liftoff_edge, or None), "open": the rest}."""
+    out = {"stage_switch": [], "liftoff": [], "open": []}
+    for stop in stops:
+        if switch and switch[0] <= stop["Fstar"] <= switch[1]:
+            out["stage_switch"].append(stop)
+        elif lift and nearest_on_edge(stop, lift)[0] < CLOSE_TOL:
+            out["liftoff"].append(stop)
+        else:
+            out["open"].append(stop)
+    return out
+
+
+def closing_segments(ends, lift):
+    """Straight edges from each torus curve's end at the lift-off edge
+    (explained's "liftoff") to the edge's nearest point, as curve_list
+    entries."""
+    out = []
+    for stop in ends:
+        if stop["curve"].startswith("torus"):
+            _, k = nearest_on_edge(stop, lift)
+            out.append({"name": f"{stop['curve']}-liftoff", "kind": "torus",
+                        "V": [stop["V"], float(lift["V"][k])],
+                        "Fstar": [stop["Fstar"], float(lift["Fstar"][k])]})
+    return out
