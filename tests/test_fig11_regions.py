@@ -94,24 +94,30 @@ def test_mx_ends_of_two_tongue_edges_joined_at_its_tip():
 
 
 LIFT = {"V": [600.0, 480.0, 470.0, 600.0], "Fstar": [0.1, 0.3, 0.5, 1.0]}
+H3 = 144.26969   # m/s, the paper's gear's third Hopf point at F* = 1 (Fig. 10)
 
 
 def test_mx_ends_inside_the_stage_switch_or_at_the_lift_off_edge_are_explained():
     """An end with F* inside the switch window is a stage-switch end (before
-    the lift-off test), one within ends.CLOSE_TOL of the lift-off edge a
-    lift-off end, the rest stay MX stops; only a torus curve's lift-off end
-    gets a closing segment, to the edge's nearest point."""
+    the other tests), a fold curve's end at a Hopf point of straight
+    rolling a generalised Hopf point (1 m/s off it not), one within
+    ends.CLOSE_TOL of the lift-off edge a lift-off end, the rest stay MX
+    stops; only a torus curve's lift-off end gets a closing segment, to
+    the edge's nearest point."""
     stops = [{"V": 137.4, "Fstar": 0.6949, "curve": "hopf6"},
              {"V": 472.6, "Fstar": 0.5407, "curve": "torus1"},
              {"V": 473.0, "Fstar": 0.5328, "curve": "tongue1"},
-             {"V": 300.0, "Fstar": 0.5407, "curve": "torus2"}]
+             {"V": 300.0, "Fstar": 0.5407, "curve": "torus2"},
+             {"V": H3, "Fstar": 1.0, "curve": "fold3"},
+             {"V": H3 - 1.0, "Fstar": 1.0, "curve": "fold4"}]
     found = ends.explained(stops, (0.627, 0.700), LIFT)
     assert [s["curve"] for s in found["stage_switch"]] == ["hopf6"], found
+    assert [s["curve"] for s in found["generalised_hopf"]] == ["fold3"], found
     assert [s["curve"] for s in found["liftoff"]] == ["torus1", "tongue1"], found
-    assert [s["curve"] for s in found["open"]] == ["torus2"], found
+    assert [s["curve"] for s in found["open"]] == ["torus2", "fold4"], found
     closing, = ends.closing_segments(found["liftoff"], LIFT)
     assert closing["V"] == [472.6, 470.0] and closing["Fstar"] == [0.5407, 0.5], closing
-    assert ends.explained(stops, None, None)["open"] == stops
+    assert ends.explained(stops, None, None)["open"] == [s for s in stops if s["curve"] != "fold3"]
 
 
 # one vertical curve at 300 m/s; the slices find the high orbit right of it

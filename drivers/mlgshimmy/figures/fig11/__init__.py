@@ -17,7 +17,8 @@ holds the map ("region_map": V, Fstar, code per F* row, names) and the
 curves bounding it ("edge_curves") for the attractor atlas."""
 import numpy
 
-from mlgshimmy.figures.fig11.curves import on_curves, stored_curves, upper_fold_curves
+from mlgshimmy.figures.fig11.curves import (on_curves, slice_hopf_curves, stored_curves,
+                                            upper_fold_curves)
 from mlgshimmy.figures.fig11.ends import SWITCH_WIDTHS, closing_segments, explained, mx_ends
 from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, liftoff_edge,
                                                   liftoff_end, liftoff_speed)
@@ -37,9 +38,10 @@ def parts():
     speeds, the eigenvalue grid and one diagram in V per slice load:
     independent jobs, about the longest first (so that the last jobs under
     make -jN are short); the torus curve and the tongue edges after the
-    large part (from its diagrams in V), the upper fold curves after the
-    slices (from their folds) and the lift-off edge's ends after the
-    speeds."""
+    large part (from its diagrams in V), the fold curves from the slices'
+    folds (upper_folds) after the slices, those from the slices' Hopf
+    points (slice_hopf) after the curves and the lift-off edge's ends
+    after the speeds."""
     slice_parts = [f"slice_{Fstar:.4f}" for Fstar in SLICES]
     # with side-stay angles the torus part starts curves from the slices too
     work = {"large": large_family,
@@ -56,6 +58,7 @@ def parts():
     work.update({part: lambda Fstar=Fstar: slice_diagram(Fstar)
                  for part, Fstar in zip(slice_parts, SLICES)})
     work["upper_folds"] = jobs.Needs(["curves"] + slice_parts, upper_fold_curves)
+    work["slice_hopf"] = jobs.Needs(["curves"], slice_hopf_curves)
     work.update({part: jobs.Needs(liftoff_parts, lambda p, part=part: liftoff_end(p, part))
                  for part in LIFTOFF_ENDS})
     return work
@@ -71,6 +74,7 @@ def compute(parts):
                                                 + large.get(f"{Fstar:.4f}", []))))
               for Fstar, part in slices.items()]
     drawn = {kind: stored[kind] for kind in ("hopf", "fold", "zero")}
+    drawn["hopf"] += parts["slice_hopf"]["curves"]
     drawn["fold"] += parts["upper_folds"]["curves"]
     drawn["torus"] = parts["torus"]["curves"]
     drawn["tongue"] = [curve for part in tongue_parts() for curve in parts[part]["curves"]] \
@@ -92,6 +96,7 @@ def compute(parts):
     print(f"fig11: {check['disagree']} of {check['samples']} slice samples disagree with "
           "their region's label")
     for kind, why in (("stage_switch", "inside the oleo stage switch"),
+                      ("generalised_hopf", "on the Hopf locus (generalised Hopf point)"),
                       ("liftoff", "at the lift-off edge"), ("open", "")):
         for stop in ends[kind]:
             print(f"{'' if why else 'REPORTED: '}fig11 {stop['curve']} stops (MX) "
@@ -110,6 +115,7 @@ def compute(parts):
                if "stationary_folds" in stored else {}),
             "mx_stops": ends["open"], "stage_switch_ends": ends["stage_switch"],
             "liftoff_ends": ends["liftoff"], "stage_switch": switch,
+            "generalised_hopf_ends": ends["generalised_hopf"],
             "edge_curves": edges, "region_check": check,
             "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
                                  "psi0": liftoff.PSI0},
@@ -138,5 +144,6 @@ def numbers(pitchforks, stored, drawn, points, lift, check, ends):
                 "slice samples off their region": check["disagree"],
                 "MX stops on drawn curves": len(ends["open"]),
                 "curve ends inside the stage switch": len(ends["stage_switch"]),
+                "fold curve ends on the Hopf locus": len(ends["generalised_hopf"]),
                 "curve ends at the lift-off edge": len(ends["liftoff"])})
     return out

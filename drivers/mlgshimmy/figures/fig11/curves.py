@@ -3,7 +3,7 @@ folds of periodic orbits (and the upper fold curves started from the
 slices' folds), the pitchforks and the zero-freeplay Hopf curve."""
 import numpy
 
-from mlgshimmy.figures.fig11.orbits import slice_rundir
+from mlgshimmy.figures.fig11.orbits import ROLLING, slice_rundir
 from mlgshimmy.figures.fig11.plane import GEOMETRY, MODEL, F_MAX, F_MIN, SLICES, STOP, V_MAX, V_SCAN
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
@@ -71,23 +71,23 @@ def on_curves(point, curves, tol=0.01):
 
 
 def upper_folds(rundir, first, folds):
-    """Curves of folds of high-frequency orbits that the fold S curve
-    (`first`, stored) does not reach: continued both ways from each fold on
-    the lowest slice above its top load (folds: {slice load: [(run name,
-    label)]}) that no curve computed so far passes through.  A direction
-    that fails (or stalls: FOLD_TIME_LIMIT) is reported and left out.  The
-    folds of the higher slices that no curve passes through start curves
-    too (a curve can stop in MX before it reaches them)."""
-    top = max(numpy.max(branch["Fstar"]) for diagram in first
-              for branch in jobs.loaded(diagram))
-    above = [f for f in SLICES if f > top and folds[f]]
-    if not above:
-        return []
+    """Curves of folds of periodic orbits (of LOW_FREQUENCY_HZ or more) that
+    the curves from the fold S (`first`, stored) do not pass: continued
+    both ways from each fold of a slice, lightest load first (folds:
+    {slice load: [(run name, label)]}), that no curve computed so far
+    passes through.  At the paper's gear these are the folds of the slices
+    above the top of the S curves (its others all lie on them); with
+    side-stay angles also folds below it (the small orbits inside the
+    freeplay that the family born above 9.3 Hz has there).  A direction
+    that fails (or stalls: FOLD_TIME_LIMIT) is reported and left out; a
+    fold on no curve at the end (a curve stopped short) is reported.  The
+    part and run names keep "upper" (the reference set's)."""
+    first = [jobs.loaded(diagram) for diagram in first]
     out, k = [], 0
-    points = [ct.load(slice_rundir(Fstar), name)(lab) for Fstar in above
+    points = [ct.load(slice_rundir(Fstar), name)(lab) for Fstar in SLICES
               for name, lab in folds[Fstar]]
     for point in points:
-        if on_curves(point, out):
+        if on_curves(point, first) or on_curves(point, out):
             continue
         k += 1
         for sign in (1, -1):
@@ -98,15 +98,58 @@ def upper_folds(rundir, first, folds):
                                          time_limit=FOLD_TIME_LIMIT))
             except autoglue.RunError as exc:
                 print(f"REPORTED: {name} left out: {exc.brief}")
-    # every fold of the slices above must lie on a curve (a curve started
-    # from a spurious point, or stopped short, shows here)
-    missed = [p for p in points if not on_curves(p, out)]
+    missed = [p for p in points if not (on_curves(p, first) or on_curves(p, out))]
     for p in missed:
         print(f"REPORTED: fig11 slice fold at V = {p['V']:.4g}, F* = {p['Fstar']:.4g} "
-              "lies on no upper fold curve")
-    print(f"fig11: {len(points) - len(missed)} of {len(points)} slice folds above "
-          f"F* = {top:.4g} lie on the upper fold curves")
+              "lies on no fold curve")
+    print(f"fig11: {len(points) - len(missed)} of {len(points)} slice folds lie on the "
+          f"fold curves ({k} started from them)")
     return out
+
+
+def slice_hopf(rundir, first, parameter_set="figures"):
+    """Hopf curves of straight rolling that the curves from F* = 1 (`first`,
+    stored) do not pass: continued both ways from each Hopf point of a
+    slice (an eigenvalue scan in V at the slice load, lightest first) that
+    no curve computed so far passes through.  At the paper's gear every one
+    lies on them (56 of 56, so no run is made); with side-stay angles the
+    H3 curve stops inside the oleo stage switch, and the curves below the
+    switch and of other modes start here.  A start or direction that fails
+    is reported and left out."""
+    first = [jobs.loaded(diagram) for diagram in first]
+    out, k = [], 0
+    for Fstar in SLICES:
+        state = ROLLING and (lambda V, F=Fstar: ROLLING(F, parameter_set))
+        for V, _ in spectrum.hopf_scan(parameter_set, "V", V_SCAN, state=state, Fstar=Fstar,
+                                       **MODEL):
+            at = {"V": V, "Fstar": Fstar}
+            if on_curves(at, first) or on_curves(at, out):
+                continue
+            k += 1
+            try:
+                point = ct.hopf_point(rundir, f"hb_slice{k}", parameter_set, "V", V,
+                                      state=state, Fstar=Fstar, **MODEL)
+            except autoglue.RunError as exc:
+                print(f"REPORTED: fig11 Hopf point at V = {V:.4g}, F* = {Fstar:.4g} "
+                      f"not located: {exc.brief}")
+                continue
+            for sign in (1, -1):
+                name = f"hopf_slice{k}{'+-'[sign < 0]}"
+                try:
+                    out.append(ct.hopf_curve(rundir, name, point, ("Fstar", "V"), stop=STOP,
+                                             overlay="stage_switch", DS=0.002 * sign,
+                                             DSMAX=0.02, NMX=5000, allow_mx=True))
+                except autoglue.RunError as exc:
+                    print(f"REPORTED: {name} left out: {exc.brief}")
+    print(f"fig11: {k} Hopf curves started from the slices' Hopf points")
+    return out
+
+
+def slice_hopf_curves(parts):
+    """A part: the Hopf curves from the slices' Hopf points (slice_hopf),
+    stored: {"curves": [stored diagrams]}."""
+    found = slice_hopf(paths.rundir("fig11/slice_hopf"), parts["curves"]["hopf"])
+    return {"curves": [jobs.stored(d, ("V", "Fstar")) for d in found]}
 
 
 def stored_curves():
@@ -117,7 +160,7 @@ def stored_curves():
 
 
 def upper_fold_curves(parts):
-    """A part: the upper fold curves (upper_folds) from the slices' folds,
+    """A part: the fold curves from the slices' folds (upper_folds),
     stored: {"curves": [stored diagrams]}."""
     upper = upper_folds(paths.rundir("fig11/upper_folds"), parts["curves"]["fold"],
                         {Fstar: parts[f"slice_{Fstar:.4f}"]["folds"] for Fstar in SLICES})

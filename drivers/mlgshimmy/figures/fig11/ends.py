@@ -1,12 +1,13 @@
 """Where Fig. 11's drawn curves end inside the plane (AUTO's MX stops):
 two curves of one kind meeting at one point (mx_ends), an end inside the
-oleo's stage switch, an end at the lift-off edge (explained), and the
-others, drawn as MX crosses."""
+oleo's stage switch, a fold curve's end on the Hopf locus, an end at the
+lift-off edge (explained), and the others, drawn as MX crosses."""
 import numpy
 
-from mlgshimmy.figures.fig11.plane import F_MAX, V_MAX
+from mlgshimmy.figures.fig11.plane import F_MAX, FREEPLAY, GEOMETRY, V_MAX
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import magnitude
 
 # MX ends of two curves of one kind closer than this (in V/V_MAX and
 # F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
@@ -56,6 +57,20 @@ SWITCH_WIDTHS = 10.0
 # wheel lifts off); a torus curve's end is joined to the edge, closing the
 # quasi-periodic region against the high-frequency one beside it
 CLOSE_TOL = 0.02
+# A fold curve's MX end where straight rolling has a complex pair with a
+# real part below this [1/s] is a generalised Hopf point: the fold's orbits
+# shrink onto straight rolling there and AUTO cannot go on (rho = mu = 10
+# deg, F* = 0.0263 and 1.444: psi amplitude 1e-6 at the ends, the pair's
+# real part -0.017 and +0.017 /s 0.5 m/s either side)
+GH_RATE = 1e-3
+
+
+def on_hopf_locus(stop):
+    """Whether straight rolling at the end's (V, F*) has a complex pair of
+    eigenvalues within GH_RATE of the imaginary axis."""
+    rates = magnitude.growth(stop["Fstar"], FREEPLAY["yfp"], stop["V"], scaling="ratio",
+                             **GEOMETRY)
+    return min(abs(rates["low"]), abs(rates["high"])) < GH_RATE
 
 
 def nearest_on_edge(stop, lift):
@@ -70,12 +85,16 @@ def nearest_on_edge(stop, lift):
 def explained(stops, switch, lift):
     """The MX ends that are no two curves' meeting (mx_ends' open list)
     sorted: {"stage_switch": those with F* inside the window `switch`
-    ((F*_enter, F*_leave) or None), "liftoff": those within CLOSE_TOL of
-    the lift-off edge `lift` (liftoff_edge, or None), "open": the rest}."""
-    out = {"stage_switch": [], "liftoff": [], "open": []}
+    ((F*_enter, F*_leave) or None), "generalised_hopf": ends of fold curves
+    on the Hopf locus of straight rolling (on_hopf_locus), "liftoff": those
+    within CLOSE_TOL of the lift-off edge `lift` (liftoff_edge, or None),
+    "open": the rest}."""
+    out = {"stage_switch": [], "generalised_hopf": [], "liftoff": [], "open": []}
     for stop in stops:
         if switch and switch[0] <= stop["Fstar"] <= switch[1]:
             out["stage_switch"].append(stop)
+        elif stop["curve"].startswith("fold") and on_hopf_locus(stop):
+            out["generalised_hopf"].append(stop)
         elif lift and nearest_on_edge(stop, lift)[0] < CLOSE_TOL:
             out["liftoff"].append(stop)
         else:

@@ -20,7 +20,7 @@ from mlgshimmy.shared import yawed
 # Hz (the large family, 16-47 Hz, is not Hopf-born in range); a fixed split
 # of each orbit's own frequency cut one family (5-14 Hz at F* > 2) in two.
 FAMILY_SPLIT_HZ = 9.3
-LOW_FREQUENCY_HZ = 8.0   # folds above it start the upper fold curves
+LOW_FREQUENCY_HZ = 8.0   # folds above it start fold curves (curves.upper_folds)
 
 
 def large_seed(rundir, parameter_set="figures"):

@@ -78,6 +78,12 @@ def plot(result):
                                   mec="k", ms=5, label=(
             f"oleo stage switch (|eta* - eta_s| < {SWITCH_WIDTHS:g}/k_stage)\n"
             "and where AUTO stops a curve inside it")))
+    for stop in result.get("generalised_hopf_ends", []):
+        ax.plot(stop["V"], stop["Fstar"], "*", color="b", ms=8)
+    if result.get("generalised_hopf_ends"):
+        handles.append(plt.Line2D([], [], color="b", marker="*", ls="", ms=8,
+                                  label="a fold curve ends on the Hopf locus (generalised\n"
+                                        "Hopf point: its orbits shrink to straight rolling)"))
     for stop in result.get("liftoff_ends", []):
         ax.plot(stop["V"], stop["Fstar"], "s", mfc="none", mec="navy", ms=5)
     if result.get("liftoff_ends"):
