@@ -209,3 +209,11 @@ def test_every_tongue_edge_drawn_is_a_part():
     assert len(fig11.tongue_parts()) == 4, fig11.tongue_parts()
     missing = set(fig11.tongue_parts()) - set(fig11.parts())
     assert not missing, f"tongue edges compute draws that make does not run as parts: {missing}"
+
+
+def test_hopf_joins_outside_the_stage_switch_are_named_apart():
+    joins = [{"kind": "hopf", "Fstar": 0.685}, {"kind": "hopf", "Fstar": 0.267},
+             {"kind": "tongue", "Fstar": 0.267}]
+    kinds = [j["kind"] for j in ends.joins_outside(joins, (0.627, 0.700))]
+    assert kinds == ["hopf", "hopf_elsewhere", "tongue"], kinds
+    assert [j["kind"] for j in ends.joins_outside(joins, None)][0] == "hopf_elsewhere"

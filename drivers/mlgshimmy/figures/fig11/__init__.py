@@ -19,7 +19,8 @@ import numpy
 
 from mlgshimmy.figures.fig11.curves import (on_curves, slice_hopf_curves, stored_curves,
                                             upper_fold_curves)
-from mlgshimmy.figures.fig11.ends import SWITCH_WIDTHS, closing_segments, explained, mx_ends
+from mlgshimmy.figures.fig11.ends import (SWITCH_WIDTHS, closing_segments, explained, joins_outside,
+                                          mx_ends)
 from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, liftoff_edge,
                                                   liftoff_end, liftoff_speed)
 from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits,
@@ -85,7 +86,7 @@ def compute(parts):
     edges = curve_list(drawn, pitchforks, lift)
     joins, stops = mx_ends(drawn)
     switch = magnitude.stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
-    ends = explained(stops, switch, lift)
+    joins, ends = joins_outside(joins, switch), explained(stops, switch, lift)
     edges += closing_segments(ends["liftoff"], lift)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
                               numpy.asarray(parts["yaw"], dtype=bool), lift)

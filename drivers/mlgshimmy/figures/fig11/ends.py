@@ -15,8 +15,10 @@ from mlgshimmy.shared import magnitude
 # sides (3e-4 m/s apart); a tongue's two edges stop short of where they
 # meet (2.5 m/s apart at F* = 0.863)
 JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
-JOIN_LABELS = {"hopf": "Hopf curves from H1 and H2 meet: turning point\n"
-                       "inside the oleo stage switch (AUTO stops both)",
+JOIN_LABELS = {"hopf": "two Hopf curves meet inside the oleo stage\n"
+                       "switch (AUTO stops both; at the paper's gear H1's and H2's)",
+               "hopf_elsewhere": "two Hopf curves meet where AUTO stops both\n"
+                                 "(outside the stage switch; not resolved)",
                "tongue": "a tongue's two edges meet: its tip\n"
                          "(AUTO stops both there)"}
 
@@ -73,6 +75,20 @@ def on_hopf_locus(stop):
     return min(abs(rates["low"]), abs(rates["high"])) < GH_RATE
 
 
+def inside(switch, Fstar):
+    """Whether F* lies in the stage-switch window (F*_enter, F*_leave), or None."""
+    return bool(switch) and switch[0] <= Fstar <= switch[1]
+
+
+def joins_outside(joins, switch):
+    """The joins (mx_ends) with Hopf joins outside the stage-switch window
+    `switch` (or None) of kind "hopf_elsewhere": at side-stay angles Hopf
+    curves from the slices also meet in pairs at loads away from it
+    (rho = -10, mu = 20 deg: F* = 0.267 and 0.876)."""
+    return [{**j, "kind": "hopf_elsewhere"}
+            if j["kind"] == "hopf" and not inside(switch, j["Fstar"]) else j for j in joins]
+
+
 def nearest_on_edge(stop, lift):
     """(distance in V/V_MAX, F*/F_MAX, index) of the lift-off edge's point
     nearest an MX end."""
@@ -91,7 +107,7 @@ def explained(stops, switch, lift):
     "open": the rest}."""
     out = {"stage_switch": [], "generalised_hopf": [], "liftoff": [], "open": []}
     for stop in stops:
-        if switch and switch[0] <= stop["Fstar"] <= switch[1]:
+        if inside(switch, stop["Fstar"]):
             out["stage_switch"].append(stop)
         elif stop["curve"].startswith("fold") and on_hopf_locus(stop):
             out["generalised_hopf"].append(stop)

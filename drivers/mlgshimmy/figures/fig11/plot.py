@@ -61,7 +61,7 @@ def plot(result):
         handles.append(plt.Line2D([], [], color="navy", marker="o", ms=3, label=(
             f"wheel lift-off within {result['liftoff']['t_end']:g} s from straight\n"
             "rolling (bisection in V and on V = 600 in F*)")))
-    for kind, colour in (("hopf", "k"), ("tongue", "m")):
+    for kind, colour in (("hopf", "k"), ("hopf_elsewhere", "0.5"), ("tongue", "m")):
         joins = [j for j in result["mx_joins"] if j["kind"] == kind]
         for join in joins:
             ax.plot(join["V"], join["Fstar"], "o", color=colour, ms=4)
