@@ -10,16 +10,22 @@ export PYTHONPATH := $(CURDIR)/drivers$(if $(PYTHONPATH),:$(PYTHONPATH))
 
 # $(call stamp,<file>,<text>): <file> holds <text>, rewritten only when the
 # text changes (so its time says when), while make reads its makefiles: no
-# shell sees the text, and `make -n` is exact about what depends on it.
-# Only when a goal may build: `make help AUTO_THREADS=2` or a redraw with
-# another AUTO_DIR must not mark every result out of date.
+# shell sees the text.  Only when a goal may build: `make help AUTO_THREADS=2`
+# or a redraw with another AUTO_DIR must not mark every result out of date.
+# A dry run writes nothing either (`make -n fig11 AUTO_THREADS=2` had left
+# the stamp at 2, so the next plain make redid every result): there a
+# changed text makes <file> depend on a phony target instead, so that
+# `make -n` still lists what depends on it.
 STAMP_GOALS := $(filter-out help clean distclean forget-auto %-plot,$(or $(MAKECMDGOALS),help))
-stamp = $(if $(STAMP_GOALS),$(if $(filter-out $(strip $(2)),$(strip $(file < $(1))))$(if \
-    $(wildcard $(1)),,x),$(shell mkdir -p $(call shell_quote,$(dir $(1))))$(file > $(1),$(strip $(2)))))
-
-# `make -n` runs recipe lines that call $(MAKE); those check DRY_RUN so that
-# a dry run prints what it would do instead of doing it.
 DRY_RUN := $(findstring n,$(firstword -$(MAKEFLAGS)))
+stamp = $(if $(STAMP_GOALS),$(if $(filter-out $(strip $(2)),$(strip $(file < $(1))))$(if \
+    $(wildcard $(1)),,x),$(if $(DRY_RUN),$(eval $(1): stamp-changed ; @:),$(shell mkdir -p \
+    $(call shell_quote,$(dir $(1))))$(file > $(1),$(strip $(2))))))
+.PHONY: stamp-changed
+stamp-changed: ;
+
+# `make -n` runs recipe lines that call $(MAKE); those check DRY_RUN (above)
+# so that a dry run prints what it would do instead of doing it.
 # No driver's import closure is needed to clean or to print the help.
 PY_DEPS_WANTED := $(if $(filter-out clean help,$(or $(MAKECMDGOALS),all)),yes)
 

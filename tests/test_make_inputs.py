@@ -134,10 +134,19 @@ def test_make_deletes_a_target_whose_recipe_failed():
 
 
 def test_a_result_depends_on_the_thread_count(clone):
-    make(clone, "-n", *OLD, "fig07")
+    """A result made with one AUTO thread count is out of date for another
+    (the stamp build/auto-link/auto-threads, written by a make that may
+    build); a dry run says so but writes no stamp, so the next plain make
+    does not redo every result."""
+    stamp = clone / "build" / "auto-link" / "auto-threads"
+    stamp.parent.mkdir(parents=True, exist_ok=True)
+    stamp.write_text("1")                   # as a make with AUTO_THREADS=1 left it
     os.makedirs(clone / "build" / "fig07", exist_ok=True)
     (clone / "build" / "fig07" / "result.json").write_text("{}")
-    assert compute_lines(make(clone, "-n", *OLD, "fig07")) == []
-    assert compute_lines(make(clone, "-n", *OLD, "fig07", "AUTO_THREADS=2")) == ["fig07"]
-    (clone / "build" / "fig07" / "result.json").write_text("{}")
-    assert compute_lines(make(clone, "-n", *OLD, "fig07", "AUTO_THREADS=2")) == []
+    before = stamp.stat().st_mtime_ns
+    assert compute_lines(make(clone, "-n", *OLD, "fig07", "AUTO_THREADS=1")) == []
+    for _ in range(2):
+        assert compute_lines(make(clone, "-n", *OLD, "fig07", "AUTO_THREADS=2")) == ["fig07"]
+    assert stamp.read_text() == "1" and stamp.stat().st_mtime_ns == before, \
+        "a dry run rewrote the thread-count stamp"
+    assert compute_lines(make(clone, "-n", *OLD, "fig07", "AUTO_THREADS=1")) == []
