@@ -9,18 +9,22 @@
 export PYTHONPATH := $(CURDIR)/drivers$(if $(PYTHONPATH),:$(PYTHONPATH))
 
 # $(call stamp,<file>,<text>): <file> holds <text>, rewritten only when the
-# text changes (so its time says when), while make reads its makefiles: no
-# shell sees the text.  Only when a goal may build: `make help AUTO_THREADS=2`
-# or a redraw with another AUTO_DIR must not mark every result out of date.
-# A dry run writes nothing either (`make -n fig11 AUTO_THREADS=2` had left
-# the stamp at 2, so the next plain make redid every result): there a
-# changed text makes <file> depend on a phony target instead, so that
-# `make -n` still lists what depends on it.
+# text changes (so its time says when; a word added or removed is a change),
+# while make reads its makefiles: no shell sees the text.  Only when a goal
+# may build: `make help AUTO_THREADS=2` or a redraw with another AUTO_DIR
+# must not mark every result out of date.  A dry run writes a missing stamp
+# (a real make would, with the same effect) but never rewrites one (`make -n
+# fig11 AUTO_THREADS=2` had left the stamp at 2, so the next plain make
+# redid every result): a changed text makes <file> depend on a phony target
+# instead, so that `make -n` still lists what depends on it.
 STAMP_GOALS := $(filter-out help clean distclean forget-auto %-plot,$(or $(MAKECMDGOALS),help))
 DRY_RUN := $(findstring n,$(firstword -$(MAKEFLAGS)))
-stamp = $(if $(STAMP_GOALS),$(if $(filter-out $(strip $(2)),$(strip $(file < $(1))))$(if \
-    $(wildcard $(1)),,x),$(if $(DRY_RUN),$(eval $(1): stamp-changed ; @:),$(shell mkdir -p \
-    $(call shell_quote,$(dir $(1))))$(file > $(1),$(strip $(2))))))
+stamp_write = $(shell mkdir -p $(call shell_quote,$(dir $(1))))$(file > $(1),$(strip $(2)))
+stamp_differs = $(filter-out $(strip $(2)),$(strip $(file < $(1))))$(filter-out \
+    $(strip $(file < $(1))),$(strip $(2)))
+stamp = $(if $(STAMP_GOALS),$(if $(wildcard $(1)),$(if $(call stamp_differs,$(1),$(2)),$(if \
+    $(DRY_RUN),$(eval $(1): stamp-changed ; @:),$(call stamp_write,$(1),$(2)))),$(call \
+    stamp_write,$(1),$(2))))
 .PHONY: stamp-changed
 stamp-changed: ;
 

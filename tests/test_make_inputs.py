@@ -150,3 +150,22 @@ def test_a_result_depends_on_the_thread_count(clone):
     assert stamp.read_text() == "1" and stamp.stat().st_mtime_ns == before, \
         "a dry run rewrote the thread-count stamp"
     assert compute_lines(make(clone, "-n", *OLD, "fig07", "AUTO_THREADS=1")) == []
+
+
+def test_a_package_added_to_the_list_reinstalls(clone):
+    """The package list is a stamp: one package more than the stamp holds
+    is a change (the stamp compared word by word both ways), which a dry
+    run lists without rewriting the stamp."""
+    listed = make(clone, "-n", "-p", "help").stdout
+    packages = next(line.split(":=", 1)[1].split() for line in listed.splitlines()
+                    if line.startswith("PACKAGES :="))
+    stamp, installed = clone / "build" / ".packages-list", clone / "build" / ".stamp-packages"
+    stamp.parent.mkdir(parents=True, exist_ok=True)
+    stamp.write_text(" ".join(packages[:-1]))
+    installed.write_text("")
+    os.utime(installed, (stamp.stat().st_mtime + 10,) * 2)
+    assert "mk/install-packages.sh" in make(clone, "-n", "packages").stdout
+    assert stamp.read_text() == " ".join(packages[:-1]), "a dry run rewrote the package list"
+    stamp.write_text(" ".join(packages))
+    os.utime(installed, (stamp.stat().st_mtime + 10,) * 2)
+    assert "mk/install-packages.sh" not in make(clone, "-n", "packages").stdout
