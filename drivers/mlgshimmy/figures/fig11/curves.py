@@ -15,6 +15,14 @@ from mlgshimmy.shared import stationary
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
 
 
+def hopf_curve(rundir, name, point, sign):
+    """A Hopf curve of Fig. 11 from `point` in (F*, V), first step DS = 0.002
+    sign: steps down to 1e-10 (the stage-switch overlay) so that it
+    reaches its turning point inside the oleo's stage switch."""
+    return ct.hopf_curve(rundir, name, point, ("Fstar", "V"), stop=STOP, overlay="stage_switch",
+                         DS=0.002 * sign, DSMAX=0.02, NMX=5000, allow_mx=True)
+
+
 def curves(rundir, parameter_set="figures"):
     """Hopf and fold curves continued from the F* = 1 points of Fig. 10, the
     zero-freeplay Hopf curve and the pitchfork loads (at three speeds: they
@@ -24,9 +32,7 @@ def curves(rundir, parameter_set="figures"):
     points = ct.hopf_points(rundir, "hb", parameter_set, "V", V_SCAN, Fstar=1.0, **MODEL)
     for k, point in enumerate(points):
         for sign in (1, -1):
-            out["hopf"].append(ct.hopf_curve(
-                rundir, f"hopf{k + 1}{'+-'[sign < 0]}", point, ("Fstar", "V"), stop=STOP,
-                overlay="stage_switch", DS=0.002 * sign, DSMAX=0.02, NMX=5000, allow_mx=True))
+            out["hopf"].append(hopf_curve(rundir, f"hopf{k + 1}{'+-'[sign < 0]}", point, sign))
     # the fold S, located on an orbit run with the base step sizes (the fold
     # located on Fig. 10's finer-stepped run does not start the fold curve)
     high = ct.periodic_from(rundir, "po_fold", points[-1], stop={"V": [30.0, 200.0]},
@@ -136,9 +142,7 @@ def slice_hopf(rundir, first, parameter_set="figures"):
             for sign in (1, -1):
                 name = f"hopf_slice{k}{'+-'[sign < 0]}"
                 try:
-                    out.append(ct.hopf_curve(rundir, name, point, ("Fstar", "V"), stop=STOP,
-                                             overlay="stage_switch", DS=0.002 * sign,
-                                             DSMAX=0.02, NMX=5000, allow_mx=True))
+                    out.append(hopf_curve(rundir, name, point, sign))
                 except autoglue.RunError as exc:
                     print(f"REPORTED: {name} left out: {exc.brief}")
     print(f"fig11: {k} Hopf curves started from the slices' Hopf points")
