@@ -11,7 +11,7 @@ import pytest
 from mlgshimmy.figures import fig11
 from mlgshimmy.figures.fig11 import ends, plane, tori
 from mlgshimmy.figures.fig11 import regions as fig11_regions
-from mlgshimmy.shared import regions
+from mlgshimmy.shared import jobs, regions
 from mlgshimmy.studies.atlas import compare as atlas_compare
 
 slice_row = fig11_regions.slice_row
@@ -118,6 +118,30 @@ def test_mx_ends_inside_the_stage_switch_or_at_the_lift_off_edge_are_explained()
     closing, = ends.closing_segments(found["liftoff"], LIFT)
     assert closing["V"] == [472.6, 470.0] and closing["Fstar"] == [0.5407, 0.5], closing
     assert ends.explained(stops, None, None)["open"] == [s for s in stops if s["curve"] != "fold3"]
+
+
+def test_a_torus_curves_end_on_a_fold_curve_is_explained_a_fold_curves_not():
+    """A torus or tongue curve's MX end within ends.FOLD_TOL of a fold curve
+    is an end on it; 2 m/s off it, or a fold curve's own end there, stays
+    a stop."""
+    fold = [branch([40.0, 60.0, 80.0], [0.05, 0.03, 0.02], False)]
+    stops = [{"V": 59.58, "Fstar": 0.0311, "curve": "tongue1"},
+             {"V": 60.0, "Fstar": 0.03, "curve": "torus2"},
+             {"V": 62.0, "Fstar": 0.03, "curve": "torus3"},
+             {"V": 60.0, "Fstar": 0.03, "curve": "fold5"}]
+    found = ends.explained(stops, None, None, [jobs.loaded(fold)])
+    assert [s["curve"] for s in found["on_fold"]] == ["tongue1", "torus2"], found
+    assert [s["curve"] for s in found["open"]] == ["torus3", "fold5"], found
+    assert ends.explained(stops, None, None)["open"] == stops
+
+
+def test_mx_ends_beyond_the_plane_are_not_ends_in_it():
+    """A curve started on the plane's lower edge that stops below it (F* =
+    0.0095) has no end in the plane; one that stops on the edge has."""
+    drawn = {"hopf": [[branch([138.0, 224.4], [plane.F_MIN, 0.0095], True)],
+                      [branch([138.0, 150.0], [0.05, plane.F_MIN], True)]]}
+    joins, stops = ends.mx_ends(drawn)
+    assert joins == [] and stops == [{"V": 150.0, "Fstar": plane.F_MIN, "curve": "hopf2"}]
 
 
 # one vertical curve at 300 m/s; the slices find the high orbit right of it

@@ -17,21 +17,19 @@ holds the map ("region_map": V, Fstar, code per F* row, names) and the
 curves bounding it ("edge_curves") for the attractor atlas."""
 import numpy
 
-from mlgshimmy.figures.fig11.curves import (on_curves, slice_hopf_curves, stored_curves,
+from mlgshimmy.figures.fig11.curves import (slice_hopf_curves, stage_switch, stored_curves,
                                             upper_fold_curves)
-from mlgshimmy.figures.fig11.ends import (SWITCH_WIDTHS, closing_segments, explained, joins_outside,
-                                          mx_ends)
+from mlgshimmy.figures.fig11.ends import closing_segments, explained, joins_outside, mx_ends
 from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, liftoff_edge,
                                                   liftoff_end, liftoff_speed)
 from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits,
                                             straight_rolling_stable)
-from mlgshimmy.figures.fig11.plane import F_GRID, F_MAX, F_MIN, GEOMETRY, SLICES, V_GRID
+from mlgshimmy.figures.fig11.plane import F_GRID, SLICES, V_GRID, on_curves
 from mlgshimmy.figures.fig11.regions import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
                                                 region_map, region_name, slice_codes, yaw_stable)
 from mlgshimmy.figures.fig11.tori import PINNED, TONGUE_TOL, tongue_curve, tongue_parts, torus_curves
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import liftoff
-from mlgshimmy.shared import magnitude
 
 
 def parts():
@@ -85,8 +83,9 @@ def compute(parts):
                         [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
     edges = curve_list(drawn, pitchforks, lift)
     joins, stops = mx_ends(drawn)
-    switch = magnitude.stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
-    joins, ends = joins_outside(joins, switch), explained(stops, switch, lift)
+    switch = stage_switch()
+    joins = joins_outside(joins, switch)
+    ends = explained(stops, switch, lift, [jobs.loaded(d) for d in drawn["fold"]])
     edges += closing_segments(ends["liftoff"], lift)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
                               numpy.asarray(parts["yaw"], dtype=bool), lift)
@@ -98,6 +97,7 @@ def compute(parts):
           "their region's label")
     for kind, why in (("stage_switch", "inside the oleo stage switch"),
                       ("generalised_hopf", "on the Hopf locus (generalised Hopf point)"),
+                      ("on_fold", "on a fold curve"),
                       ("liftoff", "at the lift-off edge"), ("open", "")):
         for stop in ends[kind]:
             print(f"{'' if why else 'REPORTED: '}fig11 {stop['curve']} stops (MX) "
@@ -116,7 +116,7 @@ def compute(parts):
                if "stationary_folds" in stored else {}),
             "mx_stops": ends["open"], "stage_switch_ends": ends["stage_switch"],
             "liftoff_ends": ends["liftoff"], "stage_switch": switch,
-            "generalised_hopf_ends": ends["generalised_hopf"],
+            "generalised_hopf_ends": ends["generalised_hopf"], "on_fold_ends": ends["on_fold"],
             "edge_curves": edges, "region_check": check,
             "liftoff": lift and {"points": lift["points"], "t_end": liftoff.T_END,
                                  "psi0": liftoff.PSI0},
@@ -146,5 +146,6 @@ def numbers(pitchforks, stored, drawn, points, lift, check, ends):
                 "MX stops on drawn curves": len(ends["open"]),
                 "curve ends inside the stage switch": len(ends["stage_switch"]),
                 "fold curve ends on the Hopf locus": len(ends["generalised_hopf"]),
+                "torus curve ends on a fold curve": len(ends["on_fold"]),
                 "curve ends at the lift-off edge": len(ends["liftoff"])})
     return out

@@ -3,16 +3,25 @@ folds of periodic orbits (and the upper fold curves started from the
 slices' folds), the pitchforks and the zero-freeplay Hopf curve."""
 import numpy
 
+from mlgshimmy.figures.fig11.ends import SWITCH_WIDTHS, explained
 from mlgshimmy.figures.fig11.orbits import ROLLING, slice_rundir
-from mlgshimmy.figures.fig11.plane import GEOMETRY, MODEL, F_MAX, F_MIN, SLICES, STOP, V_MAX, V_SCAN
+from mlgshimmy.figures.fig11.plane import (GEOMETRY, MODEL, F_MAX, F_MIN, SLICES, STOP, V_SCAN,
+                                           on_curves)
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import magnitude
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import stationary
 
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
+# A fold curve that AUTO stops (MX) where nothing explains it (ends.explained:
+# not inside the stage switch, not on the Hopf locus) is run again on this
+# finer mesh (the base constants' NTST is 80), FINE_COST times the time
+# limit: at rho = mu = 10 deg the 42 Hz fold curve turns in V at
+# (473.79 m/s, F* = 0.981), where NTST 80 and 160 stop and 400 turns.
+FINE_NTST, FINE_COST = 400, 5
 
 
 def hopf_curve(rundir, name, point, sign):
@@ -21,6 +30,32 @@ def hopf_curve(rundir, name, point, sign):
     reaches its turning point inside the oleo's stage switch."""
     return ct.hopf_curve(rundir, name, point, ("Fstar", "V"), stop=STOP, overlay="stage_switch",
                          DS=0.002 * sign, DSMAX=0.02, NMX=5000, allow_mx=True)
+
+
+def fold_curve(rundir, name, point, sign, **kw):
+    """A fold curve of Fig. 11 from the LP `point`, first step DS = 0.05 sign,
+    again on the mesh FINE_NTST (run <name>_fine) if it stops (MX) where
+    nothing explains it; the coarse run is kept if the fine one fails."""
+    options = {"stop": STOP, "DS": 0.05 * sign, "DSMAX": 1.0, "NMX": 400, "allow_mx": True, **kw}
+    coarse = ct.fold_curve(rundir, name, point, ("V", "Fstar"), **options)
+    stops = [{"V": p["V"], "Fstar": p["Fstar"], "curve": "fold"} for p in coarse("MX")]
+    if not stops or not explained(stops, stage_switch(), None)["open"]:
+        return coarse
+    print(f"fig11: {name} stops (MX) at V = {stops[-1]['V']:.4g}, F* = {stops[-1]['Fstar']:.4g}: "
+          f"again with NTST = {FINE_NTST}")
+    if "time_limit" in options:
+        options["time_limit"] *= FINE_COST
+    try:
+        return ct.fold_curve(rundir, f"{name}_fine", point, ("V", "Fstar"), NTST=FINE_NTST,
+                             **options)
+    except autoglue.RunError as exc:
+        print(f"REPORTED: {name}_fine failed ({exc.brief}); the run on the base mesh is kept")
+        return coarse
+
+
+def stage_switch():
+    """The stage-switch window of the plane's loads (ends.inside)."""
+    return magnitude.stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
 
 
 def curves(rundir, parameter_set="figures"):
@@ -39,9 +74,7 @@ def curves(rundir, parameter_set="figures"):
                             NMX=400, expect=["LP"])
     for k, point in enumerate(high("LP")):
         for sign in (1, -1):
-            out["fold"].append(ct.fold_curve(
-                rundir, f"fold{k + 1}{'+-'[sign < 0]}", point, ("V", "Fstar"), stop=STOP,
-                DS=0.05 * sign, DSMAX=1.0, NMX=400, allow_mx=True))
+            out["fold"].append(fold_curve(rundir, f"fold{k + 1}{'+-'[sign < 0]}", point, sign))
     zero, = ct.hopf_points(rundir, "hb_zero", parameter_set, "V", V_SCAN, Fstar=1.0, yfp=0.0,
                            **GEOMETRY)
     for sign in (1, -1):
@@ -68,14 +101,6 @@ def curves(rundir, parameter_set="figures"):
     return out
 
 
-def on_curves(point, curves, tol=0.01):
-    """Whether the fold `point` lies on one of the computed fold curves
-    (distance in V/V_MAX and F*/F_MAX below tol)."""
-    return any(numpy.min(numpy.hypot((numpy.asarray(branch["V"]) - point["V"]) / V_MAX,
-                                     (numpy.asarray(branch["Fstar"]) - point["Fstar"]) / F_MAX))
-               < tol for curve in curves for branch in curve)
-
-
 def upper_folds(rundir, first, folds):
     """Curves of folds of periodic orbits (of LOW_FREQUENCY_HZ or more) that
     the curves from the fold S (`first`, stored) do not pass: continued
@@ -99,9 +124,7 @@ def upper_folds(rundir, first, folds):
         for sign in (1, -1):
             name = f"fold_upper{k}{'+-'[sign < 0]}"
             try:
-                out.append(ct.fold_curve(rundir, name, point, ("V", "Fstar"), stop=STOP,
-                                         DS=0.05 * sign, DSMAX=1.0, NMX=400, allow_mx=True,
-                                         time_limit=FOLD_TIME_LIMIT))
+                out.append(fold_curve(rundir, name, point, sign, time_limit=FOLD_TIME_LIMIT))
             except autoglue.RunError as exc:
                 print(f"REPORTED: {name} left out: {exc.brief}")
     missed = [p for p in points if not (on_curves(p, first) or on_curves(p, out))]

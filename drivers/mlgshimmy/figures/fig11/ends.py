@@ -1,10 +1,12 @@
 """Where Fig. 11's drawn curves end inside the plane (AUTO's MX stops):
 two curves of one kind meeting at one point (mx_ends), an end inside the
-oleo's stage switch, a fold curve's end on the Hopf locus, an end at the
-lift-off edge (explained), and the others, drawn as MX crosses."""
+oleo's stage switch, a fold curve's end on the Hopf locus, a torus curve's
+end on a fold curve, an end at the lift-off edge (explained), and the
+others, drawn as MX crosses."""
 import numpy
 
-from mlgshimmy.figures.fig11.plane import F_MAX, FREEPLAY, GEOMETRY, V_MAX
+from mlgshimmy.figures.fig11.plane import (F_MAX, F_MIN, FREEPLAY, GEOMETRY, V_MAX, V_MIN,
+                                           on_curves)
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude
@@ -23,16 +25,25 @@ JOIN_LABELS = {"hopf": "two Hopf curves meet inside the oleo stage\n"
                          "(AUTO stops both there)"}
 
 
+def in_plane(point):
+    """Whether (V, F*) lies inside the plane's edges: a curve started on the
+    edge F* = F_MIN (a Hopf or torus point of the edge's slice) that steps
+    out of it crosses no stop there and ends beyond it."""
+    return V_MIN <= point["V"] <= V_MAX and F_MIN <= point["Fstar"] <= F_MAX
+
+
 def mx_ends(drawn):
-    """(joins, open): the MX ends of the drawn curves, those where two
-    curves of one kind meet (JOIN_TOL) as [{"V", "Fstar", "kind",
-    "curves"}], and the others [{"V", "Fstar", "curve"}]."""
+    """(joins, open): the MX ends of the drawn curves inside the plane
+    (in_plane), those where two curves of one kind meet (JOIN_TOL) as
+    [{"V", "Fstar", "kind", "curves"}], and the others [{"V", "Fstar",
+    "curve"}]."""
     ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "kind": kind,
              "curve": f"{kind}{n + 1}"}
             for kind in ("hopf", "fold", "torus", "tongue")
             for n, diagram in enumerate(drawn.get(kind, []))
             for branch in jobs.loaded(diagram)
-            for i, _, _ in branches.labelled_points(branch, "MX")]
+            for i, _, _ in branches.labelled_points(branch, "MX")
+            if in_plane({"V": branch["V"][i], "Fstar": branch["Fstar"][i]})]
     joins, used = [], set()
     for a, p in enumerate(ends):
         for b in range(a + 1, len(ends)):
@@ -65,6 +76,11 @@ CLOSE_TOL = 0.02
 # deg, F* = 0.0263 and 1.444: psi amplitude 1e-6 at the ends, the pair's
 # real part -0.017 and +0.017 /s 0.5 m/s either side)
 GH_RATE = 1e-3
+# A torus curve's MX end this close (in V/V_MAX, F*/F_MAX) to a fold curve
+# lies on it: where the orbits' complex Floquet pair meets the fold's
+# multiplier +1 (at the plane's lower edge both geometries run: 0.0005 and
+# 0.00004 from the fold curve, the pair's angle 0.19 and 0.008 rad there)
+FOLD_TOL = 0.002
 
 
 def on_hopf_locus(stop):
@@ -98,19 +114,22 @@ def nearest_on_edge(stop, lift):
     return float(d[k]), k
 
 
-def explained(stops, switch, lift):
+def explained(stops, switch, lift, folds=()):
     """The MX ends that are no two curves' meeting (mx_ends' open list)
     sorted: {"stage_switch": those with F* inside the window `switch`
     ((F*_enter, F*_leave) or None), "generalised_hopf": ends of fold curves
-    on the Hopf locus of straight rolling (on_hopf_locus), "liftoff": those
-    within CLOSE_TOL of the lift-off edge `lift` (liftoff_edge, or None),
-    "open": the rest}."""
-    out = {"stage_switch": [], "generalised_hopf": [], "liftoff": [], "open": []}
+    on the Hopf locus of straight rolling (on_hopf_locus), "on_fold": ends
+    of torus curves within FOLD_TOL of a fold curve (`folds`: lists of
+    branches), "liftoff": those within CLOSE_TOL of the lift-off edge
+    `lift` (liftoff_edge, or None), "open": the rest}."""
+    out = {"stage_switch": [], "generalised_hopf": [], "on_fold": [], "liftoff": [], "open": []}
     for stop in stops:
         if inside(switch, stop["Fstar"]):
             out["stage_switch"].append(stop)
         elif stop["curve"].startswith("fold") and on_hopf_locus(stop):
             out["generalised_hopf"].append(stop)
+        elif stop["curve"].startswith(("torus", "tongue")) and on_curves(stop, folds, FOLD_TOL):
+            out["on_fold"].append(stop)
         elif lift and nearest_on_edge(stop, lift)[0] < CLOSE_TOL:
             out["liftoff"].append(stop)
         else:

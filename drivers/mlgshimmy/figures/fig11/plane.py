@@ -5,6 +5,7 @@ import numpy
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import geometry
+from mlgshimmy.shared import stationary
 
 F_MIN, F_MAX = 0.02, 3.5
 V_MIN, V_MAX = ct.V_MIN, ct.V_MAX
@@ -13,9 +14,24 @@ FREEPLAY = freeplay.NOMINAL
 # parameter the figure's models have besides V and F*
 GEOMETRY = geometry.parameters()
 MODEL = {**FREEPLAY, **GEOMETRY}
-# loads of the diagrams in V: denser where the low-load structure is
-SLICES = numpy.concatenate((numpy.arange(0.0625, 2.0, 0.125), numpy.arange(2.125, 3.5, 0.25)))
+# loads of the diagrams in V: denser where the low-load structure is; with
+# side-stay angles one on the plane's lower edge too, for the structure
+# below the first load (at both geometries run, a tongue of instability of
+# the high-frequency orbit, F* < 0.032, V 60-200 m/s).  The paper's gear
+# keeps its reference set's loads: its diagram at F_MIN ends at 79.7 m/s
+# with no fold and no torus point.
+EDGE_SLICE = () if stationary.symmetric(MODEL) else (F_MIN,)
+SLICES = numpy.concatenate((EDGE_SLICE, numpy.arange(0.0625, 2.0, 0.125),
+                            numpy.arange(2.125, 3.5, 0.25)))
 F_GRID = numpy.arange(F_MIN, F_MAX + 1e-9, 0.01)
 V_GRID = numpy.arange(V_MIN, V_MAX + 1e-9, 0.5)
 STOP = {"Fstar": [F_MIN, F_MAX], "V": [V_MIN, V_MAX]}
 V_SCAN = ct.SPEED_SCAN
+
+
+def on_curves(point, curves, tol=0.01):
+    """Whether `point` ({"V", "Fstar"}) lies on one of the curves (lists of
+    branches; distance in V/V_MAX and F*/F_MAX below tol)."""
+    return any(numpy.min(numpy.hypot((numpy.asarray(branch["V"]) - point["V"]) / V_MAX,
+                                     (numpy.asarray(branch["Fstar"]) - point["Fstar"]) / F_MAX))
+               < tol for curve in curves for branch in curve)

@@ -84,6 +84,12 @@ def plot(result):
         handles.append(plt.Line2D([], [], color="b", marker="*", ls="", ms=8,
                                   label="a fold curve ends on the Hopf locus (generalised\n"
                                         "Hopf point: its orbits shrink to straight rolling)"))
+    for stop in result.get("on_fold_ends", []):
+        ax.plot(stop["V"], stop["Fstar"], "^", mfc="none", mec="m", ms=6)
+    if result.get("on_fold_ends"):
+        handles.append(plt.Line2D([], [], color="m", marker="^", mfc="none", ls="", ms=6,
+                                  label="a torus curve ends on a fold curve (its Floquet\n"
+                                        "pair meets the fold's multiplier 1)"))
     for stop in result.get("liftoff_ends", []):
         ax.plot(stop["V"], stop["Fstar"], "s", mfc="none", mec="navy", ms=5)
     if result.get("liftoff_ends"):

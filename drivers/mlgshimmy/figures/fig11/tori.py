@@ -5,9 +5,8 @@ import os
 
 import numpy
 
-from mlgshimmy.figures.fig11.curves import on_curves
 from mlgshimmy.figures.fig11.orbits import large_upwards, slice_rundir
-from mlgshimmy.figures.fig11.plane import MODEL, SLICES, V_MAX, V_MIN
+from mlgshimmy.figures.fig11.plane import MODEL, SLICES, V_MAX, V_MIN, on_curves
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
@@ -34,7 +33,7 @@ TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
 # its reference set stays bit for bit; with side-stay angles the driver
 # finds its starts on the slices (found_curves), at most MAX_CURVES curves.
 PINNED = stationary.symmetric(MODEL)
-MAX_CURVES = 8
+MAX_CURVES = 10   # a cost guard: 8 before the edge slice (plane.EDGE_SLICE) took 2
 
 
 def tongue_parts():
