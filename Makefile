@@ -32,7 +32,9 @@
 #   TEST_JOBS       pytest workers of `make test` (2; one test file per worker)
 #   RHO, MU, EOM    a side-stay geometry (degrees; EOM the eom_terms level, 2
 #                   when an angle is given) for every figure and study, in its
-#                   own tree build/geometry/<tag>/ (mk/geometry.mk)
+#                   own tree build/geometry/<tag>/ (mk/gear.mk)
+#   SET             any other constant or parameter, e.g. SET='k_tlk=3.51e7':
+#                   the gear's own tree build/gear/<tag>/ (mk/gear.mk)
 #   PAPER           1: figures for a paper, without their "Fig. N: ..." titles
 #                   (sets MLG_PAPER_STYLE for the drivers; e.g. make fig10-plot PAPER=1)
 #
@@ -91,7 +93,7 @@ all: test
 .DEFAULT_GOAL := help
 
 include mk/python.mk
-include mk/geometry.mk
+include mk/gear.mk
 include mk/auto.mk
 include mk/help.mk
 include c/c.mk

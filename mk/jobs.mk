@@ -12,13 +12,14 @@
 # (never for `make clean` or another target); a rejected grid stops make with
 # the tool's message, which names the variable.  ($(shell) of GNU make < 4.4
 # does not see exported variables: PYTHONPATH, the run root and the geometry
-# (mk/geometry.mk) are passed explicitly, so that the targets lie in the
+# (mk/gear.mk) are passed explicitly, so that the targets lie in the
 # geometry's tree.)
 define job_grid
 ifneq ($$(filter $(1),$$(MAKECMDGOALS)),)
 $(1)_RESULTS := $$(shell PYTHONPATH=$$(call shell_quote,$$(PYTHONPATH)) \
     MLG_RUN_ROOT=$$(call shell_quote,$$(RUN_ROOT)) MLG_RHO_DEG=$$(call shell_quote,$$(MLG_RHO_DEG)) \
     MLG_MU_DEG=$$(call shell_quote,$$(MLG_MU_DEG)) MLG_EOM=$$(call shell_quote,$$(MLG_EOM)) \
+    MLG_SET=$$(call shell_quote,$$(MLG_SET)) \
     $$(call shell_quote,$$(PYTHON)) -m mlgshimmy.studies.$(1) targets $(2) || echo $(1)_GRID_REJECTED)
 ifneq ($$(filter $(1)_GRID_REJECTED,$$($(1)_RESULTS)),)
 $$(error $(1): the grid is rejected (reason above))

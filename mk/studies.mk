@@ -4,7 +4,7 @@
 
 # Side-stay geometry (angles in degrees): make sidestay RHO=10 MU=10 [EOM=0|1|2]
 # (EOM: the eom_terms level, default 2, the complete equations).  The study
-# sets its own angles: it runs in the base tree (mk/geometry.mk AT_BASELINE),
+# sets its own angles: it runs in the base tree (mk/gear.mk AT_BASELINE),
 # not in the geometry tree that RHO and MU give every other target.
 EOM ?= 2
 .PHONY: sidestay sidestay_rho10_mu10 calibrate

@@ -1,5 +1,5 @@
 """A side-stay geometry for every figure and study (shared.geometry,
-mk/geometry.mk): the environment read and checked, the tree of a geometry,
+mk/gear.mk): the environment read and checked, the tree of a geometry,
 the parameters reaching the model and the simulator, straight rolling at
 side-stay angles (shared.rolling) and the torque-link position y_tlk.
 
@@ -12,7 +12,7 @@ import subprocess
 
 import pytest
 
-from mlgshimmy.shared import geometry, magnitude, mlgmodel, rolling, simulator
+from mlgshimmy.shared import gear, geometry, magnitude, mlgmodel, rolling, simulator
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 TEN = {"rho": math.radians(10), "mu": math.radians(10), "eom_terms": 2.0}
@@ -22,7 +22,7 @@ def make(*args, **env):
     clean = {k: v for k, v in os.environ.items()
              if k not in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS", "MAKEOVERRIDES", "MLG_RUN_ROOT",
                           "MLG_BASE_RUN_ROOT", geometry.ENV_RHO, geometry.ENV_MU,
-                          geometry.ENV_EOM)}
+                          geometry.ENV_EOM, "MLG_SET")}
     return subprocess.run(["make", "--no-print-directory", *args], cwd=ROOT,
                           env={**clean, **env}, capture_output=True, text=True)
 
@@ -61,11 +61,11 @@ def test_parameters_tags_and_trees():
     assert geometry.Geometry(10.00001, 0, 2).tag != geometry.Geometry(10, 0, 2).tag
     assert geometry.Geometry(0, 0, 2).tag == "rho0_mu0_eom2"     # not the baseline
     base = "/x/build"
-    assert geometry.tree(base, geometry.Geometry()) == base
-    inner = geometry.tree(base, g)
+    assert gear.tree(base, gear.Gear(geometry.Geometry())) == base
+    inner = gear.tree(base, gear.Gear(g))
     assert inner == "/x/build/geometry/rho10_mu-20_eom2"
-    assert geometry.tree(inner, g) == inner                         # a make from a make
-    assert geometry.tree(inner, g.mirror()) != inner
+    assert gear.tree(inner, gear.Gear(g)) == inner                  # a make from a make
+    assert gear.tree(inner, gear.Gear(g.mirror())) != inner
 
 
 def test_make_gives_each_geometry_its_own_tree(tmp_path):
@@ -161,18 +161,18 @@ def test_a_figure_at_a_geometry_says_so(monkeypatch):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    monkeypatch.setattr(geometry, "current", lambda: geometry.Geometry(10, -20, 2))
+    monkeypatch.setattr(gear, "current", lambda: gear.Gear(geometry.Geometry(10, -20, 2)))
     fig, _ = plt.subplots()
     fig.suptitle("Fig. 10")
-    geometry.stamp(fig)
+    gear.stamp(fig)
     assert fig._suptitle.get_text() == ("Fig. 10 [side stay rho = 10 deg, mu = -20 deg, "
                                         "eom_terms = 2]")
     bare, _ = plt.subplots()
-    geometry.stamp(bare)
+    gear.stamp(bare)
     assert "rho = 10 deg" in bare._suptitle.get_text()
     plt.close("all")
-    monkeypatch.setattr(geometry, "current", lambda: geometry.Geometry())
+    monkeypatch.setattr(gear, "current", lambda: gear.Gear())
     fig, _ = plt.subplots()
-    geometry.stamp(fig)
+    gear.stamp(fig)
     assert fig._suptitle is None
     plt.close("all")

@@ -25,7 +25,9 @@
 # tests/reference/ name the same figures. A failed figure run keeps its private
 # directory (named in the message) for its logs.
 # Only the refs recipes write into tests/reference/.
-REGRESS_ROOT := build/regress
+# A changed gear (mk/gear.mk) publishes under its own subtree of build/regress,
+# and is compared with the paper's gear's reference: what moved.
+REGRESS_ROOT := build/regress$(if $(GEAR_SUBDIR),/$(GEAR_SUBDIR))
 REFS_ROOT := build/refs
 REFERENCE_ROOT := tests/reference
 COMPARE := tests/regression/compare_diagrams.py
@@ -41,8 +43,10 @@ export REGRESS_QUICK REGRESS_FIGURES
 # Used after `set -e`: a failed mkdir or mktemp (read-only tree, no inode)
 # stops the recipe with its own message; nothing runs with an empty $scratch.
 private_run = mkdir -p $(1); scratch=$$(mktemp -d $(abspath $(1))/.$(2).XXXXXX); \
-    MLG_RUN_ROOT=$$scratch $(3) --no-print-directory $(2) $(REGRESS_WITH_$(2)) || \
-      { echo "$(2): failed; its runs are kept in $$scratch" >&2; $(4); }
+    $(3) --no-print-directory MLG_RUN_ROOT=$$scratch MLG_BASE_RUN_ROOT=$$scratch \
+      $(2) $(REGRESS_WITH_$(2)) || \
+      { echo "$(2): failed; its runs are kept in $$scratch" >&2; $(4); }; \
+    runs=$$scratch$(if $(GEAR_SUBDIR),/$(GEAR_SUBDIR))
 
 .PHONY: regress refs
 regress: setup
@@ -73,11 +77,11 @@ regress-%: setup
 	@set -e; stopped=; $(call private_run,$(REGRESS_ROOT),$*,$(MAKE),stopped=1); \
 	if [ -n "$$stopped" ]; then \
 	    echo "$*: its runs up to the stop, against $(REFERENCE_ROOT)/$*:"; \
-	    $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$* || true; exit 1; fi; \
-	status=0; $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$scratch/$* || status=$$?; \
-	$(PYTHON) $(REFERENCE_SET) publish $$scratch/$* $(REGRESS_ROOT)/$*; \
+	    $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$runs/$* || true; exit 1; fi; \
+	status=0; $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$runs/$* || status=$$?; \
+	$(PYTHON) $(REFERENCE_SET) publish $$runs/$* $(REGRESS_ROOT)/$*; \
 	mkdir -p $(REGRESS_ROOT)/figures; \
-	for f in $$scratch/figures/*; do \
+	for f in $$runs/figures/*; do \
 	    if [ -e "$$f" ]; then mv -f "$$f" $(REGRESS_ROOT)/figures/; fi; done; \
 	rm -rf $$scratch; \
 	echo "regress-$*: runs in $(REGRESS_ROOT)/$*/"; exit $$status
@@ -86,6 +90,7 @@ refs: setup
 	@set -e; for fig in $(REGRESS_FIGURES); do $(MAKE) --no-print-directory refs-$$fig; done
 
 refs-%: setup
+	$(if $(GEAR_SUBDIR),$(error refs-$*: reference sets are made at the paper's gear; run it without RHO, MU, EOM or SET))
 	@set -e; $(call private_run,$(REFS_ROOT),$*,$(MAKE),exit 1); \
 	$(PYTHON) $(REFERENCE_SET) replace $* $$scratch/$* || \
 	    { echo "refs-$*: $(REFERENCE_ROOT)/$* left as it was; runs in $$scratch" >&2; exit 1; }; \

@@ -7,7 +7,7 @@ from matplotlib.patches import Patch
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import domain
 from mlgshimmy.shared import draw
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
@@ -22,13 +22,13 @@ def compute(parameter_set="figures", where="fig07"):
     result = {}
     for Fstar in LOADS:
         tag = f"F{Fstar:g}"
-        start = ct.Start(parameter_set, Fstar=Fstar, V=geometry.start_speed(),
-                         **geometry.parameters())
+        start = ct.Start(parameter_set, Fstar=Fstar, V=gear.start_speed(),
+                         **gear.parameters())
         eq = ct.equilibria(rundir, f"eq_{tag}", start, stop={"V": 600.0}, expect=["HB"])
         # with side-stay angles the orbits may reach wheel lift-off below
         # 600 m/s: the run is kept up to there (MX) and its reason stored
         po = ct.periodic_from(rundir, f"po_{tag}", eq("HB1"), stop={"V": 600.0},
-                              allow_mx=not geometry.current().baseline)
+                              allow_mx=not gear.current().baseline)
         result[tag] = {"eq": jobs.stored(eq, COLUMNS), "po": jobs.stored(po, COLUMNS),
                        "hopf_V": eq("HB1")["V"], "end_V": po[0]["V"][-1],
                        "end_psi_amp": po[0]["psi_amp"][-1]}

@@ -17,7 +17,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from mlgshimmy.shared import draw  # noqa: E402
-from mlgshimmy.shared import geometry  # noqa: E402
+from mlgshimmy.shared import gear  # noqa: E402
 from mlgshimmy.shared import paths  # noqa: E402
 from mlgshimmy.shared import simulator  # noqa: E402
 from mlgshimmy.shared import jobs
@@ -36,7 +36,7 @@ def simulate(csv_path):
     try:
         return simulator.simulate(csv_path, "--set", "figures", "--V", V, "--Fstar", FSTAR,
                                   "--yfp", 0, "--t-end", T_END, "--dt-out", DT_OUT,
-                                  "--psi0", PSI0, params=geometry.simulator_params())
+                                  "--psi0", PSI0, params=gear.simulator_params())
     except simulator.SimulationError as exc:
         sys.exit(f"fig08: {exc}")
 
@@ -57,7 +57,7 @@ def plot(data, path_stem):
     axes[-1, 1].set_xlabel("t [s] (last second)")
     axes[-1, 1].set_xlim(T_END - 1.0, T_END)
     draw.figure_title(fig, f"Fig. 8: V = {V:g} m/s, F* = {FSTAR:g}, y_fp = 0 "
-                           f"(psi perturbed by {PSI0:g} rad at t = 0)" + geometry.suffix())
+                           f"(psi perturbed by {PSI0:g} rad at t = 0)" + gear.suffix())
     fig.tight_layout()
     for ext in ("png", "pdf"):
         fig.savefig(f"{path_stem}.{ext}", dpi=150)

@@ -5,7 +5,7 @@ from matplotlib.lines import Line2D
 
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
@@ -16,7 +16,7 @@ FSTAR_RANGE = (0.1, 3.5)   # below F* ~ 0.1 the curve leaves V <= 600 m/s steepl
 def compute(parameter_set="figures", where="fig09"):
     """{"curves": stored Hopf-curve branches, "ends": [(F*, V)] of their UZ ends}."""
     rundir = paths.rundir(where)
-    start = ct.Start(parameter_set, Fstar=1.0, V=geometry.start_speed(), **geometry.parameters())
+    start = ct.Start(parameter_set, Fstar=1.0, V=gear.start_speed(), **gear.parameters())
     eq = ct.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
     curves = []
     for direction, ds in (("up", 0.01), ("down", -0.01)):

@@ -11,7 +11,7 @@ from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import domain
 from mlgshimmy.shared import draw
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
@@ -25,22 +25,22 @@ HIGH_HZ = 8.0      # Hz: the high-frequency orbits (magnitude.BANDS)
 
 def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
     """Straight rolling in V from V = 0 (0.5 m/s with side-stay angles:
-    geometry.start_speed; run eq) and
+    gear.start_speed; run eq) and
     continuation.speed_diagram: (equilibria, Diagram)."""
-    start = ct.Start(parameter_set, V=geometry.start_speed(), **values)
+    start = ct.Start(parameter_set, V=gear.start_speed(), **values)
     eq = ct.equilibria(rundir, "eq", start, stop={"V": V_MAX})
     return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID,
-                                allow_failed=allow_failed or not geometry.current().baseline,
+                                allow_failed=allow_failed or not gear.current().baseline,
                                 figure="fig10", **{**ct.SPEED_ORBIT_STEPS,
                                                    **ct.geometry_orbit_steps(
-                                                       geometry.current().baseline)})
+                                                       gear.current().baseline)})
 
 
 def numbers(diagram):
     """The special points of Fig. 10 as {quantity: value}."""
     folds = sorted(V for _, _, V, _ in diagram.folds())
     out = {f"H{k + 1} [m/s]": v for k, (v, _) in enumerate(diagram.hopf)}
-    if geometry.current().baseline:
+    if gear.current().baseline:
         out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(folds)})
         return out    # the paper's table as before
     # with side-stay angles the low-frequency orbits fold too: S1 is the
@@ -68,8 +68,8 @@ def stored(eq, diagram):
 def compute():
     """The figure (`figures` set, and zero freeplay for reference) and the
     numbers of the `table` set (its failure leaves that column empty)."""
-    at = geometry.parameters()    # the side-stay geometry ({} at the paper's)
-    print("fig10: F* = 1, y_fp = 1 mm, eps = 0.1 mm (figures set)" + geometry.suffix())
+    at = gear.parameters()    # the side-stay geometry ({} at the paper's)
+    print("fig10: F* = 1, y_fp = 1 mm, eps = 0.1 mm (figures set)" + gear.suffix())
     eq, freeplay = speed_diagram(paths.rundir("fig10"), "figures", Fstar=1.0, yfp=1.0,
                                  eps_rel=0.1, **at)
     print("fig10: zero freeplay, for reference")

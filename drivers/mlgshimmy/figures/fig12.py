@@ -15,7 +15,7 @@ from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
@@ -31,7 +31,7 @@ VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
 def runs(parameter_set="figures", where="fig12", variant=0):
     """(stationary states, Hopf loads, orbit runs)."""
     rundir = paths.rundir(where)
-    values = {**VALUES, "strut_variant": float(variant), **geometry.parameters()}
+    values = {**VALUES, "strut_variant": float(variant), **gear.parameters()}
     # The printed strut (variant 1) folds straight rolling twice in F* while
     # eta crosses its 1e-5 m stage switch (F* 0.63-0.70): steps must shrink
     # below AUTO's default DSMIN of 1e-5 there (constants/runs/c.stage_switch).
@@ -87,7 +87,7 @@ def bistable_interval(lower, hopf, orbits):
 
 def numbers(found, hopf, orbits):
     out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(found.pitchforks)}
-    if not geometry.current().symmetric:
+    if not gear.current().symmetric:
         # the baseline's pitchforks (its column) beside the folds they became
         out.update({f"pitchfork {k + 1} F*": None for k in range(2)})
         out.update({f"stationary fold F{k + 1} F*": F for k, (F, _, _) in enumerate(found.folds())})
@@ -108,7 +108,7 @@ def freeplay_boundary(parameter_set, loads, variant=0, state=None):
     out = []
     for F in loads:
         model = mlgmodel.Model(parameter_set, Fstar=F, strut_variant=variant, **VALUES,
-                               **geometry.parameters())
+                               **gear.parameters())
         u = state(F) if state else model.equilibrium()
         out.append(1e-3 * VALUES["yfp"] / model.r_tlk(u["eta"]))
     return numpy.array(out)
@@ -140,7 +140,7 @@ def plot(result):
     draw.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
     shown = [boundary, -boundary]
     # with side-stay angles straight rolling is yawed too: drawn as a stationary state
-    for diagram in yaw + ([] if geometry.current().symmetric else [eq]):
+    for diagram in yaw + ([] if gear.current().symmetric else [eq]):
         for branch in diagram:
             for xs, ys, stable in branches.segments(branch, "Fstar", "psi_mean"):
                 amp.plot(xs, ys * DEG, **{**draw.style_of(stable), "linestyle": YAW[stable]})

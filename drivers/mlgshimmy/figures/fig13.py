@@ -8,7 +8,7 @@ import numpy
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
@@ -25,7 +25,7 @@ def parts():
     """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one),
     each in its own run directory build/fig13/<part>/."""
     return mg.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=ORBITS_FROM,
-                           **geometry.parameters())
+                           **gear.parameters())
 
 
 def compute(parts):

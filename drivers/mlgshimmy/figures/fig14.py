@@ -7,7 +7,7 @@ import matplotlib.pyplot as plt
 
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
@@ -20,7 +20,7 @@ FREEPLAYS = freeplay.FIG14_FREEPLAYS
 
 def hopf_curves():
     curves = mg.hopf_curves(paths.rundir("fig14/hopf_curves"), "hopf", "fixed",
-                            figure="fig14", **geometry.parameters())
+                            figure="fig14", **gear.parameters())
     return mg.stored_curves(curves, ("yfp", "V", "freq"))
 
 
@@ -28,7 +28,7 @@ def parts():
     """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one)
     and the Hopf curves in (y_fp, V)."""
     return {**mg.diagram_jobs("fig14", "fixed", FREEPLAYS, orbits_at=1.0,
-                              **geometry.parameters()),
+                              **gear.parameters()),
             "hopf_curves": hopf_curves}
 
 
@@ -43,7 +43,7 @@ def lowest_orbit(curve, V):
     whether that is a Hopf point of straight rolling in y_fp ('Hopf'; AUTO
     may label the collapse there LP) or a fold in y_fp ('fold')."""
     y_min = float(min(curve["yfp"]))
-    hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V, **geometry.parameters())
+    hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V, **gear.parameters())
             if k == "HB"]
     return y_min, "Hopf" if any(abs(y_min - y) < 2e-3 * y for y in hopf) else "fold"
 
@@ -60,7 +60,7 @@ def numbers(diagrams, orbits):
     for V, curve in orbits:
         y_min, kind = lowest_orbit(curve, V)
         out[f"V = {V:g}: orbits down to y_fp [mm] ({kind})"] = y_min
-        hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V, **geometry.parameters())
+        hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V, **gear.parameters())
                 if k == "HB"]
         for k, y in enumerate(hopf):
             out[f"V = {V:g}: Hopf point {k + 1} in y_fp [mm]"] = y

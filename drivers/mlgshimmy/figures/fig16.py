@@ -12,7 +12,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import paper
@@ -38,7 +38,7 @@ def fold_seed():
     """The "fixed" diagram at FOLD_SEED and the fold curves through its folds."""
     rundir = paths.rundir(f"fig16/fixed_y{FOLD_SEED:g}_folds")
     d = mg.diagram_in_V(rundir, f"fixed_y{FOLD_SEED:g}", "fixed", FOLD_SEED, uzr=(),
-                        figure="fig16", **geometry.parameters())
+                        figure="fig16", **gear.parameters())
     return {"diagram": mg.stored_diagram(d),
             "fold_curves": mg.stored_curves(mg.fold_curves(rundir, "fold", [d], figure="fig16"),
                                             ("yfp", "V", "psi_amp"))}
@@ -46,7 +46,7 @@ def fold_seed():
 
 def hopf_curves():
     curves = mg.hopf_curves(paths.rundir("fig16/hopf_curves"), "hopf", "fixed",
-                            figure="fig16", **geometry.parameters())
+                            figure="fig16", **gear.parameters())
     return mg.stored_curves(curves, ("yfp", "V", "freq"))
 
 
@@ -56,11 +56,11 @@ def parts():
     work = {}
     for scaling, freeplays in FAMILY.items():
         for name, job in mg.diagram_jobs("fig16", scaling, freeplays, f"{scaling}_",
-                                         uzr=(), **geometry.parameters()).items():
+                                         uzr=(), **gear.parameters()).items():
             seed = scaling == "fixed" and name == f"fixed_y{FOLD_SEED:g}"
             work[name + "_folds" if seed else name] = fold_seed if seed else job
     return {**work, "hopf_curves": hopf_curves,
-            "window": lambda: mg.window_points(mg.FSTAR, **geometry.parameters())}
+            "window": lambda: mg.window_points(mg.FSTAR, **gear.parameters())}
 
 
 def compute(parts):

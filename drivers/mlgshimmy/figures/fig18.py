@@ -17,7 +17,7 @@ from matplotlib.patches import Patch
 
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import draw
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import paper
@@ -107,7 +107,7 @@ def numbers(points, auto, kappa, best):
 
 def compute(name="fig18", variant=0):
     model = {"strut_variant": float(variant)} if variant else {}
-    model.update(geometry.parameters())   # the side-stay geometry ({} at the paper's)
+    model.update(gear.parameters())   # the side-stay geometry ({} at the paper's)
     points, grid, auto = runs(name, **model)
     kappa, best = kappa_star(points, **model)
     mg.progress(name, "kappa* refined")

@@ -1,45 +1,31 @@
-"""The side-stay geometry every figure and study is made at: the angles rho,
-mu of the side-stay axis (degrees on the command line, radians in the
-model) and the level of the equations of motion eom_terms (docs/model.md
-section 8).  No AUTO import and no library needed.
+"""The side-stay geometry a model is made at: the angles rho, mu of the
+side-stay axis (degrees on the command line, radians in the model) and the
+level of the equations of motion eom_terms (docs/model.md section 8).  No
+AUTO import and no library needed.  The process's model, of which the
+geometry is one part, is shared.variant's.
 
-    make fig10 RHO=10 MU=10 [EOM=2]      # mk/geometry.mk sets the environment:
+    make fig10 RHO=10 MU=10 [EOM=2]      # mk/variant.mk sets the environment:
     MLG_RHO_DEG=10 MLG_MU_DEG=10 MLG_EOM=2 python3 -m mlgshimmy.figures.fig10
 
-The geometry is read once per process from MLG_RHO_DEG, MLG_MU_DEG and
-MLG_EOM (current()), checked with a message naming the make variable.  With
-none of them set, or at rho = mu = 0 with eom_terms = 0, it is the paper's
-gear, the baseline: parameters() is {} and nothing a driver does changes.
-Otherwise parameters() = {rho, mu [rad], eom_terms}, which the drivers pass
-wherever they build a model (continuation.Start, spectrum scans,
-magnitude's scans, mlgmodel.Model) and simulator_params() to the simulator;
-AUTO runs started from a solution carry them in PAR.  A missing angle is 0;
-EOM defaults to 2 (the complete equations, the only level that conserves
-energy at non-zero angles) when an angle is given, else to 0.
-
-A geometry's runs, caches, tables and figures live in their own tree,
-$MLG_BASE_RUN_ROOT/geometry/<tag>/ (tag e.g. rho10_mu10_eom2), which make
-exports as MLG_RUN_ROOT (`python3 -m mlgshimmy.shared.geometry make BASE`
-gives make the tag and the tree).  Figures say so in their title (stamp(),
-from shared.draw.save) and tables in a line (describe()).
+Read from MLG_RHO_DEG, MLG_MU_DEG and MLG_EOM (from_environment), checked
+with a message naming the make variable.  With none of them set, or at
+rho = mu = 0 with eom_terms = 0, it is the paper's gear: parameters() is
+{}.  Otherwise parameters() = {rho, mu [rad], eom_terms}.  A missing angle
+is 0; EOM defaults to 2 (the complete equations, the only level that
+conserves energy at non-zero angles) when an angle is given, else to 0.
 
 y_tlk(): the torque-link apex deflection at a state, y_tlk = r_tlk(eta)
 (psi + beta sin p) (docs/model.md 8.1; c/freeplay.h).
 """
-import functools
-import json
 import math
 import os
-import sys
 from typing import Dict, Mapping, Optional
 
 ENV_RHO, ENV_MU, ENV_EOM = "MLG_RHO_DEG", "MLG_MU_DEG", "MLG_EOM"
-ENV_BASE = "MLG_BASE_RUN_ROOT"
 MAKE_VARIABLE = {ENV_RHO: "RHO", ENV_MU: "MU", ENV_EOM: "EOM"}
 EOM_LEVELS = (0, 1, 2)
 EOM_WITH_ANGLES = 2
 KEYS = ("rho", "mu", "eom_terms")       # the model parameters a geometry sets
-TREE = "geometry"                       # $MLG_BASE_RUN_ROOT/geometry/<tag>/
 
 
 class GeometryError(ValueError):
@@ -147,84 +133,7 @@ def from_environment(environ: Mapping[str, str] = os.environ) -> Geometry:
     return Geometry(rho or 0.0, mu or 0.0, eom)
 
 
-@functools.lru_cache(maxsize=1)
-def current() -> Geometry:
-    """The geometry of this process (read once)."""
-    return from_environment()
-
-
-def parameters() -> Dict[str, float]:
-    """current().parameters(): {} at the baseline."""
-    return current().parameters()
-
-
-def simulator_params() -> Dict[str, str]:
-    return current().simulator_params()
-
-
-def suffix() -> str:
-    return current().suffix()
-
-
-def describe() -> str:
-    return current().describe()
-
-
-V_FROM = 0.5    # m/s, continuation.V_MIN
-
-
-def start_speed() -> float:
-    """Where a run along V from "V = 0" starts: 0 at rho = mu = 0 (as the
-    paper's figures); V_FROM with side-stay angles, where straight rolling
-    yaws the wheels and at V = 0 the tyre states are undetermined (AUTO
-    stops, MX, at its first step)."""
-    return 0.0 if current().symmetric else V_FROM
-
-
-def tree(base: str, geometry: Geometry) -> str:
-    """The run root of a geometry under base (base itself at the baseline,
-    and when base already is that geometry's tree: a make started from one)."""
-    base = os.path.abspath(base)
-    if geometry.baseline:
-        return base
-    if os.path.basename(base) == geometry.tag and \
-            os.path.basename(os.path.dirname(base)) == TREE:
-        return base
-    return os.path.join(base, TREE, geometry.tag)
-
-
-def base_root() -> str:
-    """The run root of the baseline: MLG_BASE_RUN_ROOT (make exports it with
-    a geometry), else MLG_RUN_ROOT, else build/."""
-    from mlgshimmy.shared import paths
-    return os.path.abspath(os.environ.get(ENV_BASE) or paths.run_root())
-
-
-def baseline_numbers(figure: str) -> Optional[dict]:
-    """The "numbers" of the baseline's cached result of a figure, to print
-    beside a geometry's (None at the baseline or if not computed)."""
-    if current().baseline:
-        return None
-    try:
-        with open(os.path.join(base_root(), figure, "result.json")) as f:
-            data = json.load(f)["data"]
-    except (OSError, ValueError, KeyError, TypeError):
-        return None
-    numbers = data.get("numbers") if isinstance(data, dict) else None
-    return numbers if isinstance(numbers, dict) else None
-
-
-def stamp(fig) -> None:
-    """Name the geometry in a figure's title (shared.draw.save calls it):
-    appended to its suptitle, or a suptitle of its own; nothing at the
-    baseline."""
-    if current().baseline:
-        return
-    title = getattr(fig, "_suptitle", None)
-    if title is not None and title.get_text():
-        title.set_text(title.get_text() + suffix())
-    else:
-        fig.suptitle(describe(), y=1.0, va="bottom", fontsize="medium")
+V_FROM = 0.5    # m/s, continuation.V_MIN: where runs along V start with side-stay angles
 
 
 def y_tlk(model, u) -> float:
@@ -234,21 +143,3 @@ def y_tlk(model, u) -> float:
     from mlgshimmy.shared import domain
     d = domain.diagnose(model, u)
     return d["r_tlk"] * (u["psi"] + u["beta"] * math.sin(d["p"]))
-
-
-def main(argv) -> None:
-    """`make BASE`: "<tag> <tree> <rho> <mu> <eom>" of the environment's
-    geometry, for mk/geometry.mk; a bad geometry exits 1 naming the
-    variable."""
-    if len(argv) != 2 or argv[0] != "make":
-        sys.exit("usage: python3 -m mlgshimmy.shared.geometry make BASE_RUN_ROOT")
-    try:
-        g = from_environment()
-    except GeometryError as exc:
-        sys.exit(f"geometry: {exc}")
-    print(g.tag if not g.baseline else "baseline", tree(argv[1], g),
-          f"{g.rho_deg:.12g}", f"{g.mu_deg:.12g}", g.eom_terms)
-
-
-if __name__ == "__main__":
-    main(sys.argv[1:])

@@ -31,7 +31,7 @@ def lifts_off(csv, V, Fstar, case=freeplay.NOMINAL, t_end=T_END, params=None, ro
     """Whether the run from straight rolling (psi + PSI0) at (V, F*) stops
     on a negative tyre load within t_end; a stop for another reason raises
     SimulationError naming it.  params: more model parameters for the
-    simulator ({name: value}, e.g. geometry.simulator_params()); rolling:
+    simulator ({name: value}, e.g. gear.simulator_params()); rolling:
     rolling(F*) is straight rolling's state (default: the simulator's own
     Newton solve, which can miss it at side-stay angles)."""
     if not (V > 0 and Fstar > 0 and t_end > 0):

@@ -10,7 +10,7 @@ the curves of Hopf points and folds of cycles in (y_fp, V).
 Scalings (section III): shared.freeplay.  Everything is at
 F* = 1 unless Fstar is passed.  `**model` (where a function takes it)
 overrides parameters or constants of every model it builds by name, e.g.
-strut_variant=1, or a side-stay geometry (shared.geometry.parameters()).
+strut_variant=1, or a side-stay geometry (shared.gear.parameters()).
 """
 import functools
 import os

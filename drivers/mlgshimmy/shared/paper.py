@@ -16,7 +16,7 @@ import numpy
 
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs.atomic import write_text
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 
 # Every result value section IV prints, by the figure that shows it (the
 # `figures` set is calibrated on the first one).  Inputs the text names
@@ -68,7 +68,7 @@ def rows(figure, ours, ours_table=None):
     held = HELD_OUT.get(figure, {})
     ours_table = ours_table or {}
     # at a side-stay geometry: the baseline's numbers beside ours ({} if not computed)
-    base = None if geometry.current().baseline else (geometry.baseline_numbers(figure) or {})
+    base = None if gear.current().baseline else (gear.baseline_numbers(figure) or {})
     out = []
     for quantity in list(paper) + [q for q in ours if q not in paper]:
         value, printed = ours.get(quantity), paper.get(quantity)
@@ -128,7 +128,7 @@ def text_of(figure, table):
             for r in table if r["held_out"]]
     note = ("\nheld out by the paper (its values replaced by symbols): " + ", ".join(held)
             if held else "")
-    at = geometry.current()
+    at = gear.current()
     if not at.baseline:
         title += (f"\n{figure}: at {at.describe()}; the paper and the baseline column: "
                   "rho = mu = 0, eom_terms = 0"

@@ -23,13 +23,13 @@ from mlgshimmy.shared import attractor
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import floquet
-from mlgshimmy.shared import geometry
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import simulator
 from mlgshimmy.shared import spectrum
 
 V_MAX = ct.V_MAX
 SIM_T = (20.0, 80.0)   # s: fit the log of the peak spread over this span
+GIVEN_AS_OPTIONS = ("V", "Fstar", "yfp", "eps_abs", "eps_rel")   # the rest: --param
 SPAN = 2.0             # s: one peak-spread sample per SPAN
 CURVE_FSTAR = (0.02, 3.5)
 CURVE_STEPS = 150      # AUTO steps of a torus curve each way
@@ -87,7 +87,7 @@ def simulated_rate(values, v, psi0, span=SIM_T, rtol=None):
         simulator.simulate(csv, "--set", "figures", "--V", v, "--Fstar", values["Fstar"],
                            "--yfp", values["yfp"], "--eps-abs", eps, "--eps-rel", 0,
                            "--t-end", span[1], "--psi0", psi0, *tolerance,
-                           params={k: repr(values[k]) for k in geometry.KEYS if k in values})
+                           params={k: repr(v) for k, v in values.items() if k not in GIVEN_AS_OPTIONS})
         data = numpy.loadtxt(csv, delimiter=",", skiprows=1, usecols=(0, 1))
     fit = attractor.spread_trend(data[:, 0], data[:, 1], span[0], span[1], SPAN)
     return fit["rate"], fit["first"], fit["last"]

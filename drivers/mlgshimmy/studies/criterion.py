@@ -23,7 +23,7 @@ import numpy
 
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import draw
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
@@ -70,7 +70,7 @@ def first_unstable(Fstar, **overrides):
 def kappa_star(overrides):
     """{kappa, Fstar, V, eta} at the minimum over the envelope's loads, at the
     side-stay geometry of the run (shared.geometry)."""
-    overrides = {**overrides, **geometry.parameters()}
+    overrides = {**overrides, **gear.parameters()}
     kappa, best = mg.kappa_star(lambda F: first_unstable(F, **overrides), LOADS, overrides,
                                 finer=(5, 4))
     return {"kappa": kappa, "Fstar": best["Fstar"], "V": best["V"],
@@ -82,19 +82,19 @@ def write(name, data):
     jobs.write("criterion", data, "figures", part=name)
 
 
-def read(name, root=None):
-    return jobs.read("criterion", name, root=root)
+def read(name, root=None, model=None):
+    return jobs.read("criterion", name, root=root, model=model)
 
 
 def baseline_parts():
     """{group: results} of the paper's geometry, to print beside a side-stay
     geometry's ({} at the baseline; a group not computed there is left out)."""
-    if geometry.current().baseline:
+    if gear.current().baseline:
         return {}
     out = {}
     for group in GROUPS:
         try:
-            out[group] = read(group, geometry.base_root())
+            out[group] = read(group, gear.base_root(), gear.Gear())
         except jobs.MissingResult:
             continue
     return out
@@ -134,7 +134,7 @@ def auto_kappa(variant, scanned):
     low, high = mg.ENVELOPE_LOADS[0], mg.ENVELOPE_LOADS[-1]
     here = scanned["Fstar"]
     stop = (max(low, here - AUTO_SPAN), min(high, here + AUTO_SPAN))
-    model = {"strut_variant": float(variant), **geometry.parameters()}
+    model = {"strut_variant": float(variant), **gear.parameters()}
     curve = mg.window_point_curve(paths.rundir(os.path.join("criterion", "auto")),
                                   f"a_v{variant}", scanned["kappa"] * mg.EPSILON, here, stop,
                                   dsmax=0.005, **model)
@@ -231,11 +231,11 @@ def report():
     checks = read("auto")
     base = baseline_parts()
     rows = [f"{'assumption':44s} {'kappa*':>8s} {'at F*':>7s} {'V [m/s]':>8s} {'eta* [m]':>9s}"
-            f"  mode" + ("      baseline kappa*" if not geometry.current().baseline else "")]
+            f"  mode" + ("      baseline kappa*" if not gear.current().baseline else "")]
     for group, items in groups.items():
         for k, item in enumerate(items):
             beside = ""
-            if not geometry.current().baseline:
+            if not gear.current().baseline:
                 there = base.get(group)
                 beside = f"  {there[k]['kappa']:19.4f}" if there else f"  {'-':>19s}"
             rows.append(f"{label(item):44s} {item['kappa']:8.4f} {item['Fstar']:7.3f} "
@@ -253,8 +253,8 @@ def report():
         rows.append(f"  variant {c['variant']}: scan {c['scan']:.5f}, AUTO {c['kappa']:.5f} "
                     f"at F* = {c['Fstar']:.4f} ({c['points']} points), relative difference "
                     f"{c['relative difference']:+.2e}")
-    if not geometry.current().baseline:
-        rows.insert(0, f"at {geometry.describe()}")
+    if not gear.current().baseline:
+        rows.insert(0, f"at {gear.describe()}")
     text = "\n".join(rows)
     print(text)
     jobs.write_text(os.path.join(paths.tables_dir(), "criterion.txt"), text + "\n")
@@ -277,7 +277,7 @@ def custom(assignments):
         if overrides[name] is None:
             raise ValueError(f"{text!r}: expected NAME=VALUE with a number")
     try:
-        mlgmodel.Model("figures", **overrides, **geometry.parameters()).check()
+        mlgmodel.Model("figures", **overrides, **gear.parameters()).check()
     except KeyError as exc:
         raise ValueError(f"unknown parameter: {exc}") from exc
     result = kappa_star(overrides)

@@ -34,7 +34,7 @@ import sys
 
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import floquet
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs.atomic import write_json
 from mlgshimmy.shared.torus import (V_MAX, curve_arrays, multiplier_check, on_branch,
@@ -58,7 +58,7 @@ WINDOW_RTOL = 1e-10    # CVODE rtol of the window simulations (atol 1e-2 of it):
 
 
 def compute(case):
-    values = {**CASES[case], **geometry.parameters()}
+    values = {**CASES[case], **gear.parameters()}
     rundir = paths.rundir(os.path.join("torus", case))
     entry = {"parameters": values, "meshes": [], "simulations": []}
     base = None

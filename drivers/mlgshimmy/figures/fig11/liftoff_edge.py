@@ -5,7 +5,7 @@ import os
 
 from mlgshimmy.figures.fig11.orbits import ROLLING
 from mlgshimmy.figures.fig11.plane import F_MAX, F_MIN, FREEPLAY, V_MAX
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import liftoff
 from mlgshimmy.shared import paths
 
@@ -25,7 +25,7 @@ def liftoff_speed(Fstar):
     does at V_MAX."""
     csv = os.path.join(liftoff_rundir(), f"F{Fstar:.2f}.csv")
     V = liftoff.edge_speed(csv, Fstar, LIFTOFF_FROM, V_MAX, case=FREEPLAY,
-                           params=geometry.simulator_params(), rolling=ROLLING)
+                           params=gear.simulator_params(), rolling=ROLLING)
     print(f"fig11: lift-off at F* = {Fstar:.2f}: "
           + (f"from V = {V:.1f} m/s" if V else f"none up to V = {V_MAX:g} m/s"), flush=True)
     return {"Fstar": float(Fstar), "V": V}
@@ -61,7 +61,7 @@ def liftoff_end(parts, part):
     inside = found[end]
     outside = inside + (-1 if end == 0 else 1)
     csv = os.path.join(liftoff_rundir(), f"{part}.csv")
-    options = dict(case=FREEPLAY, params=geometry.simulator_params(), rolling=ROLLING)
+    options = dict(case=FREEPLAY, params=gear.simulator_params(), rolling=ROLLING)
     if 0 <= outside < len(speeds):
         Fstar = liftoff.edge_load(csv, V_MAX, speeds[outside]["Fstar"],
                                   speeds[inside]["Fstar"], checked=True, **options)

@@ -4,7 +4,7 @@ import numpy
 
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import freeplay
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import stationary
 
 F_MIN, F_MAX = 0.02, 3.5
@@ -12,7 +12,7 @@ V_MIN, V_MAX = ct.V_MIN, ct.V_MAX
 FREEPLAY = freeplay.NOMINAL
 # the side-stay geometry ({} at the paper's, shared.geometry) and every
 # parameter the figure's models have besides V and F*
-GEOMETRY = geometry.parameters()
+GEOMETRY = gear.parameters()
 MODEL = {**FREEPLAY, **GEOMETRY}
 # loads of the diagrams in V: denser where the low-load structure is; with
 # side-stay angles one on the plane's lower edge too, for the structure

@@ -30,7 +30,7 @@ import numpy
 from matplotlib.lines import Line2D
 
 from mlgshimmy.shared import branches
-from mlgshimmy.shared import geometry
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.draw import labels
 from mlgshimmy.shared.jobs.atomic import write_atomic
@@ -280,8 +280,8 @@ def save(fig, name):
     """Name the marked points (labels.place), then write
     $MLG_RUN_ROOT/figures/<name>.png and .pdf (each written beside and
     renamed, so a reader never sees half a file) and close fig.  A figure
-    made at a side-stay geometry says so in its title (geometry.stamp)."""
-    geometry.stamp(fig)
+    made for a changed gear says so in its title (gear.stamp)."""
+    gear.stamp(fig)
     labels.place(fig)
     written = [write_atomic(os.path.join(paths.figures_dir(), f"{name}.{ext}"),
                             lambda out, ext=ext: fig.savefig(out, format=ext, bbox_inches="tight"),

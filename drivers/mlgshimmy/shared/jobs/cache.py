@@ -18,7 +18,7 @@ from typing import Any, Callable, Optional
 
 import numpy
 
-from mlgshimmy.shared import branches, paths
+from mlgshimmy.shared import branches, gear, paths
 from mlgshimmy.shared.jobs import locks
 from mlgshimmy.shared.jobs.atomic import write_json
 
@@ -74,11 +74,13 @@ def _sha256(path: str) -> Optional[str]:
 
 
 def provenance(parameter_set: str) -> dict:
-    """What a result was computed with: the parameter set, the commit, the
-    AUTO (its tree and version), the model executable as linked (sha256)
-    and the AUTO runs' thread count."""
+    """What a result was computed with: the parameter set, the gear (its
+    geometry and overlay: shared.gear), the commit, the AUTO (its tree and
+    version), the model executable as linked (sha256) and the AUTO runs'
+    thread count."""
     from mlgshimmy.shared import autoglue   # AUTO itself is not imported
-    return {"parameter_set": parameter_set, "git_commit": _git_commit(),
+    return {"parameter_set": parameter_set, "model": gear.current().record(),
+            "git_commit": _git_commit(),
             "auto_version": _auto_version(), "auto_dir": autoglue.auto_dir(),
             "auto_threads": os.environ.get("MLG_AUTO_THREADS", "1"),
             "model_sha256": _sha256(os.path.join(paths.BUILD, "models", "mlg.exe")),
@@ -172,10 +174,22 @@ def compute_once(figure: str, compute: Callable[[], Any], parameter_set: str = "
         os.close(fd)
 
 
-def read(figure: str, part: Optional[str] = None, root: Optional[str] = None) -> Any:
+def _made_for(stored: dict) -> Optional["gear.Gear"]:
+    """The gear a stored result records (None: a result that records none)."""
+    try:
+        return gear.Gear.from_record(stored["provenance"]["model"])
+    except (KeyError, TypeError, ValueError, AttributeError):
+        return None
+
+
+def read(figure: str, part: Optional[str] = None, root: Optional[str] = None,
+         model: Optional["gear.Gear"] = None) -> Any:
     """The data of a figure's cached result (or of one part of it), checked:
-    whole JSON, the figure's and the part's names, the checksum.  A file
-    that fails raises BadResult naming it and what to run.  root: as path."""
+    whole JSON, the figure's and the part's names, the checksum, and the
+    gear it was made for: this process's (gear.current()), or `model`
+    (e.g. the paper's gear, gear.Gear(), for a result read from the
+    baseline's root).  A file that fails raises BadResult naming it, both
+    gears where they differ, and what to run.  root: as path."""
     where = path(figure, part, root)
     remedy = f"remove it and run `make {figure}`"
     try:
@@ -193,6 +207,13 @@ def read(figure: str, part: Optional[str] = None, root: Optional[str] = None) ->
                         f"{stored.get('part')!r}, not {figure!r} part {part!r}; {remedy}")
     if stored.get("sha256") != checksum(stored["data"]):
         raise BadResult(f"{figure}: {where} fails its checksum (edited or damaged); {remedy}")
+    wanted, made = model or gear.current(), _made_for(stored)
+    if made != wanted:
+        def name(g):
+            return "an unrecorded gear" if g is None else \
+                (g.describe() or "the paper's gear")
+        raise BadResult(f"{figure}: {where} was made for {name(made)}, not for {name(wanted)} "
+                        f"as asked; {remedy} (with the RHO, MU, EOM and SET you want)")
     return stored["data"]
 
 

@@ -8,7 +8,7 @@ import sys
 import time
 from typing import Callable, Optional, Sequence
 
-from mlgshimmy.shared import paths
+from mlgshimmy.shared import gear, paths
 from mlgshimmy.shared.jobs import cache
 from mlgshimmy.shared.jobs.atomic import write_text
 from mlgshimmy.shared.jobs.parts import Parts, rules_path
@@ -126,6 +126,8 @@ def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[C
                          "--stage K --missing` prints the jobs of stage K's")
             print(f"{figure}: every part is cached")
             return
+        if getattr(args, "part", None) or args.compute or both:
+            gear.check()       # a SET out of range stops here, naming it
         if getattr(args, "part", None):
             jobs.compute(args.part, alone=True)
         if args.compute or both:
@@ -137,7 +139,7 @@ def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[C
                 print(f"{figure}: computed in {time.monotonic() - started:.0f} s")
         if args.plot or both:
             plot(cache.read(figure))
-    except (RuntimeError, ValueError) as exc:
+    except (RuntimeError, ValueError) as exc:   # GeometryError and OverlayError too
         message = str(exc)   # a MissingResult already names its figure
         sys.exit(message if message.startswith(f"{figure}:") else f"{figure}: {message}")
     except OSError as exc:   # a full disk, a directory that cannot be written

@@ -31,7 +31,7 @@ import os
 import sys
 import tempfile
 
-from mlgshimmy.shared import freeplay, geometry, jobs
+from mlgshimmy.shared import freeplay, jobs, gear
 from mlgshimmy.shared import simulator
 from mlgshimmy.shared.jobs import grid as jobgrid
 from mlgshimmy.studies.atlas import cell as atlas_cell
@@ -101,7 +101,7 @@ def summary(points, cells, provenance):
     lines = [f"atlas: {len(cells)} cells, y_fp = {atlas_cell.FREEPLAY['yfp']:g} mm, epsilon = "
              f"{freeplay.epsilon(atlas_cell.FREEPLAY):g} mm; starts " +
              ", ".join(f"{k} psi0 = {v:g} rad" for k, v in atlas_cell.STARTS.items())
-             + (f"; {geometry.describe()}" if geometry.describe() else ""),
+             + (f"; {gear.describe()}" if gear.describe() else ""),
              f"CPU per cell: mean {sum(cpu) / len(cpu):.2f} s, max {max(cpu):.2f} s; "
              f"total {sum(cpu):.0f} s", "cells by label:"]
     lines += [f"  {n:5d}  {lab}" for lab, n in sorted(counts.items(), key=lambda x: -x[1])]

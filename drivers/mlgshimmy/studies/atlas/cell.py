@@ -15,7 +15,7 @@ import resource
 import numpy
 
 from mlgshimmy.shared import attractor
-from mlgshimmy.shared import freeplay, geometry, simulator
+from mlgshimmy.shared import freeplay, simulator, gear
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import yawed
 
@@ -28,7 +28,7 @@ FREEPLAY = freeplay.NOMINAL      # y_fp = 1 mm, eps = 0.1 mm (Fig. 11)
 # one side need not have a mirror image on the other: a start yawed the
 # other way too.  (At rho = mu = 0 it would end on the mirror image of the
 # "yawed" start's end, the same kind.)
-STARTS = dict(simulator.STARTS, **({} if geometry.current().symmetric
+STARTS = dict(simulator.STARTS, **({} if gear.current().symmetric
                                     else {"yawed_other": -simulator.STARTS["yawed"]}))
 STAGES = (40.0, 120.0)           # time limits [s], the second only if needed
 SETTLE = 360.0                   # s: the limit of a start still not settled after them:
@@ -44,7 +44,7 @@ def straight_rolling(fstar):
     """Straight rolling at this load and the run's geometry (shared.yawed:
     continued from zero freeplay), {name: value}, or None where there is
     none (its branch ended in a fold of y_fp)."""
-    return yawed.straight("figures", fstar, FREEPLAY, **geometry.parameters())
+    return yawed.straight("figures", fstar, FREEPLAY, **gear.parameters())
 
 
 def simulator_args(v, fstar, psi0, t_end):
@@ -53,7 +53,7 @@ def simulator_args(v, fstar, psi0, t_end):
     fail or land on a yawed state; without straight rolling the simulator's
     equilibrium) with psi displaced by psi0, at the side-stay geometry of the
     run (shared.geometry; none at the paper's)."""
-    at = [word for name, value in geometry.simulator_params().items()
+    at = [word for name, value in gear.simulator_params().items()
           for word in ("--param", f"{name}={value}")]
     start = simulator.state_args(straight_rolling(fstar))
     return ["--set", "figures", "--V", v, "--Fstar", fstar, *simulator.freeplay_args(FREEPLAY),
@@ -93,7 +93,7 @@ def reference(fstar):
     F*: 2.56e-3 at F* = 0.02, 2.05e-3 at 3.5) and straight rolling's psi
     (None where there is no straight rolling; psi_fp then at the simulator's
     equilibrium)."""
-    model = mlgmodel.Model("figures", Fstar=fstar, **FREEPLAY, **geometry.parameters())
+    model = mlgmodel.Model("figures", Fstar=fstar, **FREEPLAY, **gear.parameters())
     u0 = straight_rolling(fstar)
     eta = (model.equilibrium() if u0 is None else u0)["eta"]
     return FREEPLAY["yfp"] * 1e-3 / model.r_tlk(eta), None if u0 is None else u0["psi"]
