@@ -75,7 +75,8 @@ except ImportError:   # exit status 2: nothing compared (1 would read "differ")
           f"PYTHONPATH={os.path.join(ROOT, 'drivers')} {sys.executable} {sys.argv[0]} ... "
           "(make does)", file=sys.stderr)
     sys.exit(2)
-import reference_set  # noqa: E402  (this directory: run as a script, or pytest's pythonpath)
+import named_points  # noqa: E402  (this directory: run as a script, or pytest's pythonpath)
+import reference_set  # noqa: E402
 
 REFERENCE_ROOT = os.path.join(ROOT, "tests", "reference")
 REGRESS_ROOT = os.path.join(ROOT, "build", "regress")
@@ -482,6 +483,9 @@ def main(argv=None):
     parser.add_argument("--runs", nargs="+", help="compare only these runs (b.<name>)")
     parser.add_argument("--rtol", type=float, help=f"relative tolerance (default {RTOL})")
     parser.add_argument("--atol", type=float, help=f"absolute floor (default {ATOL})")
+    parser.add_argument("--what-moved", action="store_true",
+                        help="a deliberate change of the model: exit 0 unless a named point "
+                             "could not be followed (moved points are the answer, not a failure)")
     args = parser.parse_args(argv)
     if args.figure:
         if len(args.dirs) > 1:
@@ -503,6 +507,21 @@ def main(argv=None):
         print(f"compare: {what}: error: {exc}", file=sys.stderr)
         return 2
     tol = f"rtol {result.rtol:g}, atol {result.atol:g}"
+    reference, ours = named_points.of_reference(reference_dir), named_points.of_run(run_dir)
+    if reference is not None and ours is not None:
+        print(f"compare: {what}: the named points")
+        print("\n".join(named_points.report(reference, ours)))
+    if args.what_moved:
+        lost = named_points.unfollowed(ours or {})
+        print(f"compare: {what}: what moved (a deliberate change): "
+              + (f"not followed: {', '.join(lost)}" if lost else
+                 "every named point followed")
+              + ("" if ours is not None else "; the run has no named points"))
+        if not result.ok():
+            print(f"  the runs in detail ({len(result.problems)} structural, "
+                  f"{len(result.rows)} of {result.values} values outside {tol}):")
+            print(result.report())
+        return 1 if lost or ours is None else 0
     if result.ok():
         print(f"compare: {what}: agree ({result.points} labelled points, "
               f"{result.values} values within {tol}; {result.changes} stability changes "

@@ -8,7 +8,8 @@ atomically (`make refs-<fig>`).
 A set holds the b-file of every run the figure writes (subdirectories kept;
 or only the runs its runs.json selects: {"store": ["eq", "F1/*", ...],
 "reason": "..."}, shell patterns on run names such as "zero/po1"), the
-settings files it had (tolerances.json, labels.json, runs.json) and
+settings files it had (tolerances.json, labels.json, runs.json), the
+figure's named points (named.json, from its result.json: named_points.py) and
 MANIFEST: one line "<sha256>  <path>" per file. A file missing, extra or
 changed is an error naming it.
 
@@ -32,6 +33,8 @@ import shutil
 import signal
 import sys
 import tempfile
+
+import named_points  # this directory: run as a script, or pytest's pythonpath
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -223,6 +226,9 @@ def _fill(new, target, run_dir, runs, cd):
         for rel in files_under(target):
             if not os.path.basename(rel).startswith("b."):
                 shutil.copyfile(os.path.join(target, rel), os.path.join(new, rel))
+    numbers = named_points.of_run(run_dir)
+    if numbers is not None:
+        named_points.write(new, numbers)
     write_manifest(new)
     _step("manifest")
     verify(new)

@@ -28,6 +28,10 @@
 # A changed gear (mk/gear.mk) publishes under its own subtree of build/regress,
 # and is compared with the paper's gear's reference: what moved.
 REGRESS_ROOT := build/regress$(if $(GEAR_SUBDIR),/$(GEAR_SUBDIR))
+# What moved (compare_diagrams.py --what-moved): a changed gear always, and
+# WHAT_MOVED=1 for a change made by editing c/ (the named points first, and
+# the exit status fails only where a named point could not be followed).
+COMPARE_HOW := $(if $(or $(GEAR_SUBDIR),$(WHAT_MOVED)),--what-moved)
 REFS_ROOT := build/refs
 REFERENCE_ROOT := tests/reference
 COMPARE := tests/regression/compare_diagrams.py
@@ -78,7 +82,7 @@ regress-%: setup
 	if [ -n "$$stopped" ]; then \
 	    echo "$*: its runs up to the stop, against $(REFERENCE_ROOT)/$*:"; \
 	    $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$runs/$* || true; exit 1; fi; \
-	status=0; $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$runs/$* || status=$$?; \
+	status=0; $(PYTHON) $(COMPARE) $(COMPARE_HOW) $(REFERENCE_ROOT)/$* $$runs/$* || status=$$?; \
 	$(PYTHON) $(REFERENCE_SET) publish $$runs/$* $(REGRESS_ROOT)/$*; \
 	mkdir -p $(REGRESS_ROOT)/figures; \
 	for f in $$runs/figures/*; do \

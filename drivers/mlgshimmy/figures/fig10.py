@@ -13,6 +13,7 @@ from mlgshimmy.shared import domain
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import naming
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 
@@ -20,7 +21,8 @@ DEG = draw.DEG
 V_MAX = ct.V_MAX
 V_GRID = ct.SPEED_SCAN
 COLUMNS = ("V", "psi_amp", "freq")
-HIGH_HZ = 8.0      # Hz: the high-frequency orbits (magnitude.BANDS)
+FREEPLAY = {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1}   # the figure's conditions
+HIGH_HZ = naming.HIGH_HZ   # Hz: the high-frequency orbits
 
 
 def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
@@ -36,15 +38,24 @@ def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
                                                        gear.current().baseline)})
 
 
-def numbers(diagram):
-    """The special points of Fig. 10 as {quantity: value}."""
-    folds = sorted(V for _, _, V, _ in diagram.folds())
-    out = {f"H{k + 1} [m/s]": v for k, (v, _) in enumerate(diagram.hopf)}
-    if gear.current().baseline:
-        out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(folds)})
-        return out    # the paper's table as before
-    # with side-stay angles the low-frequency orbits fold too: S1 is the
-    # paper's S, the fold of least V of the high-frequency orbits (>= 8 Hz)
+def hopf_points(diagram, parameter_set, values):
+    """[{"name", "V", "freq_hz", "band", "dof", "loses", "criticality",
+    "about"}] of the diagram's Hopf points, named by their mode (shared.naming)."""
+    modes = [naming.mode(parameter_set, "V", v, **values) for v, _ in diagram.hopf]
+    out = []
+    for (v, _), m, name in zip(diagram.hopf, modes, naming.names(modes)):
+        crit = naming.criticality(v, m["loses"], diagram.branches)
+        out.append({"name": name, "V": v, **m, "criticality": crit,
+                    "about": naming.describe(m, crit)})
+    return out
+
+
+def numbers(diagram, points):
+    """The special points of Fig. 10 as {quantity: value}: the Hopf points
+    by name (points: hopf_points), the folds S1, S2, ... of the
+    high-frequency orbits (>= HIGH_HZ; S1 is the paper's S), the folds of
+    the low-frequency ones, and where a branch stopped with no convergence."""
+    out = {f"{p['name']} [m/s]": p["V"] for p in points}
     high = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] >= HIGH_HZ)
     low = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] < HIGH_HZ)
     out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(high)})
@@ -68,22 +79,26 @@ def stored(eq, diagram):
 def compute():
     """The figure (`figures` set, and zero freeplay for reference) and the
     numbers of the `table` set (its failure leaves that column empty)."""
-    at = gear.parameters()    # the side-stay geometry ({} at the paper's)
+    at = gear.parameters()    # the gear's changes ({} at the paper's)
     print("fig10: F* = 1, y_fp = 1 mm, eps = 0.1 mm (figures set)" + gear.suffix())
-    eq, freeplay = speed_diagram(paths.rundir("fig10"), "figures", Fstar=1.0, yfp=1.0,
-                                 eps_rel=0.1, **at)
+    eq, freeplay = speed_diagram(paths.rundir("fig10"), "figures", **FREEPLAY, **at)
     print("fig10: zero freeplay, for reference")
     zero_eq, zero = speed_diagram(paths.rundir("fig10/zero"), "figures", Fstar=1.0, yfp=0.0,
                                   **at)
     print("fig10: the same with the `table` set, for its numbers")
     try:
-        table = numbers(speed_diagram(paths.rundir("fig10/table"), "table", allow_failed=True,
-                                      Fstar=1.0, yfp=1.0, eps_rel=0.1, **at)[1])
+        diagram = speed_diagram(paths.rundir("fig10/table"), "table", allow_failed=True,
+                                **FREEPLAY, **at)[1]
+        table = numbers(diagram, hopf_points(diagram, "table", {**FREEPLAY, **at}))
     except (autoglue.RunError, RuntimeError) as exc:
-        print(f"fig10: the `table` set failed, its column stays empty: {exc.brief}")
+        print(f"fig10: the `table` set failed, its column stays empty: {getattr(exc, 'brief', exc)}")
         table = {}
+    points = hopf_points(freeplay, "figures", {**FREEPLAY, **at})
+    # V_crit: where zero freeplay loses stability (the paper's 346.1 m/s, Fig. 7)
+    crit = {"V_crit (zero freeplay) [m/s]": zero.hopf[0][0]} if zero.hopf else {}
     return {"freeplay": stored(eq, freeplay), "zero": stored(zero_eq, zero),
-            "numbers": numbers(freeplay), "numbers_table": table}
+            "numbers": {**numbers(freeplay, points), **crit}, "numbers_table": table,
+            "hopf_points": points}
 
 
 def closure(orbits, hopf, column, scale=1.0):
@@ -113,12 +128,14 @@ def fold_name(numbers, V):
 
 
 def plot(result):
-    paper.report("fig10", result["numbers"], result["numbers_table"])
+    points = result["hopf_points"]
+    paper.report("fig10", result["numbers"], result["numbers_table"],
+                 notes=[f"{p['name']}: {p['about']}" for p in points])
     freeplay, zero = result["freeplay"], result["zero"]
     parts = [(point, jobs.loaded(part["orbits"])) for part in freeplay["parts"]
              for point in [part["hopf"]]]
     zero_orbits = [jobs.loaded(part["orbits"]) for part in zero["parts"]]
-    hopf_names = [f"H{k + 1}" for k in range(len(freeplay["hopf"]))]
+    hopf_names = [p["name"] for p in points]
     fig = plt.figure(figsize=(10, 7.4))
     grid = fig.add_gridspec(2, 2, width_ratios=(1.6, 1))
     amp, zoom, freq = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), \

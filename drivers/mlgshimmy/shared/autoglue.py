@@ -454,7 +454,9 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
         check_diagram(bd, f"run {name} in {rundir}", expect)
     except RunError as exc:
         if not (allow_mx and "(MX)" in str(exc)):
-            PROGRESS.step(rundir, name, time.monotonic() - started, "FAILED")
+            # an MX is the caller's to judge (continuation.with_ladder retries it)
+            word = "stops with no convergence (MX)" if "(MX)" in str(exc) else "FAILED"
+            PROGRESS.step(rundir, name, time.monotonic() - started, word)
             raise RunError(str(exc), log) from None
         status = "done, ends in MX (kept up to there, as allowed)"
     PROGRESS.step(rundir, name, time.monotonic() - started, status)

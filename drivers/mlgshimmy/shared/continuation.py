@@ -155,8 +155,9 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
         name = names(len(runs))
         stops = list(bounds) + [h + s * gap(h) for h in left for s in (-1, 1)]
         try:
-            orbits = periodic_from(rundir, name, origin, parameter, stop={parameter: stops},
-                                   allow_mx=allow_failed, **kw)
+            orbits = with_ladder(lambda mx, **rung: periodic_from(
+                rundir, name, origin, parameter, stop={parameter: stops}, allow_mx=mx,
+                **{**kw, **rung}), kw, f"{figure}: orbits {name}", keep_mx=allow_failed)
         except autoglue.RunError as exc:
             if not allow_failed:
                 raise
@@ -215,6 +216,57 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
                       flush=True)
                 origin = orbits("UZ")[-1]
     return runs, ends
+
+
+# The one retry ladder of a continuation that stops with no convergence (MX):
+# each rung changes the run's constants (relative to its own) and the run is
+# made again from the same start; the first rung that ends without MX is
+# kept.  Smaller steps first (a sharp fold, a switch or a nearly degenerate
+# point needs them), then a finer mesh (an orbit whose profile steepens),
+# then both.  A run from a Hopf point has no other end to restart from.
+LADDER = (("smaller steps", {"DS": 0.1, "DSMIN": 1e-4}),
+          ("a finer mesh", {"NTST": 2.0}),
+          ("a finer mesh and smaller steps", {"NTST": 2.0, "DS": 0.1, "DSMIN": 1e-4,
+                                              "DSMAX": 0.5}))
+BASE_STEPS = {"DS": 0.5, "DSMIN": 1e-5, "DSMAX": 2.0, "NTST": 80}   # constants/c.mlg
+
+
+def rung_constants(kw, factors):
+    """A rung's AUTO constants: each factor times the run's own value (its
+    keyword, else BASE_STEPS), NTST as a whole number."""
+    out = {}
+    for key, factor in factors.items():
+        value = factor * kw.get(key, BASE_STEPS[key])
+        out[key] = int(round(value)) if key == "NTST" else value
+    return out
+
+
+def with_ladder(attempt, kw, what, keep_mx=False):
+    """attempt(mx, **constants) -> diagram.  With keep_mx (the caller draws
+    a branch up to an MX and reports where it stopped) the run as given,
+    MX allowed.  Else the run as given, then up LADDER while it stops with
+    MX; if every rung stops too, the first RunError.  Other errors are
+    raised."""
+    if keep_mx:
+        return attempt(True)
+    try:
+        return attempt(False)
+    except autoglue.RunError as exc:
+        if "(MX)" not in str(exc):
+            raise
+        first = exc
+    for rung, factors in LADDER:
+        constants = rung_constants(kw, factors)
+        try:
+            bd = attempt(False, **constants)
+        except autoglue.RunError as exc:
+            if "(MX)" not in str(exc):
+                raise
+            continue
+        print(f"{what}: no convergence (MX) at first; complete with {rung} "
+              f"({', '.join(f'{k} = {v:g}' for k, v in constants.items())})", flush=True)
+        return bd
+    raise first
 
 
 def _jumps(values, kw):

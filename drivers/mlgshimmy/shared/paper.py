@@ -61,6 +61,15 @@ def status(figure, quantity, printed, ours):
     return "close" if abs(ours - printed) <= CLOSE * abs(printed) else "off"
 
 
+def changed_status(ours):
+    """The status of a printed quantity at a changed gear, where the paper's
+    number describes another gear: "vanished" (no such point any more),
+    "changed gear" (the relative error is to the paper's gear's number)."""
+    if ours is None or not numpy.isfinite(ours):
+        return "vanished"
+    return "changed gear"
+
+
 def rows(figure, ours, ours_table=None):
     """[{"quantity", "paper", "ours", "ours_table", "rel_error", "status",
     "held_out"}]: the printed quantities first, then the rest of ours."""
@@ -81,7 +90,8 @@ def rows(figure, ours, ours_table=None):
         if printed is not None:
             if value is not None:
                 row["rel_error"] = (value - printed) / printed
-            row["status"] = status(figure, quantity, printed, value)
+            row["status"] = status(figure, quantity, printed, value) if base is None else \
+                changed_status(value)
         elif row["held_out"]:
             row["status"] = "held out"
         out.append(row)
@@ -141,11 +151,12 @@ def table_path(figure, ext="txt"):
     return os.path.join(paths.tables_dir(), f"{figure}.{ext}")
 
 
-def report(figure, ours, ours_table=None):
+def report(figure, ours, ours_table=None, notes=()):
     """Print and store the table (<fig>.txt, and <fig>.json for the
-    reproduction report); returns its text."""
+    reproduction report); notes: lines after it (what each named point is);
+    returns its text."""
     table = rows(figure, ours, ours_table)
-    text = text_of(figure, table)
+    text = text_of(figure, table) + "".join(f"  {line}\n" for line in notes)
     write_text(table_path(figure), text)
     write_text(table_path(figure, "json"),
                json.dumps({"figure": figure, "rows": table}, indent=1) + "\n")

@@ -1,0 +1,58 @@
+"""The named points of a figure (its result's "numbers": H1-H3 and S of
+Fig. 10, a_12 and b_12 of Fig. 12, ...), reference against ours, in the
+paper's names: the first lines of a regression's report.
+
+A reference set stores them as named.json (reference_set.py writes it from
+the run's result.json); a run directory has them in its result.json.
+"""
+import json
+import os
+
+NAMED = "named.json"
+UNFOLLOWED = "stops (MX"     # fig10.numbers: where a branch stopped with no convergence
+
+
+def of_run(run_dir):
+    """{quantity: value} of the result.json in run_dir, or None."""
+    try:
+        with open(os.path.join(run_dir, "result.json")) as f:
+            numbers = json.load(f)["data"]["numbers"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    return {q: v for q, v in numbers.items() if isinstance(v, (int, float))} \
+        if isinstance(numbers, dict) else None
+
+
+def of_reference(reference_dir):
+    """{quantity: value} a reference set stores, or None."""
+    try:
+        with open(os.path.join(reference_dir, NAMED)) as f:
+            return json.load(f)["numbers"]
+    except (OSError, ValueError, KeyError):
+        return None
+
+
+def write(directory, numbers):
+    with open(os.path.join(directory, NAMED), "w") as f:
+        json.dump({"numbers": numbers}, f, indent=1, sort_keys=True)
+        f.write("\n")
+
+
+def report(reference, ours):
+    """The lines: one per named point of both, reference -> ours with the
+    absolute and relative change; then the vanished and the new ones."""
+    lines = ["  named points (reference -> ours):"]
+    for q in [q for q in reference if q in ours]:
+        ref, new = reference[q], ours[q]
+        rel = f"{(new - ref) / ref:+.3%}" if ref else "-"
+        lines.append(f"    {q:<34} {ref:.6g} -> {new:.6g}  ({new - ref:+.4g}, {rel})")
+    for q in [q for q in reference if q not in ours]:
+        lines.append(f"    {q:<34} {reference[q]:.6g} -> vanished")
+    for q in [q for q in ours if q not in reference]:
+        lines.append(f"    {q:<34} new: {ours[q]:.6g}")
+    return lines
+
+
+def unfollowed(ours):
+    """The quantities that say a branch could not be followed."""
+    return [q for q in ours if UNFOLLOWED in q]

@@ -1,0 +1,64 @@
+"""The one retry ladder of a continuation that stops with no convergence
+(continuation.with_ladder), and the named points a regression reports
+first (tests/regression/named_points.py).
+
+Run: /usr/bin/python3 -m pytest -q tests/test_retry_ladder.py
+"""
+import pytest
+
+import named_points
+from mlgshimmy.shared import autoglue, continuation
+
+
+def attempts(outcomes):
+    """An attempt(mx, **constants) that records its calls and answers in turn."""
+    calls = []
+
+    def attempt(mx, **constants):
+        calls.append((mx, constants))
+        outcome = outcomes[len(calls) - 1]
+        if isinstance(outcome, Exception):
+            raise outcome
+        return outcome
+    return attempt, calls
+
+
+MX = autoglue.RunError("run po3 in x: no convergence (MX) at branch -2 label 4")
+
+
+def test_the_first_rung_that_completes_is_kept():
+    attempt, calls = attempts([MX, MX, "finer mesh"])
+    kw = {"DS": 0.05, "DSMAX": 1.0}
+    assert continuation.with_ladder(attempt, kw, "po3") == "finer mesh"
+    assert calls == [(False, {}), (False, {"DS": pytest.approx(0.005), "DSMIN": pytest.approx(1e-9)}),
+                     (False, {"NTST": 160})]
+
+
+def test_every_rung_stopping_raises_the_first_stop():
+    attempt, calls = attempts([MX] * (1 + len(continuation.LADDER)))
+    with pytest.raises(autoglue.RunError) as error:
+        continuation.with_ladder(attempt, {}, "po3")
+    assert error.value is MX and len(calls) == 1 + len(continuation.LADDER)
+    assert calls[-1][1] == {"NTST": 160, "DS": pytest.approx(0.05), "DSMIN": pytest.approx(1e-9),
+                            "DSMAX": pytest.approx(1.0)}
+
+
+def test_other_errors_and_allowed_stops_are_not_retried():
+    attempt, calls = attempts([autoglue.RunError("run x: AUTO wrote no b.x")])
+    with pytest.raises(autoglue.RunError, match="wrote no"):
+        continuation.with_ladder(attempt, {}, "x")
+    attempt, calls = attempts(["kept up to its MX"])
+    assert continuation.with_ladder(attempt, {}, "x", keep_mx=True) == "kept up to its MX"
+    assert calls == [(True, {})]
+
+
+def test_named_points_reference_to_ours():
+    reference = {"H1 [m/s]": 1.458, "H2 [m/s]": 28.307, "S1 [m/s]": 41.491}
+    ours = {"H2 [m/s]": 28.324, "S1 [m/s]": 41.352, "Hhf2 [m/s]": 300.0,
+            "po1: stops (MX, numerical) at V [m/s]": 29.79}
+    lines = named_points.report(reference, ours)
+    assert lines[1].split() == ["H2", "[m/s]", "28.307", "->", "28.324", "(+0.017,", "+0.060%)"]
+    assert "S1 [m/s]" in lines[2] and "-0.335%" in lines[2]
+    assert lines[3].split()[-2:] == ["->", "vanished"] and "H1" in lines[3]
+    assert "new: 300" in lines[4]
+    assert named_points.unfollowed(ours) == ["po1: stops (MX, numerical) at V [m/s]"]
