@@ -28,7 +28,7 @@ def compute(parameter_set="figures", where="fig07"):
         # with side-stay angles the orbits may reach wheel lift-off below
         # 600 m/s: the run is kept up to there (MX) and its reason stored
         po = ct.periodic_from(rundir, f"po_{tag}", eq("HB1"), stop={"V": 600.0},
-                              allow_mx=not gear.current().baseline)
+                              allow_mx=not gear.current().geometry.baseline)
         result[tag] = {"eq": jobs.stored(eq, COLUMNS), "po": jobs.stored(po, COLUMNS),
                        "hopf_V": eq("HB1")["V"], "end_V": po[0]["V"][-1],
                        "end_psi_amp": po[0]["psi_amp"][-1]}

@@ -32,10 +32,10 @@ def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
     start = ct.Start(parameter_set, V=gear.start_speed(), **values)
     eq = ct.equilibria(rundir, "eq", start, stop={"V": V_MAX})
     return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID,
-                                allow_failed=allow_failed or not gear.current().baseline,
+                                allow_failed=allow_failed or not gear.current().geometry.baseline,
                                 figure="fig10", **{**ct.SPEED_ORBIT_STEPS,
                                                    **ct.geometry_orbit_steps(
-                                                       gear.current().baseline)})
+                                                       gear.current().geometry.baseline)})
 
 
 def hopf_points(diagram, parameter_set, values):

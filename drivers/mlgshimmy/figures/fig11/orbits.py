@@ -116,7 +116,7 @@ def slice_diagram(Fstar, parameter_set="figures"):
                                V_SCAN, allow_failed=True, figure="fig11",
                                state=ROLLING and (lambda V: ROLLING(Fstar, parameter_set)),
                                **{**ct.SPEED_ORBIT_STEPS,
-                                  **ct.geometry_orbit_steps(gear.current().baseline)})
+                                  **ct.geometry_orbit_steps(gear.current().geometry.baseline)})
     return {"branches": [b for run in diagram.branches
                          for b in jobs.stored(run, ORBIT_COLUMNS)],
             "folds": [(diagram.name_of(run), lab) for run, lab, _, _ in diagram.folds()
