@@ -30,12 +30,14 @@
 REGRESS_ROOT := build/regress$(if $(GEAR_SUBDIR),/$(GEAR_SUBDIR))
 # What moved (compare_diagrams.py --what-moved): a changed gear always, and
 # WHAT_MOVED=1 for a change made by editing c/ (the named points first, and
-# the exit status fails only where a named point could not be followed).
+# the exit status fails only where a named point could not be followed), with
+# the figure $(REGRESS_ROOT)/figures/<fig>_what_moved.png: reference and new.
 COMPARE_HOW := $(if $(or $(GEAR_SUBDIR),$(WHAT_MOVED)),--what-moved)
 REFS_ROOT := build/refs
 REFERENCE_ROOT := tests/reference
 COMPARE := tests/regression/compare_diagrams.py
 REFERENCE_SET := tests/regression/reference_set.py
+WHAT_MOVED_FIGURE := tests/regression/what_moved_figure.py
 export REGRESS_QUICK REGRESS_FIGURES
 
 # $(call private_run,<root>,<fig>,$(MAKE),<on failure>): shell code that runs
@@ -83,6 +85,8 @@ regress-%: setup
 	    echo "$*: its runs up to the stop, against $(REFERENCE_ROOT)/$*:"; \
 	    $(PYTHON) $(COMPARE) $(REFERENCE_ROOT)/$* $$runs/$* || true; exit 1; fi; \
 	status=0; $(PYTHON) $(COMPARE) $(COMPARE_HOW) $(REFERENCE_ROOT)/$* $$runs/$* || status=$$?; \
+	$(if $(COMPARE_HOW),$(PYTHON) $(WHAT_MOVED_FIGURE) $(REFERENCE_ROOT)/$* $$runs/$* \
+	    $$runs/figures/$*_what_moved.png || status=1;) \
 	$(PYTHON) $(REFERENCE_SET) publish $$runs/$* $(REGRESS_ROOT)/$*; \
 	mkdir -p $(REGRESS_ROOT)/figures; \
 	for f in $$runs/figures/*; do \
