@@ -10,40 +10,48 @@ one-sided), and Newton from psi = 0 may land on any of them or on none
 (rho = mu = 10 deg, eps = 0.1 mm: no convergence at F* = 0.1-0.3 for y_fp
 from about 0.6 mm).  Here straight rolling at (F*, y_fp) is the equilibrium
 connected to the zero-freeplay one at that load: continued in y_fp from
-y_fp = 0 (where the links are linear and the equilibrium unique), each step
-a Newton solve from the last state, halved where it does not converge close
-by.  Where the branch ends at a fold in y_fp (the links jump to the other
-side of the freeplay) there is no straight rolling beyond: NoRollingState.
+y_fp = 0 (where the links are linear and the equilibrium unique) by
+`follow`, whose steps the branch itself bounds.  Where the branch ends at a
+fold in y_fp (the links jump to the other side of the freeplay) there is
+no straight rolling beyond: NoRollingState.
 
     u = state("figures", 0.3, 1.0, {"eps_abs": 0.1, "eps_rel": 0.0}, rho=0.17, mu=0.17)
 """
 import bisect
 import ctypes
-from typing import Dict, List, Tuple
+from typing import Dict, List, Optional, Tuple
 
 import numpy
 
 from mlgshimmy.shared import mlgmodel
 
-STEP_PSI = 5e-4      # rad: a continuation step may move psi this far at most
-HALVINGS = 14        # a step of y_fp halved this often before the branch is given up
+# Newton-Kantorovich: corrections shrinking by 1/4 or more (h <= 1/2) make the
+# state reached the only equilibrium within twice the first of the prediction.
+CONTRACTION = 0.25
 V_SOLVE = 50.0       # m/s: straight rolling does not depend on V > 0 (docs/model.md 4.20)
 
 
 class NoRollingState(RuntimeError):
-    """The straight-rolling branch from zero freeplay does not reach this y_fp."""
+    """The branch followed ends at a fold short of the value asked for (for
+    straight rolling from zero freeplay: of this y_fp)."""
 
 
-def _residual(model: mlgmodel.Model, x: numpy.ndarray):
-    """(f, df/du) at x, or None outside the model's domain."""
+def _residual(model: mlgmodel.Model, x: numpy.ndarray, par: Optional[str] = None):
+    """(f, df/du) at x, with df/d par appended if par names a parameter;
+    None outside the model's domain."""
     lib = mlgmodel.library()
     nx = len(x)
     xs = (ctypes.c_double * nx)(*x)
     f = (ctypes.c_double * nx)()
     J = (ctypes.c_double * (nx * nx))()
-    if lib.mlg_rhs_jacobian(ctypes.byref(model._p), xs, f, J, None) != 0:
+    P = (ctypes.c_double * (nx * len(mlgmodel.PARNAMES)))() if par else None
+    if lib.mlg_rhs_jacobian(ctypes.byref(model._p), xs, f, J, P) != 0:
         return None
-    return numpy.array(f), numpy.array(J).reshape(nx, nx).T
+    got = numpy.array(f), numpy.array(J).reshape(nx, nx).T
+    if par:
+        k = mlgmodel.PARNAMES.index(par)
+        got += (numpy.array(P[k * nx:(k + 1) * nx]),)
+    return got
 
 
 def solve(model: mlgmodel.Model, start: numpy.ndarray, iterations: int = 30,
@@ -91,6 +99,76 @@ def fan_states(model: mlgmodel.Model, base: numpy.ndarray, psis, same: float,
     return sorted(found, key=lambda u: u[0])
 
 
+def follow(model_at, par: str, s0: float, u0: numpy.ndarray, s1: float,
+           branch: str) -> List[Tuple[float, numpy.ndarray]]:
+    """[(s, state)] from s0 (not included) to s1 along the branch of
+    equilibria of model_at(s) through the state u0 at s0, s the value of
+    the parameter `par`.  A step (_step) predicts along the branch's
+    tangent and corrects by Newton; where the branch bends or another
+    equilibrium is near, the step is halved, and after a success doubled,
+    so the branch sets the step.  A step too short to move s that still
+    fails means the branch turns back there: NoRollingState (`branch`
+    names it in the message)."""
+    s, u, h, found = s0, numpy.array(u0, dtype=float), s1 - s0, []
+    while s != s1:
+        h = min(h, s1 - s) if h > 0 else max(h, s1 - s)
+        u_next = _step(model_at(s + h), par, u, h)
+        if u_next is not None:
+            s, u, h = s + h, u_next, 2.0 * h
+            found.append((s, u))
+            continue
+        h *= 0.5
+        if s + h == s:
+            raise NoRollingState(f"rolling: {branch} ends at {par} = {s:.9g} (a fold in {par})")
+    return found
+
+
+def _step(model: mlgmodel.Model, par: str, u: numpy.ndarray, h: float,
+          iterations: int = 30, tol: float = 1e-13):
+    """The state of `model` (par moved by h from the state u's), or None
+    unless: each Newton correction from the tangent prediction is at most
+    CONTRACTION times the step before it (the first: the predicted move),
+    and the tangent there points back to u within CONTRACTION of the move.
+    Tangents are taken in `model`: at zero freeplay with the links centred
+    the link force has a kink in y_fp."""
+    predictor = _tangent(model, par, u)
+    if predictor is None:
+        return None
+    predictor *= h
+    x, last = u + predictor, numpy.max(numpy.abs(predictor))
+    for _ in range(iterations):
+        got = _residual(model, x)
+        if got is None:
+            return None
+        f, J = got
+        try:
+            step = -numpy.linalg.solve(J, f)
+        except numpy.linalg.LinAlgError:
+            return None
+        size = numpy.max(numpy.abs(step))
+        if size > max(CONTRACTION * last, tol):
+            return None
+        x, last = x + step, size
+        if size < tol:
+            back = _tangent(model, par, x)
+            if back is None or numpy.max(numpy.abs(x - u - h * back)) > max(
+                    CONTRACTION * numpy.max(numpy.abs(x - u)), tol):
+                return None
+            return x
+    return None
+
+
+def _tangent(model: mlgmodel.Model, par: str, u: numpy.ndarray):
+    """du/d par = -(df/du)^-1 df/d par at u in `model`, or None."""
+    got = _residual(model, u, par)
+    if got is None:
+        return None
+    try:
+        return -numpy.linalg.solve(got[1], got[2])
+    except numpy.linalg.LinAlgError:
+        return None
+
+
 _paths: Dict[tuple, List[Tuple[float, numpy.ndarray]]] = {}
 
 
@@ -102,9 +180,10 @@ def _model(parameter_set, Fstar, yfp, epsilon, overrides):
 def state(parameter_set: str, Fstar: float, yfp: float, epsilon: Dict[str, float],
           **overrides: float) -> Dict[str, float]:
     """Straight rolling at load F* and freeplay y_fp [mm] (epsilon: its
-    eps_abs, eps_rel), continued from y_fp = 0; overrides: other parameters
-    (the geometry).  Every state solved is kept, and a new y_fp continues
-    from the nearest one below it.  NoRollingState if the branch ends first."""
+    eps_abs, eps_rel), continued from y_fp = 0 (follow); overrides: other
+    parameters (the geometry).  Every state solved is kept, and a new y_fp
+    continues from the nearest one below it.  NoRollingState if the branch
+    ends first."""
     key = (parameter_set, float(Fstar), tuple(sorted(epsilon.items())),
            tuple(sorted(overrides.items())))
     path = _paths.get(key)
@@ -115,20 +194,10 @@ def state(parameter_set: str, Fstar: float, yfp: float, epsilon: Dict[str, float
     k = bisect.bisect_right(ys, yfp) - 1
     y0, u0 = path[k]
     if y0 != yfp:
-        u0 = _walk(parameter_set, Fstar, epsilon, key[3], y0, u0, yfp, 0)
-        path.insert(k + 1, (float(yfp), u0))
+        def model_at(y):
+            return _model(parameter_set, Fstar, y, epsilon, key[3])
+        found = follow(model_at, "yfp", y0, u0, float(yfp),
+                       f"straight rolling from zero freeplay at F* = {Fstar:g}")
+        path[k + 1:k + 1] = found
+        u0 = found[-1][1]
     return dict(zip(mlgmodel.UNAMES, u0))
-
-
-def _walk(parameter_set, Fstar, epsilon, overrides, y0, u0, y1, depth):
-    """The state at y1 continued from (y0, u0), the step halved until each
-    piece converges within STEP_PSI of its start."""
-    u = solve(_model(parameter_set, Fstar, y1, epsilon, overrides), u0)
-    if u is not None and abs(u[0] - u0[0]) <= STEP_PSI:
-        return u
-    if depth >= HALVINGS:
-        raise NoRollingState(f"rolling: straight rolling from zero freeplay at F* = {Fstar:g} "
-                             f"ends between y_fp = {y0:.6g} and {y1:.6g} mm (a fold in y_fp)")
-    middle = 0.5 * (y0 + y1)
-    u_mid = _walk(parameter_set, Fstar, epsilon, overrides, y0, u0, middle, depth + 1)
-    return _walk(parameter_set, Fstar, epsilon, overrides, middle, u_mid, y1, depth + 1)

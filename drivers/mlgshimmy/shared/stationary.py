@@ -9,7 +9,7 @@ stability, folds (LP) and, at the symmetric gear, pitchforks (BP).
     found.folds()             # [(F*, psi_mean, diagram)] of every LP, in F*
     found.extents()           # [(F_lo, F_hi)] of each yawed diagram
     found.at(0.3)             # [(psi_mean, stable)] of every stationary state at F* = 0.3
-    found.rolling_state(0.3)  # the straight-rolling state there ({name: value}), by Newton
+    found.rolling_state(0.3)  # the straight-rolling state there ({name: value}), continued in F*
 
 The states do not depend on V (the rates vanish and V cancels from the
 tyre equations, docs/model.md 4.20); their stability does, so V is one of
@@ -89,36 +89,28 @@ class States:
 
     def rolling_state(self, Fstar: float) -> Dict[str, float]:
         """The straight-rolling state at F* on this branch (the one connected
-        to the lowest load), by Newton from the nearest state solved before,
-        walking from the lowest load in steps that move psi by at most
-        rolling.STEP_PSI.  Newton from psi = 0 (mlg_equilibrium) is no
-        substitute with side-stay angles: near the fold of the other branch
-        its iterates stall (F* = 0.042-0.082 at rho = mu = 10 deg) and
-        beyond it they land on that branch."""
+        to the lowest load), continued in F* (rolling.follow) from the
+        nearest state solved before.  Newton from psi = 0 (mlg_equilibrium)
+        is no substitute with side-stay angles: near the fold of the other
+        branch its iterates stall (F* = 0.042-0.082 at rho = mu = 10 deg)
+        and beyond it they land on that branch."""
         if not self._path:
-            model = self._model(float(self.straight[0]["Fstar"][0]))
-            u = model.equilibrium()
-            self._path.append((float(self.straight[0]["Fstar"][0]),
-                               numpy.array([u[n] for n in mlgmodel.UNAMES])))
-        F0, u0 = min(self._path, key=lambda p: abs(p[0] - Fstar))
-        u = self._walk(F0, u0, float(Fstar), 0)
-        self._path.append((float(Fstar), u))
+            F0 = float(self.straight[0]["Fstar"][0])
+            u = self._model(F0).equilibrium()
+            self._path.append((F0, numpy.array([u[n] for n in mlgmodel.UNAMES])))
+        F0, u = min(self._path, key=lambda p: abs(p[0] - Fstar))
+        if F0 != Fstar:
+            try:
+                found = rolling.follow(self._model, "Fstar", F0, u, float(Fstar),
+                                       "straight rolling from the lowest load")
+            except rolling.NoRollingState as e:
+                raise StationaryError(f"stationary: {e}") from None
+            self._path.extend(found)
+            u = found[-1][1]
         return dict(zip(mlgmodel.UNAMES, u))
 
     def _model(self, Fstar):
         return mlgmodel.Model(self.parameter_set, **{**self.values, "Fstar": Fstar})
-
-    def _walk(self, F0, u0, F1, depth):
-        if F0 == F1:
-            return u0
-        u = rolling.solve(self._model(F1), u0)
-        if u is not None and abs(u[0] - u0[0]) <= rolling.STEP_PSI:
-            return u
-        if depth >= rolling.HALVINGS:
-            raise StationaryError(f"stationary: straight rolling ends between F* = {F0:.6g} and "
-                                  f"{F1:.6g} (a fold in F*)")
-        middle = 0.5 * (F0 + F1)
-        return self._walk(middle, self._walk(F0, u0, middle, depth + 1), F1, depth + 1)
 
 
 def symmetric(values: Dict[str, float]) -> bool:
