@@ -33,6 +33,19 @@ $(eval $(call py_deps,sweep,studies.sweep))
 $(eval $(call job_grid,sweep,--rho=$(call shell_quote,$(SWEEP_RHO)) \
     --mu=$(call shell_quote,$(SWEEP_MU)),$$(PYDEPS_sweep) $(MODEL_INPUTS) | auto,point))
 
+# Robustness of the answers to a changed model (studies.robustness): one job
+# per variation of one parameter (x0.8, x0.9, x1.1, x1.2 by default), each
+# making fig07, fig09, fig10 and fig12 for that gear and its kappa*:
+#   make -j2 robustness                                   every parameter
+#   make -j2 robustness ROBUST_PARAMETERS=k_tlk ROBUST_FACTORS=0.9,1.1
+# Then the completion fraction and $(RUN_ROOT)/tables/robustness.txt.
+ROBUST_PARAMETERS ?= k_tlk,c_psi,I_psi,k_beta,c_beta,M,I_0,a4_F,a3_M,a4_M,l_tlk,a_tlk,b_tlk
+ROBUST_FACTORS ?= 0.8,0.9,1.1,1.2
+ROBUST_ARGS := --parameters=$(call shell_quote,$(ROBUST_PARAMETERS)) \
+               --factors=$(call shell_quote,$(ROBUST_FACTORS))
+$(eval $(call py_deps,robustness,studies.robustness))
+$(eval $(call job_grid,robustness,$(ROBUST_ARGS),$$(PYDEPS_robustness) $(MODEL_INPUTS) | auto,job))
+
 # The allowable-freeplay criterion (eq. 17) under each low-load assumption:
 # one job per group of assumptions (studies.criterion GROUPS), so `make -j2
 # criterion` runs them side by side; `criterion` prints the table and draws

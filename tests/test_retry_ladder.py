@@ -23,13 +23,17 @@ def attempts(outcomes):
     return attempt, calls
 
 
+def OWN():
+    """A run's own steps: Fig. 10's orbit runs, NTST of constants/c.mlg."""
+    return {"DS": 0.05, "DSMIN": 1e-5, "DSMAX": 1.0, "NTST": 80}
+
+
 MX = autoglue.RunError("run po3 in x: no convergence (MX) at branch -2 label 4")
 
 
 def test_the_first_rung_that_completes_is_kept():
     attempt, calls = attempts([MX, MX, "finer mesh"])
-    kw = {"DS": 0.05, "DSMAX": 1.0}
-    assert continuation.with_ladder(attempt, kw, "po3") == "finer mesh"
+    assert continuation.with_ladder(attempt, OWN, "po3") == "finer mesh"
     assert calls == [(False, {}), (False, {"DS": pytest.approx(0.005), "DSMIN": pytest.approx(1e-9)}),
                      (False, {"NTST": 160})]
 
@@ -37,18 +41,18 @@ def test_the_first_rung_that_completes_is_kept():
 def test_every_rung_stopping_raises_the_first_stop():
     attempt, calls = attempts([MX] * (1 + len(continuation.LADDER)))
     with pytest.raises(autoglue.RunError) as error:
-        continuation.with_ladder(attempt, {}, "po3")
+        continuation.with_ladder(attempt, OWN, "po3")
     assert error.value is MX and len(calls) == 1 + len(continuation.LADDER)
-    assert calls[-1][1] == {"NTST": 160, "DS": pytest.approx(0.05), "DSMIN": pytest.approx(1e-9),
-                            "DSMAX": pytest.approx(1.0)}
+    assert calls[-1][1] == {"NTST": 160, "DS": pytest.approx(0.005),
+                            "DSMIN": pytest.approx(1e-9), "DSMAX": pytest.approx(0.5)}
 
 
 def test_other_errors_and_allowed_stops_are_not_retried():
     attempt, calls = attempts([autoglue.RunError("run x: AUTO wrote no b.x")])
     with pytest.raises(autoglue.RunError, match="wrote no"):
-        continuation.with_ladder(attempt, {}, "x")
+        continuation.with_ladder(attempt, OWN, "x")
     attempt, calls = attempts(["kept up to its MX"])
-    assert continuation.with_ladder(attempt, {}, "x", keep_mx=True) == "kept up to its MX"
+    assert continuation.with_ladder(attempt, OWN, "x", keep_mx=True) == "kept up to its MX"
     assert calls == [(True, {})]
 
 

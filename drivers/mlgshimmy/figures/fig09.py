@@ -20,8 +20,11 @@ def compute(parameter_set="figures", where="fig09"):
     eq = ct.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
     curves = []
     for direction, ds in (("up", 0.01), ("down", -0.01)):
+        # it ends where it leaves the plane: F* at either end, or V (a
+        # stiffer gear's curve passes V = 600 m/s below F* = 3.5)
         curves.append(ct.hopf_curve(rundir, f"hopf_{direction}", eq("HB1"), DS=ds,
-                                    stop={"Fstar": list(FSTAR_RANGE)},
+                                    stop={"Fstar": list(FSTAR_RANGE),
+                                          "V": [ct.V_MIN, ct.V_MAX]},
                                     expect=["UZ"]))
     return {"curves": [jobs.stored(c, ("V", "Fstar")) for c in curves],
             "ends": [(p["Fstar"], p["V"]) for c in curves for p in c("UZ")]}

@@ -38,21 +38,9 @@ def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
                                                        gear.current().geometry.baseline)})
 
 
-def hopf_points(diagram, parameter_set, values):
-    """[{"name", "V", "freq_hz", "band", "dof", "loses", "criticality",
-    "about"}] of the diagram's Hopf points, named by their mode (shared.naming)."""
-    modes = [naming.mode(parameter_set, "V", v, **values) for v, _ in diagram.hopf]
-    out = []
-    for (v, _), m, name in zip(diagram.hopf, modes, naming.names(modes)):
-        crit = naming.criticality(v, m["loses"], diagram.branches)
-        out.append({"name": name, "V": v, **m, "criticality": crit,
-                    "about": naming.describe(m, crit)})
-    return out
-
-
 def numbers(diagram, points):
     """The special points of Fig. 10 as {quantity: value}: the Hopf points
-    by name (points: hopf_points), the folds S1, S2, ... of the
+    by name (points: the diagram's named points), the folds S1, S2, ... of the
     high-frequency orbits (>= HIGH_HZ; S1 is the paper's S), the folds of
     the low-frequency ones, and where a branch stopped with no convergence."""
     out = {f"{p['name']} [m/s]": p["V"] for p in points}
@@ -89,11 +77,11 @@ def compute():
     try:
         diagram = speed_diagram(paths.rundir("fig10/table"), "table", allow_failed=True,
                                 **FREEPLAY, **at)[1]
-        table = numbers(diagram, hopf_points(diagram, "table", {**FREEPLAY, **at}))
+        table = numbers(diagram, diagram.named)
     except (autoglue.RunError, RuntimeError) as exc:
         print(f"fig10: the `table` set failed, its column stays empty: {getattr(exc, 'brief', exc)}")
         table = {}
-    points = hopf_points(freeplay, "figures", {**FREEPLAY, **at})
+    points = freeplay.named
     # V_crit: where zero freeplay loses stability (the paper's 346.1 m/s, Fig. 7)
     crit = {"V_crit (zero freeplay) [m/s]": zero.hopf[0][0]} if zero.hopf else {}
     return {"freeplay": stored(eq, freeplay), "zero": stored(zero_eq, zero),

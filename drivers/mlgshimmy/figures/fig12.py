@@ -29,7 +29,8 @@ VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
 
 
 def runs(parameter_set="figures", where="fig12", variant=0):
-    """(stationary states, Hopf loads, orbit runs)."""
+    """(stationary states, Hopf points named by their mode (shared.naming),
+    orbit runs)."""
     rundir = paths.rundir(where)
     values = {**VALUES, "strut_variant": float(variant), **gear.parameters()}
     # The printed strut (variant 1) folds straight rolling twice in F* while
@@ -47,9 +48,8 @@ def runs(parameter_set="figures", where="fig12", variant=0):
     diagram = ct.speed_diagram(rundir, parameter_set, values, numpy.linspace(F_MIN, F_MAX, 1000),
                                parameter="Fstar", gap=1e-3, figure=where, state=state, DS=0.002,
                                DSMAX=0.02, NMX=3000, **steps)
-    hopf = [v for v, _ in diagram.hopf]
     orbits = diagram.branches
-    return found, hopf, orbits
+    return found, diagram.named, orbits
 
 
 def rolling_states(found):
@@ -85,13 +85,19 @@ def bistable_interval(lower, hopf, orbits):
     return max(lower, min(coexisting)), min(upper, max(separating))
 
 
-def numbers(found, hopf, orbits):
+def loads_of(named):
+    """The loads of the named Hopf points, in order."""
+    return [p["Fstar"] for p in named]
+
+
+def numbers(found, named, orbits):
+    hopf = loads_of(named)
     out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(found.pitchforks)}
     if not gear.current().symmetric:
         # the baseline's pitchforks (its column) beside the folds they became
         out.update({f"pitchfork {k + 1} F*": None for k in range(2)})
         out.update({f"stationary fold F{k + 1} F*": F for k, (F, _, _) in enumerate(found.folds())})
-    out.update({f"H{k + 1} F*": f for k, f in enumerate(hopf)})
+    out.update({f"{p['name']} F*": p["Fstar"] for p in named})
     folds = [p["Fstar"] for diagram in orbits for p in diagram("LP")]
     out.update({f"fold {k + 1} F*": f for k, f in enumerate(folds)})
     if orbits:
@@ -100,6 +106,29 @@ def numbers(found, hopf, orbits):
     a12, b12 = bistable_interval(stable_from(found, hopf), hopf, orbits)
     out.update({"a_12": a12, "b_12": b12})
     return out
+
+
+def bounds_meaning(found, hopf, numbers):
+    """What a_12 and b_12 are at this gear, as lines under the table: at the
+    paper's gear a pitchfork of straight rolling and the Hopf point; at a
+    side-stay geometry the pitchfork has become a fold of the stationary
+    states, or the stable orbits begin at their own turning point."""
+    a12, b12 = numbers["a_12"], numbers["b_12"]
+    if a12 is None:
+        return ["a_12, b_12: no stable orbit coexists with stable straight rolling here"]
+    lower = stable_from(found, hopf)
+    same = abs(a12 - lower) <= 1e-12 * max(1.0, lower)
+    if same and lower in found.pitchforks:
+        a_is = "the last pitchfork of straight rolling (as in the paper)"
+    elif same and lower != F_MIN:
+        a_is = "a fold of the stationary states (the pitchfork at the paper's gear)"
+    elif same:
+        a_is = "the lightest load computed (straight rolling is stable from there)"
+    else:
+        a_is = "the turning point of the orbits, where the stable shimmy begins"
+    b_is = "the Hopf point of straight rolling" if abs(b12 - hopf[0]) <= 1e-12 * hopf[0] \
+        else "where the unstable orbits that separate the two attractors end"
+    return [f"a_12 = {a12:.4g}: {a_is}", f"b_12 = {b12:.4g}: {b_is}"]
 
 
 def freeplay_boundary(parameter_set, loads, variant=0, state=None):
@@ -117,9 +146,13 @@ def freeplay_boundary(parameter_set, loads, variant=0, state=None):
 def compute(name="fig12", variant=0, parameter_set="figures"):
     found, hopf, orbits = runs(parameter_set, name, variant)
     loads = numpy.linspace(F_MIN, F_MAX, 200)
-    return {"name": name, "variant": variant, "numbers": numbers(found, hopf, orbits),
+    out = numbers(found, hopf, orbits)
+    return {"name": name, "variant": variant, "numbers": out,
+            "about": ([f"{p['name']}: {p['about']}" for p in hopf]
+                      + (bounds_meaning(found, loads_of(hopf), out) if hopf else [])),
+            "hopf_names": [p["name"] for p in hopf],
             "eq": jobs.stored(found.straight, COLUMNS),
-            "pitchforks": found.pitchforks, "hopf": hopf,
+            "pitchforks": found.pitchforks, "hopf": loads_of(hopf),
             "folds": [(F, psi) for F, psi, _ in found.folds()],
             "yaw": [jobs.stored(d, COLUMNS) for d in found.yawed],
             "orbits": [jobs.stored(d, COLUMNS) for d in orbits],
@@ -128,7 +161,7 @@ def compute(name="fig12", variant=0, parameter_set="figures"):
 
 
 def plot(result):
-    paper.report(result["name"], result["numbers"])
+    paper.report(result["name"], result["numbers"], notes=result["about"])
     eq, pitchforks, hopf = jobs.loaded(result["eq"]), result["pitchforks"], result["hopf"]
     yaw = [jobs.loaded(d) for d in result["yaw"]]
     orbits = [jobs.loaded(d) for d in result["orbits"]]
@@ -160,12 +193,12 @@ def plot(result):
         draw.mark(amp, f, 0, "BP", name=f"P{k + 1}")
     for k, (f, psi) in enumerate(result.get("folds", [])):
         draw.mark(amp, f, psi * DEG, "LPeq", name=f"F{k + 1}")
-    for k, f in enumerate(hopf):
-        draw.mark(amp, f, 0, "HB", name=f"H{k + 1}")
+    for f, name in zip(hopf, result["hopf_names"]):
+        draw.mark(amp, f, 0, "HB", name=name)
         for diagram in orbits:   # the orbit branch born there starts at its frequency
             start = diagram[0]
             if abs(start["Fstar"][0] - f) < 1e-6 * max(1.0, abs(f)):
-                draw.mark(freq, f, start["freq"][0], "HB", name=f"H{k + 1}")
+                draw.mark(freq, f, start["freq"][0], "HB", name=name)
     # the data set the range: the orbits, the yawed states and the boundary
     low = min(numpy.nanmin(y) for y in shown)
     high = max(numpy.nanmax(y) for y in shown)

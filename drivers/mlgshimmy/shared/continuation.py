@@ -16,6 +16,7 @@ import numpy
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import naming
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
@@ -59,11 +60,21 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
         **kw: Any):
     """autoglue.run on the MLG model: the base constants, then the run-type
     file constants/runs/c.<kind> if given, then the overlay file
-    constants/runs/c.<overlay> if given, then the keyword overrides."""
+    constants/runs/c.<overlay> if given, then the keyword overrides.  A run
+    that stops with MX where that is an error goes up the retry ladder
+    (with_ladder); with allow_mx it is kept as it ends."""
     files = [CONSTANTS] + [os.path.join(RUN_CONSTANTS, f"c.{k}") for k in (kind, overlay) if k]
     rundir = autoglue.claim(rundir)           # emptied on first use: claim, then write
     mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
-    return autoglue.run(rundir, name, constants=files, e=MODEL, **kw)
+
+    def attempt(mx, **rung):
+        return autoglue.run(rundir, name, constants=files, e=MODEL,
+                            **{**kw, "allow_mx": mx, **rung})
+
+    def own():
+        merged = autoglue.read_constants(files)
+        return {key: kw.get(key, merged[key]) for key in STEP_CONSTANTS}
+    return with_ladder(attempt, own, f"run {name}", keep_mx=kw.get("allow_mx", False))
 
 
 def load(rundir: str, name: str):
@@ -155,9 +166,8 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
         name = names(len(runs))
         stops = list(bounds) + [h + s * gap(h) for h in left for s in (-1, 1)]
         try:
-            orbits = with_ladder(lambda mx, **rung: periodic_from(
-                rundir, name, origin, parameter, stop={parameter: stops}, allow_mx=mx,
-                **{**kw, **rung}), kw, f"{figure}: orbits {name}", keep_mx=allow_failed)
+            orbits = periodic_from(rundir, name, origin, parameter, stop={parameter: stops},
+                                   allow_mx=allow_failed, **kw)
         except autoglue.RunError as exc:
             if not allow_failed:
                 raise
@@ -228,25 +238,25 @@ LADDER = (("smaller steps", {"DS": 0.1, "DSMIN": 1e-4}),
           ("a finer mesh", {"NTST": 2.0}),
           ("a finer mesh and smaller steps", {"NTST": 2.0, "DS": 0.1, "DSMIN": 1e-4,
                                               "DSMAX": 0.5}))
-BASE_STEPS = {"DS": 0.5, "DSMIN": 1e-5, "DSMAX": 2.0, "NTST": 80}   # constants/c.mlg
+STEP_CONSTANTS = ("DS", "DSMIN", "DSMAX", "NTST")
 
 
-def rung_constants(kw, factors):
-    """A rung's AUTO constants: each factor times the run's own value (its
-    keyword, else BASE_STEPS), NTST as a whole number."""
+def rung_constants(own, factors):
+    """A rung's AUTO constants: each factor times the run's own value
+    (own: {constant: value}), NTST as a whole number."""
     out = {}
     for key, factor in factors.items():
-        value = factor * kw.get(key, BASE_STEPS[key])
+        value = factor * own[key]
         out[key] = int(round(value)) if key == "NTST" else value
     return out
 
 
-def with_ladder(attempt, kw, what, keep_mx=False):
-    """attempt(mx, **constants) -> diagram.  With keep_mx (the caller draws
-    a branch up to an MX and reports where it stopped) the run as given,
-    MX allowed.  Else the run as given, then up LADDER while it stops with
-    MX; if every rung stops too, the first RunError.  Other errors are
-    raised."""
+def with_ladder(attempt, own, what, keep_mx=False):
+    """attempt(mx, **constants) -> diagram; own() -> the run's own
+    STEP_CONSTANTS.  With keep_mx (the caller draws a branch up to an MX
+    and reports where it stopped) the run as given, MX allowed.  Else the
+    run as given, then up LADDER while it stops with MX; if every rung stops
+    too, the first RunError.  Other errors are raised."""
     if keep_mx:
         return attempt(True)
     try:
@@ -255,8 +265,9 @@ def with_ladder(attempt, kw, what, keep_mx=False):
         if "(MX)" not in str(exc):
             raise
         first = exc
+    steps = own()
     for rung, factors in LADDER:
-        constants = rung_constants(kw, factors)
+        constants = rung_constants(steps, factors)
         try:
             bd = attempt(False, **constants)
         except autoglue.RunError as exc:
@@ -317,12 +328,13 @@ class Diagram:
     """Straight rolling along one parameter: its Hopf points hopf =
     [(value, frequency in Hz)] and real-eigenvalue crossings bp (spectrum
     scan), parts = [(AUTO's HB point, periodic run)] of the branches born
-    there and names = the names of those runs (for load()).  Keywords (e.g.
+    there, names = the names of those runs (for load()) and named = the
+    Hopf points named by their mode (naming.named_points).  Keywords (e.g.
     yfp, scaling) are kept as attributes."""
 
-    def __init__(self, parameter, hopf, bp, parts, names, **about):
+    def __init__(self, parameter, hopf, bp, parts, names, named=(), **about):
         self.parameter, self.hopf, self.bp, self.parts = parameter, hopf, bp, parts
-        self.names = names
+        self.names, self.named = names, list(named)
         self.__dict__.update(about)
 
     def name_of(self, run):
@@ -398,7 +410,9 @@ def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
         reached |= {h for h, collapsed in ends.items() if collapsed}
         parts += [(point, orbits) for orbits in runs]
         names += [name(n) for n in range(len(runs))]
-    return Diagram(parameter, hopf, bp, parts, names, **(about or {}))
+    named = naming.named_points(hopf, [run for _, run in parts], parameter_set, parameter,
+                                state=state, **values)
+    return Diagram(parameter, hopf, bp, parts, names, named, **(about or {}))
 
 
 def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, with_period=False,

@@ -223,6 +223,7 @@ def stored_diagram(diagram):
     (V, psi_amp), the orbit branches (jobs.stored) and per orbit run its
     first and smallest V (a turn AUTO may not label LP)."""
     return {"yfp": diagram.yfp, "scaling": diagram.scaling, "hopf": diagram.hopf,
+            "hopf_names": [p["name"] for p in diagram.named],
             "folds": [(V, amp) for _, _, V, amp in diagram.folds()],
             "branches": [b for run in diagram.branches for b in jobs.stored(run, COLUMNS)],
             "turns": [(run[0]["V"][0], min(run[0]["V"])) for run in diagram.branches]}
@@ -258,11 +259,12 @@ def diagrams_of(done, prefix=""):
 
 def diagram_numbers(diagrams, prefix=""):
     """{quantity: value}: the Hopf and fold speeds of stored diagrams, as
-    "<prefix>y_fp = <y>: H<k> [m/s]" and "...: S<k> [m/s]"."""
+    "<prefix>y_fp = <y>: <name> [m/s]" (the Hopf points named by their mode,
+    shared.naming) and "...: S<k> [m/s]"."""
     out = {}
     for d in diagrams:
-        for k, (V, _) in enumerate(d["hopf"]):
-            out[f"{prefix}y_fp = {d['yfp']:g}: H{k + 1} [m/s]"] = V
+        for name, (V, _) in zip(d["hopf_names"], d["hopf"]):
+            out[f"{prefix}y_fp = {d['yfp']:g}: {name} [m/s]"] = V
         for k, (V, _) in enumerate(d["folds"]):
             out[f"{prefix}y_fp = {d['yfp']:g}: S{k + 1} [m/s]"] = V
     return out
@@ -415,6 +417,23 @@ def kappa_star(evaluate, loads, model, points=None, finer=(10,)):
         if point["first"] < best["first"]:
             best = point
     return best["first"] / EPSILON, best
+
+
+# F* on a grid of 0.1, refined to 0.02 and then 0.005 around the minimum
+# (the resolution of Fig. 18's grid refinement, with a third of its loads)
+CRITERION_LOADS = ENVELOPE_LOADS[::2]
+CRITERION_FINER = (5, 4)
+
+
+def criterion(model):
+    """Eq. (17)'s kappa* of the gear `model` (parameter overrides) by the
+    criterion's recipe: {kappa, Fstar, V, eta, mode} at the minimum over
+    CRITERION_LOADS, refined CRITERION_FINER around it (studies.criterion,
+    studies.robustness)."""
+    kappa, best = kappa_star(lambda F: least_unstable(F, **model), CRITERION_LOADS, model,
+                             finer=CRITERION_FINER)
+    return {"kappa": kappa, "Fstar": best["Fstar"], "V": best["V"],
+            "eta": best["eta"], "mode": best["mode"]}
 
 
 SWITCH_WIDTHS = 3.0    # the stage switch: eta* within this many 1/k_stage of eta_stage

@@ -107,3 +107,19 @@ def describe(m: Dict[str, object], crit: Optional[str]) -> str:
     return (f"{m['band']}-frequency {m['dof']}, "
             f"{'loses' if m['loses'] else 'regains'} stability"
             + (f", {crit}" if crit else ", criticality unknown (no orbit branch near it)"))
+
+
+def named_points(hopf, orbits, parameter_set: str, parameter: str, state=None,
+                 **values: float) -> List[Dict[str, object]]:
+    """[{"name", <parameter>, "freq_hz", "band", "dof", "loses", "criticality",
+    "about"}] of the Hopf points hopf = [(value, Hz)] of straight rolling
+    along `parameter`, named by their mode, with the criticality their
+    orbit branches `orbits` show."""
+    modes = [mode(parameter_set, parameter, v, state=state, **values) for v, _ in hopf]
+    out = []
+    for (v, _), m, name in zip(hopf, modes, names(modes)):
+        crit = criticality(v, m["loses"], orbits, parameter)
+        out.append({"name": name, parameter: v, **m, "criticality": crit,
+                    "about": describe(m, crit)})
+    return out
+

@@ -37,9 +37,9 @@ VARIANTS = (0, 1)
 STAGE_SWITCHES = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.34)
 C_PSI = (410.0, 567.0)               # table value and halfway to `figures`
 TYRE_LOADS = (15e3, 30e3, 45e3, 60e3)  # F_tyre_min [N]; 0 is the paper's laws
-# F* on a grid of 0.1, refined to 0.02 and then 0.005 around the minimum
-# (the resolution of Fig. 18's grid refinement, with a third of its loads)
-LOADS = mg.ENVELOPE_LOADS[::2]
+LOADS = mg.CRITERION_LOADS
+
+
 def base_assumption():
     """The `figures` set's values of the varied assumptions (the library's c_psi)."""
     return {"c_psi": mlgmodel.C_PSI_FIGURES, "F_tyre_min": 0.0, "eta_stage": 0.34}
@@ -68,13 +68,9 @@ def first_unstable(Fstar, **overrides):
 
 
 def kappa_star(overrides):
-    """{kappa, Fstar, V, eta} at the minimum over the envelope's loads, at the
-    side-stay geometry of the run (shared.geometry)."""
-    overrides = {**overrides, **gear.parameters()}
-    kappa, best = mg.kappa_star(lambda F: first_unstable(F, **overrides), LOADS, overrides,
-                                finer=(5, 4))
-    return {"kappa": kappa, "Fstar": best["Fstar"], "V": best["V"],
-            "eta": best["eta"], "mode": best["mode"]}
+    """{kappa, Fstar, V, eta, mode} at the minimum over the envelope's loads,
+    for the run's gear (shared.gear) with the overrides."""
+    return mg.criterion({**overrides, **gear.parameters()})
 
 
 def write(name, data):
