@@ -7,6 +7,7 @@
 #   make submit-sweep [SWEEP_RHO=... SWEEP_MU=...]  the side-stay sweep, then its summary
 #   make submit-atlas [ATLAS_V=... ATLAS_FSTAR=...] the atlas, then its summary
 #   make submit-design-map [DESIGN_RHO=... DESIGN_MU=...]  the design map, then its summary
+#   make submit-robustness [ROBUST_PARAMETERS=... ROBUST_FACTORS=...]  the robustness suite
 #
 #   SUBMIT_ARGS     options of the submit command (--per-task 50, --throttle 20,
 #                   --jobs 8 for parallel, --env VAR=VALUE, --dry-run)
@@ -46,7 +47,8 @@ SUBMIT_PREREQUISITES := setup $(MLG_MODEL).exe $(MLG_SHARED) $(MLG_SIMULATE)
 SUBMIT_PY = PYTHONPATH=$(call shell_quote,$(CURDIR)/drivers) $(PYTHON)
 SUBMIT_MAKE = make --no-print-directory AUTO_THREADS=$(AUTO_THREADS)
 
-.PHONY: $(addprefix submit-,$(FIGURES_WITH_PARTS)) submit-sweep submit-atlas submit-design-map
+.PHONY: $(addprefix submit-,$(FIGURES_WITH_PARTS)) submit-sweep submit-atlas submit-design-map \
+        submit-robustness
 # the figure says how many stages it has (`stages`), so an empty `jobs --missing`
 # stage does not end the list
 $(addprefix submit-,$(FIGURES_WITH_PARTS)): submit-%: $(SUBMIT_PREREQUISITES)
@@ -70,3 +72,4 @@ endef
 $(eval $(call submit_grid,sweep,sweep,SWEEP_GRID_ARGS))
 $(eval $(call submit_grid,atlas,atlas,ATLAS_ARGS))
 $(eval $(call submit_grid,design-map,design_map,DESIGN_GRID_ARGS))
+$(eval $(call submit_grid,robustness,robustness,ROBUST_ARGS))
