@@ -32,7 +32,6 @@ import os
 import shutil
 import signal
 import sys
-import tempfile
 
 import named_points  # this directory: run as a script, or pytest's pythonpath
 
@@ -186,7 +185,8 @@ def remove_leftovers(root, figure):
 def replace(figure, run_dir, root=REFERENCE_ROOT):
     """Make root/figure the set of every b-file under run_dir, keeping the
     old set's settings files; atomic (module docstring)."""
-    import compare_diagrams as cd
+    import compare_diagrams as cd   # puts mlgshimmy on the path, or says how
+    from mlgshimmy.shared.jobs.atomic import new_directory
     target = os.path.join(root, figure)
     os.makedirs(root, exist_ok=True)
     remove_leftovers(root, figure)
@@ -196,7 +196,7 @@ def replace(figure, run_dir, root=REFERENCE_ROOT):
     if not runs:
         raise SetError(f"{run_dir}: the figure wrote no b-files (that {SELECTION} selects)")
     # created here, under a name no one can foresee (the pid for remove_leftovers)
-    new = tempfile.mkdtemp(prefix=f".{figure}.new-{os.getpid()}-", dir=root)
+    new = new_directory(root, f".{figure}.new-{os.getpid()}-")
     try:
         _fill(new, target, run_dir, runs, cd)
         publish(new, target)
