@@ -5,6 +5,7 @@ continuation's tolerance (docs/model.md 8.5: f(Su; -rho, -mu) = S f(u; rho, mu))
 
 Run: /usr/bin/python3 -m pytest -q tests/test_design_map.py
 """
+import json
 import os
 import pathlib
 import subprocess
@@ -105,3 +106,34 @@ def test_summary_writes_the_table_from_the_grids_records(tmp_path, monkeypatch):
             .splitlines() if line.split()[:2] in (["0", "0"], ["10", "0"])]
     assert len(rows) == 2 and all(row[11] == "-" for row in rows), rows
     assert (tmp_path / "figures" / "design_map.png").exists()
+
+
+def test_a_finished_grid_is_done_for_status_missing_and_submit(tmp_path, monkeypatch):
+    """Points written by the point job (its numbers faked, the writing its own)
+    carry the provenance shared.jobs.grid reads: `status` exits 0, `jobs
+    --missing` lists none, and the submit pipeline of `make submit-design-map`
+    submits nothing."""
+    monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
+    monkeypatch.setattr(design_map, "compute", lambda rho, mu, rundir: {
+        "rho_deg": rho, "mu_deg": mu, "critical_V": 346.0, "cpu_seconds": {"scans": 1.0}})
+    grid = ["--rho=0,10", "--mu=0"]
+    for name in ("rho0_mu0", "rho10_mu0"):
+        design_map.run_point(name)
+    with open(tmp_path / "design_map" / "rho10_mu0" / "result.json") as source:
+        record = json.load(source)
+    assert record["critical_V"] == 346.0
+    assert record["provenance"]["parameter_set"] == "figures"
+    assert record["provenance"]["settings"]["eom_terms"] == 2
+    status = tool("status", *grid, MLG_RUN_ROOT=str(tmp_path))
+    assert status.returncode == 0, status.stdout + status.stderr
+    assert "design_map: all 2 points have a valid result" in status.stdout, status.stdout
+    missing = tool("jobs", "--missing", *grid, MLG_RUN_ROOT=str(tmp_path))
+    assert missing.returncode == 0 and missing.stdout == "", missing.stdout
+    assert "design_map: 0 of 2 points without a valid result" in missing.stderr
+    submitted = subprocess.run(
+        [sys.executable, "-m", "mlgshimmy.shared.jobs.submit", "submit", "--scheduler", "slurm",
+         "--allow-empty", "--dry-run", "--name", "design_map", "--stage", "-",
+         "--out", str(tmp_path / "out")], cwd=ROOT, input=missing.stdout,
+        capture_output=True, text=True, env={**os.environ, "MLG_RUN_ROOT": str(tmp_path)})
+    assert submitted.returncode == 0 and "nothing to submit" in submitted.stderr, \
+        submitted.stdout + submitted.stderr

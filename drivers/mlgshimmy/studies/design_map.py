@@ -2,8 +2,9 @@
 
 Each grid point is an independent job (shared.jobs.grid, like the sweep)
 with its own run directory $MLG_RUN_ROOT/design_map/rho<deg>_mu<deg>/ and
-result.json there, at the complete equations (eom_terms = 2) and the
-`figures` set:
+result.json there with its provenance (shared.jobs.grid: git commit, AUTO
+version, parameter set, settings()), at the complete equations (eom_terms =
+2) and the `figures` set:
 
   zero freeplay, F* = 1: the critical speed (first Hopf point in V);
   y_fp = 1 mm, eps = 0.1 mm (freeplay.NOMINAL), F* = 1: the Hopf points
@@ -55,7 +56,6 @@ from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared.jobs import grid as jobgrid
 
-POINTS = jobgrid.Plane("rho", "mu", "design_map")    # point rho<deg>_mu<deg>
 DEFAULT_GRID = "-20:20:10"
 EOM = 2                      # the complete equations (docs/model.md 8.4)
 FSTAR = 1.0
@@ -72,6 +72,20 @@ QUANTITIES = (("critical_V", "V_crit (zero freeplay)", "m/s", ".3f"),
               ("kappa", "kappa*", "", ".4f"), ("kappa_Fstar", "F* at kappa*", "", ".3f"),
               ("ytlk_ratio", "y_tlk/y_fp, F* = 1", "", "+.3f"),
               ("ytlk_ratio_kappa", "y_tlk/y_fp at kappa*", "", "+.3f"))
+
+
+
+
+def settings():
+    """What a point's result depends on besides its angles, the code, the
+    model and AUTO (recorded in its provenance, shared.jobs.grid)."""
+    return {"eom_terms": EOM, "Fstar": FSTAR, "freeplay": FREEPLAY, "high_Hz": HIGH_HZ,
+            "V_scan": [ct.V_MIN, ct.V_MAX, len(ct.SPEED_SCAN)],
+            "psi_amp_stop": PSI_AMP_STOP, "orbit_steps": ORBIT_STEPS,
+            "kappa_loads": [float(F) for F in KAPPA_LOADS], "kappa_finer": KAPPA_FINER}
+
+
+POINTS = jobgrid.Plane("rho", "mu", "design_map", "figures", settings)   # rho<deg>_mu<deg>
 
 
 def axes(args):
@@ -213,7 +227,7 @@ def run_point(name):
     started = time.monotonic()
     result = compute(rho, mu, paths.rundir(os.path.join("design_map", name)))
     result["wall_seconds"] = round(time.monotonic() - started, 1)
-    jobs.write_json(POINTS.result_path(rho, mu), result, indent=1)
+    POINTS.write(rho, mu, result)
     print(f"design_map: {name}: " + "; ".join(
         f"{key} {_cell(result.get(key), fmt)}" for key, _, _, fmt in QUANTITIES)
         + f"; {sum(result['cpu_seconds'].values()):.0f} s CPU "
