@@ -73,3 +73,14 @@ def test_a_run_on_a_full_disk_says_so(tmp_path):
         subprocess.run(["umount", str(disk)], check=True)
     assert proc.returncode != 0
     assert "RunError" in proc.stderr and "is full" in proc.stderr, proc.stderr[-2000:]
+
+
+def test_an_s_file_cut_at_a_line_end_inside_its_last_solution_is_an_error(run, tmp_path):
+    files = copy(run, tmp_path)
+    with open(files[1]) as f:
+        lines = f.readlines()
+    with open(files[1], "w") as f:
+        f.writelines(lines[:-1])             # whole lines, the last label's header kept
+    with pytest.raises(autoglue.RunError, match=f"{files[1]}: solution .* has .* values in "
+                       ".* lines, its header says .*: cut short"):
+        autoglue.read_diagram(files, "eq")

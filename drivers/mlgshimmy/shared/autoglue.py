@@ -473,8 +473,8 @@ def read_diagram(outputs, what, log=None):
     """The diagram of a run's b-, s- and d-files, its b-file parsed now (AUTO
     reads lazily), checked complete by its content (AUTO ignores write
     errors, so a full disk leaves files cut at any byte): every branch ends
-    in a labelled EP, UZ or MX, the s-file holds a solution for every label
-    of the b-file, and the b-file's last line is whole.  RunError otherwise
+    in a labelled EP, UZ or MX, the s-file holds a whole solution for every
+    label of the b-file, and the b-file's last line is whole.  RunError otherwise
     (saying so when the file system is full)."""
     auto = init()
     try:
@@ -488,7 +488,6 @@ def read_diagram(outputs, what, log=None):
         bd = auto.bifDiag.bifDiag(*outputs)
         lengths = [len(branch) for branch in bd]
         labels = [lab for branch in bd for _, lab, _ in branches.labelled_points(branch)]
-        saved = [solution["LAB"] for solution in auto.parseS.parseS(outputs[1])]
         cut = [branch.BR for branch in bd
                if not any(index == len(branch) - 1 and kind in BRANCH_ENDS
                           for index, _, kind in branches.labelled_points(branch))]
@@ -499,10 +498,50 @@ def read_diagram(outputs, what, log=None):
         raise RunError(f"{what}: {outputs[0]} is empty or cut short"
                        + (f" (branch {cut[0]} has no end point)" if cut else "")
                        + _full(outputs[0]), log)
+    saved = solution_labels(outputs[1], what, log)
     if sorted(labels) != sorted(saved):
         raise RunError(f"{what}: {outputs[1]} holds solutions {sorted(saved)}, the b-file "
                        f"labels {sorted(labels)}: cut short" + _full(outputs[1]), log)
     return bd
+
+
+def solution_labels(path, what, log=None):
+    """The labels of an s-file's solutions, each read in full (AUTO's parseS
+    reads only the headers, so a solution cut at a line end passed): after
+    its header (IBR NTOT ITP LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPARX)
+    NROWPR lines holding NTPL points of NAR values and NPARX parameters,
+    and, when NROWPR is more than those take, the direction: NFPR indices,
+    NFPR values and NTPL points of NAR - 1 values.  RunError naming the file
+    otherwise."""
+    try:
+        with open(path, "rb") as f:
+            lines = f.read().split(b"\n")
+    except OSError as exc:
+        raise RunError(f"{what}: {path} unreadable ({exc.strerror})", log) from exc
+    if lines.pop():
+        raise RunError(f"{what}: {path}: its last line is cut short" + _full(path), log)
+    labels, at = [], 0
+    while at < len(lines):
+        try:
+            header = [int(word) for word in lines[at].split()]
+        except ValueError:
+            header = []
+        if len(header) not in (12, 16):
+            raise RunError(f"{what}: {path}: line {at + 1} is not a solution header: cut "
+                           "short or not an s-file" + _full(path), log)
+        _, _, _, label, nfpr, _, ntpl, nar, nrowpr, _, _, nparx = header[:12]
+        block = lines[at + 1:at + 1 + nrowpr]
+        values = len(b" ".join(block).split())
+        # the line counts AUTO writes (wrtsp8): 7 values a line, 20 indices
+        plain = ((nar - 1) // 7 + 1) * ntpl + (nparx + 6) // 7
+        expected = nar * ntpl + nparx + (2 * nfpr + (nar - 1) * ntpl if nrowpr > plain else 0)
+        if len(block) != nrowpr or values != expected:
+            raise RunError(f"{what}: {path}: solution {label} has {values} values in "
+                           f"{len(block)} lines, its header says {expected} in {nrowpr}: "
+                           "cut short" + _full(path), log)
+        labels.append(label)
+        at += 1 + nrowpr
+    return labels
 
 
 def _full(path):
