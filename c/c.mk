@@ -18,12 +18,12 @@ $(MLG_OBJECTS): build/obj/%.o: c/%.c $(MLG_HEADERS)
 # -ffp-contract=off (as -std=c11 implies): no fused multiply-add, so that both
 # builds round alike.  MLG_AVX2=no builds the generic one only.
 MLG_AVX2 ?= $(if $(filter x86_64-%,$(shell $(call shell_quote,$(CC)) -dumpmachine)),yes,no)
+MLG_AVX2_FLAGS := -mavx2 -ffp-contract=off -DMLG_JACOBIAN_VARIANT=mlg_rhs_jacobian_avx2
 ifeq ($(MLG_AVX2),yes)
 MLG_JACOBIAN_AVX2 := build/obj/vector_field_jacobian_avx2.o
 $(MLG_JACOBIAN_AVX2): c/vector_field_jacobian.c $(MLG_HEADERS)
 	@mkdir -p $(@D)
-	$(CC) $(MLG_CFLAGS) -mavx2 -ffp-contract=off \
-	    -DMLG_JACOBIAN_VARIANT=mlg_rhs_jacobian_avx2 -fPIC -c $< -o $@
+	$(CC) $(MLG_CFLAGS) $(MLG_AVX2_FLAGS) -fPIC -c $< -o $@
 MLG_OBJECTS += $(MLG_JACOBIAN_AVX2)
 MLG_CFLAGS += -DMLG_HAVE_AVX2_VARIANT
 endif
@@ -42,6 +42,30 @@ $(MLG_TESTS): build/tests/%: tests/c/%.c tests/c/unit.h tests/c/near_equilibrium
 	$(CC) $(MLG_CFLAGS) -Itests/c $< $(MLG_LIB) -llapack -lm -o $@
 
 TEST_DEPS += $(MLG_TESTS)
+
+# The same tests once more with the library and the tests built under UBSan
+# (undefined behaviour, and a double cast to an int it does not fit: not in
+# -fsanitize=undefined): a report stops the program (tests/test_c_programs.py).
+# -O1: a few seconds to build; the results are the same (no contraction either way).
+MLG_UBSAN_FLAGS := -O1 -fsanitize=undefined,float-cast-overflow -fno-sanitize-recover=all
+MLG_UBSAN_LIB := build/ubsan/lib/libmlg.a
+MLG_UBSAN_OBJECTS := $(patsubst build/obj/%,build/ubsan/obj/%,$(MLG_OBJECTS))
+MLG_UBSAN_TESTS := $(patsubst build/tests/%,build/ubsan/tests/%,$(MLG_TESTS))
+build/ubsan/obj/%.o: c/%.c $(MLG_HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(MLG_CFLAGS) $(MLG_UBSAN_FLAGS) -c $< -o $@
+build/ubsan/obj/vector_field_jacobian_avx2.o: c/vector_field_jacobian.c $(MLG_HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(MLG_CFLAGS) $(MLG_AVX2_FLAGS) $(MLG_UBSAN_FLAGS) -c $< -o $@
+$(MLG_UBSAN_LIB): $(MLG_UBSAN_OBJECTS)
+	@mkdir -p $(@D)
+	rm -f $@
+	ar rcs $@ $^
+$(MLG_UBSAN_TESTS): build/ubsan/tests/%: tests/c/%.c tests/c/unit.h tests/c/near_equilibrium.h $(MLG_UBSAN_LIB) | $(PACKAGES_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(MLG_CFLAGS) $(MLG_UBSAN_FLAGS) -Itests/c $< $(MLG_UBSAN_LIB) -llapack -lm -o $@
+
+TEST_DEPS += $(MLG_UBSAN_TESTS)
 
 MLG_BENCH := build/bench/bench_vector_field
 $(MLG_BENCH): tests/bench/bench_vector_field.c $(MLG_LIB)

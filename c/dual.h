@@ -40,6 +40,7 @@ typedef struct {
 DUAL_INLINE dual d_const(double c) { dual r = {c}; return r; }
 DUAL_INLINE dual d_var(double x, int dir) { (void)dir; return d_const(x); }
 /* r.v = value; dr = sa da + sb db, or that over den (derivatives only when DUAL_N > 0) */
+DUAL_INLINE int d_finite(dual a) { return isfinite(a.v); }
 DUAL_INLINE dual d_lin2(double value, dual a, double sa, dual b, double sb)
 {
     (void)a, (void)sa, (void)b, (void)sb;
@@ -81,6 +82,14 @@ DUAL_INLINE dual d_var(double x, int dir)
 }
 
 DUAL_INLINE double d_slope(dual a, int dir) { return a.d[dir / DUAL_LANES][dir % DUAL_LANES]; }
+
+/* the value and every derivative finite */
+DUAL_INLINE int d_finite(dual a)
+{
+    int finite = isfinite(a.v);
+    for (int dir = 0; dir < DUAL_N; dir++) finite &= isfinite(d_slope(a, dir));
+    return finite;
+}
 
 DUAL_INLINE dual d_lin2(double value, dual a, double sa, dual b, double sb)
 {

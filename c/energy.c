@@ -3,9 +3,7 @@
  * the tyres and all dampers are switched off. */
 #include "mlg_model.h"
 #define DUAL_N 0
-#include "freeplay.h"
-#include "structure.h"
-#include "strut.h"
+#include "vector_field.h"
 
 /* Integral of F_keta from eta_ref to eta: 5-point Gauss-Legendre on panels of
  * at most 0.1 mm (the integrand has no closed-form antiderivative). */
@@ -16,7 +14,8 @@ static double strut_potential(const mlg_constants *c, double eta_ref, double eta
     static const double weight[5] = {0.2369268850561891, 0.4786286704993665,
                                      0.5688888888888889, 0.4786286704993665,
                                      0.2369268850561891};
-    int panels = 1 + (int)(fabs(eta - eta_ref) / 1e-4);
+    /* at most 1e6 panels: an int, whatever stroke z_tlk0 allows */
+    int panels = 1 + (int)fmin(fabs(eta - eta_ref) / 1e-4, 1e6);
     double h = (eta - eta_ref) / panels, sum = 0.0;
     for (int k = 0; k < panels; k++) {
         double mid = eta_ref + (k + 0.5) * h;
@@ -32,8 +31,11 @@ int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
     const double psi = u[MLG_PSI], delta = u[MLG_DELTA], beta = u[MLG_BETA], eta = u[MLG_ETA];
     const double psi_dot = u[MLG_PSI_DOT], delta_dot = u[MLG_DELTA_DOT];
     const double beta_dot = u[MLG_BETA_DOT], eta_dot = u[MLG_ETA_DOT];
-    if (!(eta > 0.0 && eta < p->z_tlk0) || !(eta_ref > 0.0 && eta_ref < p->z_tlk0))
-        return MLG_ETA_OUT_OF_STROKE;
+    dual x[MLG_NX];
+    for (int i = 0; i < MLG_NX; i++) x[i] = d_const(u[i]);
+    int status = domain_status(p, x);
+    if (status != MLG_OK) return status;
+    if (!(eta_ref > 0.0 && eta_ref < p->z_tlk0)) return MLG_ETA_OUT_OF_STROKE;
     model_parameters mp = model_parameters_seed(p, MLG_PARS_PLAIN);
     sidestay g = sidestay_geometry(&mp);
     double sin_p = g.sin_p.v, cos_p = g.cos_p.v;
@@ -58,5 +60,5 @@ int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
     double links = torque_link_energy(mp.k_tlk, d_const(r_tlk * psi_s), mp.yfp, mp.eps).v;
     out->potential = 0.5 * (s.k_delta.v * delta * delta + p->k_beta * beta * beta) + links
                      + strut_potential(mp.c, eta_ref, eta) + mp.F_z.v * L_beta * q.cos_phi.v;
-    return MLG_OK;
+    return isfinite(out->kinetic) && isfinite(out->potential) ? MLG_OK : MLG_NOT_FINITE;
 }

@@ -4,6 +4,7 @@
 
 #include "linear_solve.h"
 #include "mlg_model.h"
+#include "params_unusable.h"
 #define DUAL_N 0
 #include "geometry.h"
 #include "strut.h"
@@ -50,6 +51,7 @@ int mlg_equilibrium(const mlg_params *p_in, double eta_guess, double u[MLG_NX])
 {
     /* The equilibrium does not depend on V (rates vanish, and V cancels from
      * eqs. 5-6), but at V = 0 the tyre states are undetermined: solve at V >= 1. */
+    if (mlg_params_unusable(p_in, NULL, 0)) return MLG_BAD_PARAMETER;
     mlg_params p = *p_in;
     if (p.V < 1.0) p.V = 1.0;
     memset(u, 0, sizeof(double) * MLG_NX);

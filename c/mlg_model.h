@@ -71,13 +71,16 @@ typedef struct {
     };
 } mlg_params;
 
-/* Status bits of an evaluation: the state lies outside the model's domain. */
+/* Status bits of an evaluation: the state lies outside the model's domain,
+ * or an input or the result is not finite. */
 enum mlg_status {
     MLG_OK = 0,
     MLG_ETA_OUT_OF_STROKE = 1,   /* eta <= 0 or eta >= z_tlk0: strut beyond its stroke */
     MLG_WHEEL_LIFT_OFF = 2,      /* a tyre load F_i < 0 (negative tyre deflection) */
     MLG_TYRE_BOTTOMED = 4,       /* tyre deflection d_i >= 2 r */
-    MLG_NOT_FINITE = 8           /* a state component is NaN or infinite */
+    MLG_NOT_FINITE = 8,          /* a state component or the result is NaN or infinite */
+    MLG_BAD_PARAMETER = 16       /* a parameter is NaN or infinite, or a switch not one
+                                    of its values (mlg_params_check names it) */
 };
 
 /* ---- parameter sets (parameters.c) ---- */

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "mlg_model.h"
+#include "params_unusable.h"
 
 /* c_psi of the `figures` set: the value that puts the zero-freeplay Hopf
  * point at F* = 1 at the paper's V = 346.1 m/s, found by AUTO continuation of that
@@ -158,7 +159,7 @@ static int reject(char *msg, size_t n, const char *fmt, ...)
     return 1;
 }
 
-int mlg_params_check(const mlg_params *p, char *msg, size_t n)
+int mlg_params_unusable(const mlg_params *p, char *msg, size_t n)
 {
     /* every value finite */
 #define X(name, value, unit, doc)                                               \
@@ -172,6 +173,21 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
         return reject(msg, n, "parameter %s is not finite (%g)", #name, p->name);
     MLG_SWITCHES(X)
 #undef X
+    if (p->eom_terms != MLG_EOM_PRINTED && p->eom_terms != MLG_EOM_SIDESTAY &&
+        p->eom_terms != MLG_EOM_COMPLETE)
+        return reject(msg, n, "parameter eom_terms = %g must be 0 (as printed), 1 (side-stay "
+                      "corrections) or 2 (complete Lagrangian)", p->eom_terms);
+    if (p->tyre_forces != 0.0 && p->tyre_forces != 1.0)
+        return reject(msg, n, "parameter tyre_forces = %g must be 0 or 1", p->tyre_forces);
+    if (p->strut_variant != 0.0 && p->strut_variant != 1.0)
+        return reject(msg, n, "parameter strut_variant = %g must be 0 (monotone) or 1 "
+                      "(as printed)", p->strut_variant);
+    return 0;
+}
+
+int mlg_params_check(const mlg_params *p, char *msg, size_t n)
+{
+    if (mlg_params_unusable(p, msg, n)) return 1;
     if (p->V < 0.0)
         return reject(msg, n, "parameter V = %g m/s: forward velocity must be >= 0", p->V);
     if (p->Fstar < 0.0)
@@ -205,20 +221,11 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
                           "rad makes the gear geometry degenerate (cos p ~ 0)",
                           p->rho, p->mu, asin(fmax(-1.0, fmin(1.0, sp))));
     }
-    if (p->eom_terms != MLG_EOM_PRINTED && p->eom_terms != MLG_EOM_SIDESTAY &&
-        p->eom_terms != MLG_EOM_COMPLETE)
-        return reject(msg, n, "parameter eom_terms = %g must be 0 (as printed), 1 (side-stay "
-                      "corrections) or 2 (complete Lagrangian)", p->eom_terms);
-    if (p->tyre_forces != 0.0 && p->tyre_forces != 1.0)
-        return reject(msg, n, "parameter tyre_forces = %g must be 0 or 1", p->tyre_forces);
     if (p->F_tyre_min < 0.0)
         return reject(msg, n, "parameter F_tyre_min = %g N must be >= 0", p->F_tyre_min);
     if (!(p->eta_stage >= 0.0 && p->eta_stage < p->z_tlk0))   /* a position in the stroke */
         return reject(msg, n, "parameter eta_stage = %g m: the strut's stage switch must lie "
                       "in the stroke [0, z_tlk0 = %g m)", p->eta_stage, p->z_tlk0);
-    if (p->strut_variant != 0.0 && p->strut_variant != 1.0)
-        return reject(msg, n, "parameter strut_variant = %g must be 0 (monotone) or 1 "
-                      "(as printed)", p->strut_variant);
 #define POSITIVE(name)                                                            \
     if (!(p->name > 0.0)) return reject(msg, n, "parameter %s = %g must be > 0", #name, p->name);
     POSITIVE(a) POSITIVE(l_tlk) POSITIVE(r) POSITIVE(M) POSITIVE(I_psi) POSITIVE(I)
@@ -250,6 +257,8 @@ int mlg_params_read_constants(mlg_params *p, const char *path, char *msg, size_t
             bad = reject(msg, n, "%s line %d: expected \"name value\"", path, number);
         else if (ref == NULL)
             bad = reject(msg, n, "%s line %d: no constant named %s", path, number, name);
+        else if (!isfinite(value))
+            bad = reject(msg, n, "%s line %d: %s = %g is not finite", path, number, name, value);
         else if (mlg_par_index(name) >= 0)
             bad = reject(msg, n, "%s line %d: %s is PAR(%d): set it there", path, number, name,
                          mlg_par_index(name) + 1);
@@ -263,7 +272,10 @@ int mlg_params_read_constants(mlg_params *p, const char *path, char *msg, size_t
 const char *mlg_status_text(int status)
 {
     if (status == MLG_OK) return "ok";
-    if (status & MLG_NOT_FINITE) return "state is not finite";
+    if (status & MLG_BAD_PARAMETER)
+        return "a parameter is not finite or a switch not one of its values (mlg_params_check "
+               "names it)";
+    if (status & MLG_NOT_FINITE) return "the state or the result is not finite";
     if (status & MLG_ETA_OUT_OF_STROKE) return "strut compression eta outside (0, z_tlk0)";
     if (status & MLG_WHEEL_LIFT_OFF) return "a wheel lifts off (negative tyre load)";
     if (status & MLG_TYRE_BOTTOMED) return "tyre deflection exceeds the tyre diameter";

@@ -7,9 +7,11 @@
 #define MLG_VECTOR_FIELD_H
 
 #include "equations_of_motion.h"
+#include "params_unusable.h"
 
 static inline int domain_status(const mlg_params *p, const dual u[MLG_NX])
 {
+    if (mlg_params_unusable(p, NULL, 0)) return MLG_BAD_PARAMETER;
     int status = MLG_OK;
     for (int i = 0; i < MLG_NX; i++)
         if (!isfinite(u[i].v)) status |= MLG_NOT_FINITE;
@@ -84,6 +86,12 @@ static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], int di
         f[MLG_PSI_DOT + i] = acc[i];
     }
     if (diag != NULL) describe(&x, F_dyn, F_keta, F_ceta, M, diag);
+    /* finite inputs can still overflow */
+    for (int i = 0; i < MLG_NX; i++)
+        if (!d_finite(f[i])) {
+            for (int j = 0; j < MLG_NX; j++) f[j] = d_const(0.0);
+            return MLG_NOT_FINITE;
+        }
     return MLG_OK;
 }
 

@@ -28,8 +28,10 @@ int MLG_JACOBIAN_VARIANT(const mlg_params *p, const double u[MLG_NX], double f[M
     }
     if (dfdp == NULL) return status;
     for (int i = 0; i < MLG_NX; i++) x[i] = d_const(u[i]);
-    vector_field(p, x, 0, fx, NULL);
-    for (int i = 0; i < MLG_NX; i++)
+    status |= vector_field(p, x, 0, fx, NULL);   /* df/dp can overflow alone */
+    for (int i = 0; i < MLG_NX; i++) {
+        if (status != MLG_OK) f[i] = 0.0;
         for (int k = 0; k < MLG_NPAR; k++) dfdp[i + MLG_NX * k] = d_slope(fx[i], k);
+    }
     return status;
 }
