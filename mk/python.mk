@@ -37,14 +37,16 @@ PY_DEPS_WANTED := $(if $(filter-out clean help,$(or $(MAKECMDGOALS),all)),yes)
 # package that the module imports, imports inside functions included
 # (shared.jobs.depends reads the sources and imports nothing, so it works
 # before anything is built); the .d file depends on them and is remade when
-# one changes.
+# one changes.  It runs as a file, not with -m: the package's __init__s
+# would import numpy, which the first make has not installed yet.
 DEPS_DIR := build/deps
+DEPENDS := drivers/mlgshimmy/shared/jobs/depends.py
 define py_deps
 ifndef PYDEPS_RULE_$(1)
 PYDEPS_RULE_$(1) := 1
 $(DEPS_DIR)/$(1).d:
 	@mkdir -p $$(@D)
-	@$$(PYTHON) -m mlgshimmy.shared.jobs.depends PYDEPS_$(1) $$@ mlgshimmy.$(2) > $$@
+	@$$(PYTHON) $$(DEPENDS) PYDEPS_$(1) $$@ mlgshimmy.$(2) > $$@
 ifeq ($(PY_DEPS_WANTED),yes)
 -include $(DEPS_DIR)/$(1).d
 endif

@@ -1,9 +1,11 @@
 """The Python files a driver's result depends on, for make (as `gcc -MMD`
 does for C): the static import closure of a module inside the mlgshimmy
-package, imports inside functions included.  Nothing is imported, so this
-works before anything is built.
+package, imports inside functions included.  Nothing is imported, and
+this file needs only the standard library, so it works before anything is
+built or installed; make runs it as a file (`-m` would run the package's
+__init__s, which import numpy):
 
-    python3 -m mlgshimmy.shared.jobs.depends VAR x.d MODULE [MODULE...] > x.d
+    python3 drivers/mlgshimmy/shared/jobs/depends.py VAR x.d MODULE [MODULE...] > x.d
 
 writes `VAR := <files>`, `x.d: $(VAR)` (so make regenerates it when one of
 them changes) and an empty rule per file (a deleted module then does not
