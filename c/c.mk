@@ -107,6 +107,28 @@ PREFIX ?= /usr/local
 LIBDIR ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+# Checked before any rule runs, naming the variable: the directories are
+# absolute without a ".." (so that everything lands inside $(DESTDIR)), and
+# none of them nor DESTDIR holds a space (make splits on it: DESTDIR="x/with
+# space" installed into x/with and ./space/) or a character the shell or sed
+# would read.
+MLG_INSTALL_DIRS := PREFIX LIBDIR INCLUDEDIR PKGCONFIGDIR
+MLG_PATH_CHARS := a b c d e f g h i j k l m n o p q r s t u v w x y z \
+    A B C D E F G H I J K L M N O P Q R S T U V W X Y Z 0 1 2 3 4 5 6 7 8 9 / . _ + -
+mlg_strip = $(if $(2),$(call mlg_strip,$(subst $(firstword $(2)),,$(1)),$(wordlist 2,$(words $(2)),$(2))),$(1))
+mlg_check_path = $(call refuse_space,$(1))$(if $(call mlg_strip,$($(1)),$(MLG_PATH_CHARS)),$(error \
+    $(1)='$($(1))' holds a character other than letters, digits and / . _ + -; give a plain path))
+ifneq ($(filter install uninstall,$(MAKECMDGOALS)),)
+$(foreach v,DESTDIR $(MLG_INSTALL_DIRS),$(call mlg_check_path,$(v)))
+$(foreach v,$(MLG_INSTALL_DIRS),$(if $(filter /%,$($(v))),,$(error $(v)='$($(v))' must be an \
+    absolute path (e.g. /usr/local): the files go to $$(DESTDIR)$$($(v))))$(if \
+    $(findstring /../,$($(v))/),$(error $(v)='$($(v))' has a ".." component: the files would \
+    leave $$(DESTDIR))))
+endif
+# every file install writes, which uninstall removes
+MLG_INSTALLED = $(addprefix $(INCLUDEDIR)/mlg/,$(notdir $(MLG_PUBLIC_HEADERS))) \
+    $(addprefix $(LIBDIR)/,libmlg.so.$(MLG_VERSION) $(MLG_SONAME) libmlg.so libmlg.a) \
+    $(PKGCONFIGDIR)/mlg.pc
 .PHONY: install uninstall
 install: $(MLG_LIB) $(MLG_SHARED_REAL) $(MLG_PUBLIC_HEADERS) c/mlg.pc.in
 	install -d $(DESTDIR)$(INCLUDEDIR)/mlg $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR)
@@ -120,9 +142,7 @@ install: $(MLG_LIB) $(MLG_SHARED_REAL) $(MLG_PUBLIC_HEADERS) c/mlg.pc.in
 	@echo "install: mlg $(MLG_VERSION) under $(DESTDIR)$(PREFIX):" \
 	    "headers $(INCLUDEDIR)/mlg/, libraries $(LIBDIR)/, pkg-config mlg"
 uninstall:
-	rm -f $(addprefix $(DESTDIR)$(INCLUDEDIR)/mlg/,$(notdir $(MLG_PUBLIC_HEADERS))) \
-	    $(addprefix $(DESTDIR)$(LIBDIR)/,libmlg.so.$(MLG_VERSION) $(MLG_SONAME) libmlg.so libmlg.a) \
-	    $(DESTDIR)$(PKGCONFIGDIR)/mlg.pc
+	rm -f $(addprefix $(DESTDIR),$(MLG_INSTALLED))
 	-rmdir $(DESTDIR)$(INCLUDEDIR)/mlg
 
 # The example program (c/examples/evaluate.c), built here against the

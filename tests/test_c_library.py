@@ -115,3 +115,34 @@ def test_uninstall_removes_what_install_wrote(tmp_path):
     assert (dest / "opt" / "mlg" / "lib" / "pkgconfig" / "mlg.pc").is_file()
     run(["make", "-s", "--no-print-directory", "uninstall", f"DESTDIR={dest}", "PREFIX=/opt/mlg"])
     assert [p for p in dest.rglob("*") if p.is_file() or p.is_symlink()] == []
+
+
+def make_install(*args):
+    return subprocess.run(["make", "-s", "--no-print-directory", *args], cwd=ROOT,
+                          capture_output=True, text=True)
+
+
+def test_install_refuses_paths_that_leave_destdir(tmp_path):
+    """A DESTDIR with a space (two words to make: once installed into both,
+    and uninstall deleted the second's files), a relative PREFIX (installed
+    into <DESTDIR>usr/local), a ".." or a shell character: refused before
+    anything is written or deleted, naming the variable."""
+    # the file that `uninstall DESTDIR="<tmp>/x/with <tmp>/y"` deleted
+    kept = tmp_path / "y" / "usr" / "local" / "include" / "mlg" / "mlg_model.h"
+    kept.parent.mkdir(parents=True)
+    kept.write_text("not ours\n")
+    cases = [(f"DESTDIR={tmp_path}/x/with {tmp_path}/y", "DESTDIR=", "contains a space"),
+             (f"DESTDIR={tmp_path}/a;b", "DESTDIR=", "holds a character other than"),
+             ("PREFIX=usr/local", "PREFIX='usr/local' must be an absolute path", ""),
+             ("PREFIX=/usr/../../etc", "PREFIX='/usr/../../etc' has a \"..\" component", ""),
+             ("LIBDIR=/usr/lib/a|b", "LIBDIR='/usr/lib/a|b' holds a character other than", "")]
+    for goal in ("install", "uninstall"):
+        for setting, named, why in cases:
+            dest = [] if setting.startswith("DESTDIR=") else [f"DESTDIR={tmp_path}/stage"]
+            proc = make_install(goal, setting, *dest)
+            assert proc.returncode == 2 and named in proc.stderr and why in proc.stderr, \
+                (goal, setting, proc.stderr)
+    assert sorted(str(p.relative_to(tmp_path)) for p in tmp_path.rglob("*")
+                  if not p.is_dir()) == ["y/usr/local/include/mlg/mlg_model.h"]
+    assert kept.read_text() == "not ours\n"
+    assert not list(tmp_path.glob("stage*")) and not (tmp_path / "x").exists()
