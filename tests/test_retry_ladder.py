@@ -66,3 +66,26 @@ def test_named_points_reference_to_ours():
     assert lines[3].split()[-2:] == ["->", "vanished"] and "H1" in lines[3]
     assert "new: 300" in lines[4]
     assert named_points.unfollowed(ours) == ["po1: stops (MX, numerical) at V [m/s]"]
+
+
+def test_an_mx_at_wheel_lift_off_is_an_end_not_a_stop(tmp_path):
+    """allow_mx=EDGE keeps an orbit branch that ends where a wheel lifts off
+    (k_tlk x0.8, F* = 0.2: at 591.2 m/s, below the figure's 600) and sends
+    any other MX up the ladder."""
+    from mlgshimmy.shared import domain
+    rundir = str(tmp_path)
+    start = continuation.Start("figures", Fstar=0.2, V=0.0, k_tlk=3.12e7)
+    eq = continuation.equilibria(rundir, "eq", start, stop={"V": 600.0})
+    po = continuation.periodic_from(rundir, "po", eq("HB1"), stop={"V": 600.0},
+                                    allow_mx=continuation.EDGE)
+    ends = [(p["V"], domain.stop_reason(p)) for p in po("MX")]
+    assert len(ends) == 1 and ends[0][1] == "wheel lift-off"
+    assert ends[0][0] == pytest.approx(591.19, abs=0.1)
+
+
+def test_a_solution_knows_its_constants_file():
+    from mlgshimmy.shared import mlgmodel
+    model = mlgmodel.Model("figures", I_psi=160.0, k_relax=0.75)
+    k = mlgmodel.register_constants(model)
+    assert mlgmodel.registered_constants(k) == {"I_psi": 160.0, "k_relax": 0.75}
+    assert mlgmodel.registered_constants(0) == {}

@@ -15,6 +15,7 @@ import numpy
 
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
+from mlgshimmy.shared import domain
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import naming
 from mlgshimmy.shared import paths
@@ -62,19 +63,28 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
     file constants/runs/c.<kind> if given, then the overlay file
     constants/runs/c.<overlay> if given, then the keyword overrides.  A run
     that stops with MX where that is an error goes up the retry ladder
-    (with_ladder); with allow_mx it is kept as it ends."""
+    (with_ladder); with allow_mx it is kept as it ends; with allow_mx="edge"
+    an MX at the edge of the model's domain (a wheel lifts off:
+    domain.stop_reason) is kept and any other goes up the ladder."""
     files = [CONSTANTS] + [os.path.join(RUN_CONSTANTS, f"c.{k}") for k in (kind, overlay) if k]
     rundir = autoglue.claim(rundir)           # emptied on first use: claim, then write
     mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
 
+    edge = kw.get("allow_mx") == EDGE
+
     def attempt(mx, **rung):
-        return autoglue.run(rundir, name, constants=files, e=MODEL,
-                            **{**kw, "allow_mx": mx, **rung})
+        bd = autoglue.run(rundir, name, constants=files, e=MODEL,
+                          **{**kw, "allow_mx": mx or edge, **rung})
+        numerical = [p for p in bd("MX") if domain.stop_reason(p) == "numerical"]
+        if edge and numerical and not mx:
+            raise autoglue.RunError(f"run {name} in {rundir}: no convergence (MX) at "
+                                    f"{numerical[0]['V']:.6g} m/s, inside the model's domain")
+        return bd
 
     def own():
         merged = autoglue.read_constants(files)
         return {key: kw.get(key, merged[key]) for key in STEP_CONSTANTS}
-    return with_ladder(attempt, own, f"run {name}", keep_mx=kw.get("allow_mx", False))
+    return with_ladder(attempt, own, f"run {name}", keep_mx=kw.get("allow_mx") is True)
 
 
 def load(rundir: str, name: str):
@@ -239,6 +249,7 @@ LADDER = (("smaller steps", {"DS": 0.1, "DSMIN": 1e-4}),
           ("a finer mesh and smaller steps", {"NTST": 2.0, "DS": 0.1, "DSMIN": 1e-4,
                                               "DSMAX": 0.5}))
 STEP_CONSTANTS = ("DS", "DSMIN", "DSMAX", "NTST")
+EDGE = "edge"       # run(allow_mx=EDGE): an MX kept only where a wheel lifts off
 
 
 def rung_constants(own, factors):

@@ -22,8 +22,10 @@ LIFT_OFF_LOAD = 1e-4         # of the static tyre load: "zero" at an MX stop
 
 
 def _solution_model(sol) -> mlgmodel.Model:
+    """The model of an AUTO solution: its PAR and its constants file's constants."""
     names = [n for n in mlgmodel.PARNAMES if n and n != mlgmodel.CONSTANTS_FILE]
-    return mlgmodel.Model("figures", **{n: sol.PAR[n] for n in names})
+    return mlgmodel.Model("figures", **{n: sol.PAR[n] for n in names},
+                          **mlgmodel.registered_constants(sol.PAR[mlgmodel.CONSTANTS_FILE]))
 
 
 def diagnose(model: mlgmodel.Model, u: Dict[str, float]) -> Dict[str, object]:

@@ -250,6 +250,17 @@ def register_constants(model: Model) -> int:
     return k
 
 
+def registered_constants(k: float) -> Dict[str, float]:
+    """The constants of file k registered in this process ({} for k = 0):
+    what a solution whose PAR(15) is k was computed with."""
+    if not k:
+        return {}
+    text = _constants_files.get(int(k))
+    if text is None:
+        raise KeyError(f"constants file {int(k)} was not registered in this process")
+    return {name: float(value) for name, value in (line.split() for line in text.splitlines())}
+
+
 def write_constants_files(rundir: str) -> None:
     """Write mlg.constants.<k> into rundir for every k registered in this
     process (each replaced atomically, the same text for the same k)."""
