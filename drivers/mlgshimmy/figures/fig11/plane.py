@@ -10,7 +10,7 @@ from mlgshimmy.shared import stationary
 F_MIN, F_MAX = 0.02, 3.5
 V_MIN, V_MAX = ct.V_MIN, ct.V_MAX
 FREEPLAY = freeplay.NOMINAL
-# the side-stay geometry ({} at the paper's, shared.geometry) and every
+# the gear's changes ({} at the paper's, shared.gear) and every
 # parameter the figure's models have besides V and F*
 GEOMETRY = gear.parameters()
 MODEL = {**FREEPLAY, **GEOMETRY}

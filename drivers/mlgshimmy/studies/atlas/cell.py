@@ -51,8 +51,8 @@ def simulator_args(v, fstar, psi0, t_end):
     """The simulator's options for one start: straight rolling (given as
     --u0: at side-stay angles the simulator's own Newton from psi = 0 can
     fail or land on a yawed state; without straight rolling the simulator's
-    equilibrium) with psi displaced by psi0, at the side-stay geometry of the
-    run (shared.geometry; none at the paper's)."""
+    equilibrium) with psi displaced by psi0, for the gear of the run
+    (shared.gear; nothing at the paper's)."""
     at = [word for name, value in gear.simulator_params().items()
           for word in ("--param", f"{name}={value}")]
     start = simulator.state_args(straight_rolling(fstar))
