@@ -1,7 +1,10 @@
 """The design map over side-stay angles (studies.design_map): its grid and
-make target, and the mirror gear: (rho, mu) and (-rho, -mu) give the same
+make target, the mirror gear: (rho, mu) and (-rho, -mu) give the same
 numbers, mirrored (y_tlk changes sign; speeds, kappa* equal), to the
-continuation's tolerance (docs/model.md 8.5: f(Su; -rho, -mu) = S f(u; rho, mu)).
+continuation's tolerance (docs/model.md 8.5: f(Su; -rho, -mu) = S f(u; rho, mu)),
+the freeplay kappa* allows in mm, a kappa* set on the oleo's stage switch
+flagged with the value off it, Hopf points named by mode, and the user's
+geometry marked.
 
 Run: /usr/bin/python3 -m pytest -q tests/test_design_map.py
 """
@@ -39,16 +42,22 @@ def test_the_default_grid_is_5_by_5_and_named_by_its_variables(tmp_path):
     assert proc.returncode != 0 and "DESIGN_RHO" in proc.stderr
 
 
-def test_make_design_map_is_the_grid():
+def make_n(*args):
     env = {k: v for k, v in os.environ.items()
-           if k not in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS", "MAKEOVERRIDES")}
-    proc = subprocess.run(["make", "--no-print-directory", "-n", "design-map",
-                           "DESIGN_RHO=0,10", "DESIGN_MU=-5"], cwd=ROOT, env=env,
+           if k not in ("MAKEFLAGS", "MAKELEVEL", "MFLAGS", "MAKEOVERRIDES", "MLG_RUN_ROOT")}
+    return subprocess.run(["make", "--no-print-directory", "-n", "design-map",
+                           "DESIGN_RHO=0,10", "DESIGN_MU=-5", *args], cwd=ROOT, env=env,
                           capture_output=True, text=True)
+
+
+def test_make_design_map_is_the_grid():
+    proc = make_n()
     assert proc.returncode == 0, proc.stderr
-    points = [line for line in proc.stdout.splitlines() if "design_map point" in line]
+    lines = proc.stdout.splitlines()
+    points = [line for line in lines if "design_map point" in line]
     assert [p.split()[-1] for p in points] == ["rho0_mu-5", "rho10_mu-5"]
-    assert "design_map summary" in proc.stdout
+    summary = [line for line in lines if "design_map summary" in line]
+    assert len(summary) == 1 and "--mu='-5'" in summary[0] and "--mark" not in summary[0]
 
 
 @pytest.fixture(scope="module")
@@ -92,20 +101,101 @@ def test_the_mirror_gear_has_the_same_kappa_and_mirrored_links(pair):
     assert abs(ya) > 0.05 and ya == pytest.approx(-yb, rel=1e-9)
 
 
+def test_hopf_points_are_named_by_their_mode(pair):
+    """At (-10, 20) deg the low-frequency pair never loses stability: the
+    one Hopf point is H3 (13 Hz), H1 and H2 have vanished."""
+    scans = pair[1]["scans"]
+    assert scans["hopf_names"] == ["H3"] and scans["hopf"][0][1] > design_map.HIGH_HZ
+    # straight rolling is stable up to H3 and unstable beyond, to the scan's end
+    assert scans["stable"] == [(ct.V_MIN, scans["hopf"][0][0])]
+
+
+def test_a_kappa_set_on_the_stage_switch_is_flagged_with_the_value_off_it(pair):
+    """(-10, 20) deg on the loads 0.3, 0.5, 1.0 and the five across the
+    stage switch: straight rolling is unstable without freeplay on the
+    switch (kappa* = 0); off it, the least of the three loads, at F* = 0.3."""
+    k = pair[1]["kappa"]
+    low, high = k["switch_window"]
+    assert (low, high) == pytest.approx((0.633, 0.695), abs=2e-3)
+    assert k["on_switch"] and low <= k["kappa_Fstar"] <= high
+    assert k["kappa"] == 0.0 and k["kappa_yfp"] == 0.0
+    assert k["off_switch_Fstar"] == 0.3
+    # docs/design-map.md: 0.4001 at (10, -20) off the switch, at F* = 0.290-0.300
+    assert k["kappa_off_switch"] > k["kappa"]
+    assert k["kappa_off_switch"] == pytest.approx(0.400, abs=2e-3)
+    assert k["off_switch_yfp"] == pytest.approx(k["kappa_off_switch"] * 0.1, rel=1e-12)
+
+
+def test_the_paper_s_gear_allows_0_037_mm_of_freeplay():
+    """kappa* = 0.3651 at F* = 0.295 (Fig. 18) with eps = 0.1 mm: 0.0365 mm,
+    the loads 0.25-0.35 refined to 0.01 (the value at 0.29 or 0.30 lies
+    within 2e-4 mm of it); no stage switch in these loads, so the value off
+    it is the same."""
+    _, values = design_map.at(0.0, 0.0)
+    k = design_map.kappa(values, loads=(0.25, 0.3, 0.35), finer=(5,))
+    assert k["kappa_yfp"] == pytest.approx(0.0365, abs=2e-4)
+    assert round(k["kappa_yfp"], 3) == 0.037
+    assert k["switch_window"] is None and not k["on_switch"]
+    assert k["kappa_off_switch"] == k["kappa"]
+
+
+def record(rho, mu, **more):
+    """A grid point's result as compute() writes it (made-up numbers)."""
+    out = {key: 1.0 for key, _, _, _ in design_map.QUANTITIES}
+    out.update(rho_deg=rho, mu_deg=mu, kappa_V=120.0, kappa_mode="high",
+               cpu_seconds={"scans": 1.0}, hopf=[[1.0, 2.0], [3.0, 2.0], [140.0, 13.0]],
+               hopf_names=["H1", "H2", "H3"], stable=[[0.5, 1.0], [3.0, 140.0]],
+               S_stop="UZ", switch_window=[0.633, 0.695], on_switch=False,
+               kappa_off_switch=1.0, off_switch_Fstar=0.295)
+    out.update(more)
+    return out
+
+
 def test_summary_writes_the_table_from_the_grids_records(tmp_path, monkeypatch):
     """summary as shared.jobs.grid calls it (points, their records, their
-    provenance): one row per geometry, and "-" where kappa* = 0 leaves no
-    freeplay for y_tlk/y_fp at kappa* (None)."""
+    provenance): one row per geometry, "-" where kappa* = 0 leaves no
+    freeplay for y_tlk/y_fp at kappa* (None), "vanished" for a Hopf point
+    that does not exist, a kappa* on the stage switch flagged with the
+    value off it, and the user's geometry (10, 3) marked at the nearest
+    grid point (10, 0), in the table and on the map."""
+    from mlgshimmy.shared import draw
     monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
-    record = {key: 1.0 for key, _, _, _ in design_map.QUANTITIES}
-    records = [dict(record, rho_deg=rho, mu_deg=0.0, kappa=0.0, ytlk_ratio_kappa=None,
-                    kappa_V=10.5, kappa_mode="strut", cpu_seconds={"scans": 1.0})
-               for rho in (0.0, 10.0)]
-    design_map.summary([(0.0, 0.0), (10.0, 0.0)], records, None)
-    rows = [line.split() for line in (tmp_path / "tables" / "design_map.txt").read_text()
-            .splitlines() if line.split()[:2] in (["0", "0"], ["10", "0"])]
-    assert len(rows) == 2 and all(row[11] == "-" for row in rows), rows
+    saved, save = {}, draw.save
+    monkeypatch.setattr(draw, "save", lambda fig, name: (saved.update(fig=fig), save(fig, name)))
+    records = [record(0.0, 0.0, kappa=0.3651, kappa_yfp=0.03651, kappa_Fstar=0.295),
+               record(10.0, 0.0, H1=None, H2=None, hopf=[[140.0, 13.0]], hopf_names=["H3"],
+                      stable=[[0.5, 140.0]], kappa=0.0, kappa_yfp=0.0, kappa_Fstar=0.649,
+                      kappa_V=10.5, on_switch=True, ytlk_ratio_kappa=None,
+                      kappa_off_switch=0.3714, off_switch_yfp=0.03714)]
+    design_map.summary([(0.0, 0.0), (10.0, 0.0)], records, None, mark=(10.0, 3.0))
+    text = (tmp_path / "tables" / "design_map.txt").read_text()
+    rows = {tuple(line.split()[:2]): line.split() for line in text.splitlines()
+            if line.split()[:2] in (["0", "0"], ["10", "0"])}
+    keys = [key for key, _, _, _ in design_map.QUANTITIES]
+    column = {key: 2 + k for k, key in enumerate(keys)}
+    assert rows[("0", "0")][column["kappa_yfp"]] == "0.0365"
+    assert rows[("10", "0")][column["H1"]] == rows[("10", "0")][column["H2"]] == "vanished"
+    assert rows[("10", "0")][column["ytlk_ratio_kappa"]] == "-"
+    assert [rows[k][2 + len(keys) + 2] for k in (("0", "0"), ("10", "0"))] == ["no", "yes"]
+    assert "Your gear: rho = 10, mu = 3 deg; nearest grid point (10, 0) (marked *)" in text
+    headlines = [line for line in text.splitlines() if line.startswith(("* (", "  ("))]
+    assert headlines[0].startswith("  (0, 0): straight rolling stable at V = 0.500-1.000, "
+                                   "3.000-140.000 m/s")
+    assert "allowed freeplay 0.0365 mm (kappa* 0.3651 at F* = 0.295)" in headlines[0]
+    assert headlines[1].startswith("* (10, 0):")
+    assert ("no freeplay allowed (unstable without freeplay at F* = 0.649, on the oleo's "
+            "stage switch, V = 10.5 m/s); away from the switch 0.0371 mm (kappa* 0.3714 at "
+            "F* = 0.295)") in headlines[1]
     assert (tmp_path / "figures" / "design_map.png").exists()
+    # on every panel a red dashed box at (10, 0): column 1, row 0; and its legend entry
+    fig = saved["fig"]
+    panels = [ax for ax in fig.axes if ax.get_visible() and ax.get_title()]
+    assert len(panels) == len(design_map.QUANTITIES)
+    for ax in panels:
+        boxes = [p for p in ax.patches if p.get_edgecolor()[:3] == (1.0, 0.0, 0.0)]
+        assert len(boxes) == 1 and boxes[0].get_xy() == pytest.approx((1 - 0.44, -0.44))
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "your gear rho = 10, mu = 3 deg (nearest grid point 10, 0)" in labels
 
 
 def test_a_finished_grid_is_done_for_status_missing_and_submit(tmp_path, monkeypatch):

@@ -490,6 +490,21 @@ def stage_switch_loads(loads, parameter_set="figures", **model):
     return loads
 
 
+def kappa_star_off_switch(evaluate, loads, model, finer=(10,)):
+    """kappa_star over the loads outside the oleo's stage-switch window
+    (stage_switch_window) only: the value that does not hang on how steep
+    this model's switch is.  (kappa, the evaluation at the minimum, the
+    window or None); loads inside the window are not evaluated."""
+    window = stage_switch_window(float(loads[0]), float(loads[-1]), **model)
+
+    def outside(Fstar):
+        if window and window[0] <= Fstar <= window[1]:
+            return {"Fstar": float(Fstar), "first": numpy.inf}
+        return evaluate(Fstar)
+    best = refined_minimum(outside, loads, lambda p: p["first"], finer=finer)
+    return best["first"] / EPSILON, best, window
+
+
 def window_points(Fstar, **model):
     """The points bounding the windows of stable straight rolling up to
     V_LIMIT at this F* (eps = 0.1 mm), as y_fp [mm]:

@@ -75,6 +75,20 @@ def stability_changes(parameter_set: str, parameter: str, grid: Sequence[float],
     return sorted(changes)
 
 
+def stable_intervals(parameter_set: str, parameter: str, changes: Sequence[float], lo: float,
+                     hi: float, **values: float) -> List[Tuple[float, float]]:
+    """[(start, end)]: the parts of [lo, hi] where straight rolling is
+    stable, between its stability changes `changes` (stability_changes'
+    values along the same parameter): one eigenvalue solve inside each."""
+    edges = [lo] + sorted(changes) + [hi]
+    out: List[Tuple[float, float]] = []
+    for a, b in zip(edges, edges[1:]):
+        model = mlgmodel.Model(parameter_set, **{**values, parameter: 0.5 * (a + b)})
+        if eigenvalues(model).real.max() < 0:
+            out.append((a, b))
+    return out
+
+
 def hopf_scan(parameter_set: str, parameter: str, grid: Sequence[float],
               **values: float) -> List[Tuple[float, float]]:
     """[(value, frequency in Hz)] of the Hopf points of straight rolling

@@ -8,13 +8,18 @@ version, parameter set, settings()), at the complete equations (eom_terms =
 
   zero freeplay, F* = 1: the critical speed (first Hopf point in V);
   y_fp = 1 mm, eps = 0.1 mm (freeplay.NOMINAL), F* = 1: the Hopf points
-    of straight rolling, named by frequency as in Fig. 10 (H1, H2 the
-    low-frequency pair, H3 the first high-frequency one), the fold S of the
+    of straight rolling, named by their mode (shared.naming: H1, H2 where
+    the low-frequency pair loses and regains stability, H3 where the
+    high-frequency pair loses it; a point that does not exist is vanished),
+    the speeds at which straight rolling is stable, the fold S of the
     high-frequency orbit branch born at H3 and the bistable interval [S, H3]
     (stable straight rolling beside stable large shimmy);
   kappa* (eq. 17, eps = 0.1 mm, V <= 120 m/s, F* in [0.1, 2]) with the load,
     speed and mode where it is set (the criterion's recipe,
-    magnitude.least_unstable and kappa_star);
+    magnitude.least_unstable and kappa_star), the freeplay it allows,
+    kappa* x eps in mm, and whether it is set on the oleo's stage switch,
+    with kappa* over the loads off the switch beside it
+    (magnitude.kappa_star_off_switch);
   the static torque-link position y_tlk/y_fp of straight rolling at F* = 1
     (y_fp = 1 mm) and at kappa*'s point (whether the links sit against one
     side of the freeplay).
@@ -33,12 +38,17 @@ Subcommands (angles in degrees: "a,b,c" or "start:stop:step"):
   design_map.py jobs    [--rho L --mu L]   one shell command per grid point
                                            (GNU parallel, a Slurm array)
   design_map.py point rho<deg>_mu<deg>     compute one grid point
-  design_map.py summary [--rho L --mu L]   the maps, the table, the json
+  design_map.py summary [--rho L --mu L] [--mark RHO,MU]
+                                           the maps, the table, the json;
+                                           --mark: the user's geometry, marked
+                                           at its grid point or the nearest
 
-`make [-jN] design-map [DESIGN_RHO=... DESIGN_MU=...]` runs check, every
-point, summary: $MLG_RUN_ROOT/figures/design_map.png, tables/design_map.txt
-and design_map.json (docs/design-map.md).
+`make [-jN] design-map [DESIGN_RHO=... DESIGN_MU=...] [RHO=.. MU=..]` runs
+check, every point, summary: $MLG_RUN_ROOT/figures/design_map.png,
+tables/design_map.txt and design_map.json (docs/design-map.md).
 """
+import argparse
+import functools
 import os
 import sys
 import time
@@ -51,6 +61,7 @@ from mlgshimmy.shared import geometry
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import naming
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
@@ -60,16 +71,20 @@ DEFAULT_GRID = "-20:20:10"
 EOM = 2                      # the complete equations (docs/model.md 8.4)
 FSTAR = 1.0
 FREEPLAY = freeplay.NOMINAL  # y_fp = 1 mm, eps = 0.1 mm
-HIGH_HZ = mg.BANDS["high"][0]  # a Hopf point of this frequency or more starts S's branch
+HIGH_HZ = naming.HIGH_HZ     # Hz: the high-frequency pair, whose H3 starts S's branch
 PSI_AMP_STOP = 0.01          # rad: the branch from H3 is followed to here, past S
 ORBIT_STEPS = {"DS": 0.05, "DSMAX": 1.0, "NMX": 2000, "DSMIN": 1e-9}   # as fig10's
 KAPPA_LOADS = mg.ENVELOPE_LOADS[::2]        # as studies.criterion
 KAPPA_FINER = (5, 4)
+HOPF_NAMES = ("H1", "H2", "H3")   # the paper's points, by mode (shared.naming)
 # the quantities of a point: (key, table heading, unit or "", format)
 QUANTITIES = (("critical_V", "V_crit (zero freeplay)", "m/s", ".3f"),
               ("H1", "H1", "m/s", ".3f"), ("H2", "H2", "m/s", ".3f"), ("H3", "H3", "m/s", ".3f"),
               ("S", "S", "m/s", ".3f"), ("bistable_width", "H3 - S (bistable)", "m/s", ".3f"),
-              ("kappa", "kappa*", "", ".4f"), ("kappa_Fstar", "F* at kappa*", "", ".3f"),
+              ("kappa", "kappa*", "", ".4f"),
+              ("kappa_yfp", "allowed y_fp at eps = 0.1 mm", "mm", ".4f"),
+              ("kappa_Fstar", "F* at kappa*", "", ".3f"),
+              ("off_switch_yfp", "allowed y_fp off the stage switch", "mm", ".4f"),
               ("ytlk_ratio", "y_tlk/y_fp, F* = 1", "", "+.3f"),
               ("ytlk_ratio_kappa", "y_tlk/y_fp at kappa*", "", "+.3f"))
 
@@ -120,26 +135,31 @@ def check(points):
 
 
 def speeds(values):
-    """The scans at F* = 1: {critical_V, hopf: [(V, Hz)] with freeplay, bp:
-    the real-eigenvalue crossings in V (none expected)}."""
+    """The scans at F* = 1: {critical_V, hopf: [(V, Hz)] with freeplay,
+    hopf_names: their names by mode (shared.naming), bp: the real-eigenvalue
+    crossings in V (none expected), stable: [(V_from, V_to)] where straight
+    rolling with freeplay is stable, within the scan's ct.V_MIN-ct.V_MAX}."""
     zero = spectrum.hopf_scan("figures", "V", ct.SPEED_SCAN, Fstar=FSTAR, yfp=0.0, **values)
-    changes = spectrum.stability_changes("figures", "V", ct.SPEED_SCAN, Fstar=FSTAR,
-                                         **FREEPLAY, **values)
-    return {"critical_V": zero[0][0] if zero else None,
-            "hopf": [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"],
-            "bp": [v for v, kind, _ in changes if kind == "BP"]}
+    case = {"Fstar": FSTAR, **FREEPLAY, **values}
+    changes = spectrum.stability_changes("figures", "V", ct.SPEED_SCAN, **case)
+    hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]
+    return {"critical_V": zero[0][0] if zero else None, "hopf": hopf,
+            "hopf_names": naming.names([naming.mode("figures", "V", v, **case)
+                                        for v, _ in hopf]),
+            "bp": [v for v, kind, _ in changes if kind == "BP"],
+            "stable": spectrum.stable_intervals("figures", "V", [v for v, _, _ in changes],
+                                                ct.V_MIN, ct.V_MAX, **case)}
 
 
-def fold_S(rundir, hopf, values):
-    """AUTO: the orbits born at the first Hopf point of at least HIGH_HZ
-    (H3), followed to psi_amp = PSI_AMP_STOP, and their fold of least V, S
-    (a fold within 0.1 % of the Hopf point is AUTO's spurious first-step LP,
-    continuation.Diagram.folds).  {S, from_V, stop, folds, S_psi_amp}."""
-    high = [v for v, hz in hopf if hz >= HIGH_HZ]
-    if not high:
-        return {"S": None, "from_V": None, "stop": "no high-frequency Hopf point", "folds": [],
+def fold_S(rundir, start, values):
+    """AUTO: the orbits born at H3 (its speed `start`, or None where it has
+    vanished), followed to psi_amp = PSI_AMP_STOP, and their fold of least
+    V, S (a fold within 0.1 % of the Hopf point is AUTO's spurious
+    first-step LP, continuation.Diagram.folds).  {S, from_V, stop, folds,
+    S_psi_amp}."""
+    if start is None:
+        return {"S": None, "from_V": None, "stop": "H3 vanished", "folds": [],
                 "S_psi_amp": None}
-    start = high[0]
     point = ct.hopf_point(rundir, "hb_high", "figures", "V", start, Fstar=FSTAR, **FREEPLAY,
                           **values)
     orbits = ct.periodic_from(rundir, "po_high", point,
@@ -159,11 +179,18 @@ def fold_S(rundir, hopf, values):
 
 
 def kappa(values, loads=KAPPA_LOADS, finer=KAPPA_FINER):
-    """kappa* over the envelope's loads (the criterion's recipe)."""
-    value, best = mg.kappa_star(lambda F: mg.least_unstable(F, **values), loads, values,
-                                finer=finer)
+    """kappa* over the envelope's loads (the criterion's recipe), the
+    freeplay it allows (kappa_yfp = kappa* eps [mm]), whether its load lies
+    in the oleo's stage-switch window, and kappa* over the loads off it."""
+    least = functools.lru_cache(maxsize=None)(lambda F: mg.least_unstable(F, **values))
+    value, best = mg.kappa_star(least, loads, values, finer=finer)
+    off, off_best, window = mg.kappa_star_off_switch(least, loads, values, finer=finer)
     return {"kappa": value, "kappa_Fstar": best["Fstar"], "kappa_V": best["V"],
-            "kappa_mode": best["mode"], "kappa_eta": best["eta"], "kappa_yfp": best["first"]}
+            "kappa_mode": best["mode"], "kappa_eta": best["eta"], "kappa_yfp": best["first"],
+            "switch_window": list(window) if window else None,
+            "on_switch": bool(window and window[0] <= best["Fstar"] <= window[1]),
+            "kappa_off_switch": off, "off_switch_Fstar": off_best["Fstar"],
+            "off_switch_V": off_best["V"], "off_switch_yfp": off_best["first"]}
 
 
 def link_position(values, Fstar, yfp, epsilon):
@@ -193,18 +220,12 @@ def compute(rho, mu, rundir):
         seconds[name] = round(cpu() - started, 2)
         return result
     scans = stage("scans", lambda: speeds(values))
-    out["critical_V"] = scans["critical_V"]
-    out["hopf"] = scans["hopf"]
-    out["bp"] = scans["bp"]
-    # named by frequency as in Fig. 10: H1, H2 the low-frequency pair (the
-    # gentle oscillations between them), H3 the first high-frequency one;
-    # with side-stay angles the pair can vanish (the links then sit against
-    # one side of the freeplay at low speed)
-    low = [v for v, hz in scans["hopf"] if hz < HIGH_HZ]
-    high = [v for v, hz in scans["hopf"] if hz >= HIGH_HZ]
-    out.update({"H1": low[0] if low else None, "H2": low[1] if len(low) > 1 else None,
-                "H3": high[0] if high else None})
-    fold = stage("auto", lambda: fold_S(rundir, scans["hopf"], values))
+    out.update(scans)
+    # with side-stay angles the low-frequency pair can vanish (the links
+    # then sit against one side of the freeplay at low speed)
+    named = {name: v for name, (v, _) in zip(scans["hopf_names"], scans["hopf"])}
+    out.update({name: named.get(name) for name in ("H1", "H2", "H3")})
+    fold = stage("auto", lambda: fold_S(rundir, out["H3"], values))
     out.update({"S": fold["S"], "S_from_V": fold["from_V"], "S_folds": fold["folds"],
                 "S_stop": fold["stop"], "S_psi_amp": fold["S_psi_amp"]})
     # [S, H3]: straight rolling stable (no Hopf point of it inside) beside
@@ -229,67 +250,139 @@ def run_point(name):
     result["wall_seconds"] = round(time.monotonic() - started, 1)
     POINTS.write(rho, mu, result)
     print(f"design_map: {name}: " + "; ".join(
-        f"{key} {_cell(result.get(key), fmt)}" for key, _, _, fmt in QUANTITIES)
+        f"{key} {_cell(result.get(key), fmt, key)}" for key, _, _, fmt in QUANTITIES)
         + f"; {sum(result['cpu_seconds'].values()):.0f} s CPU "
           f"({', '.join(f'{k} {v:g}' for k, v in result['cpu_seconds'].items())})")
 
 
-def _cell(value, fmt):
-    return "-" if value is None else format(value, fmt)
+def _cell(value, fmt, key=""):
+    if value is None:
+        return "vanished" if key in HOPF_NAMES else "-"
+    return format(value, fmt)
 
 
-def table(cells):
-    """The table's text: one row per geometry."""
+def nearest(cells, mark):
+    """The cell of the grid point nearest to the user's geometry `mark`
+    (rho, mu) [deg], or None without one."""
+    if mark is None:
+        return None
+    return min(cells, key=lambda c: (c["rho_deg"] - mark[0]) ** 2 + (c["mu_deg"] - mark[1]) ** 2)
+
+
+def headline(c):
+    """What a designer reads first at one geometry, from the numbers the
+    map computes (saying so where one was not found)."""
+    stable = ", ".join(f"{a:.3f}-{b:.3f}" for a, b in c["stable"]) or "no speed"
+    parts = [f"straight rolling stable at V = {stable} m/s with 1 mm of freeplay"]
+    S, H3 = c["S"], c["H3"]
+    if c["bistable_width"] is not None:
+        parts.append(f"bistable band [S, H3] = [{S:.3f}, {H3:.3f}] m/s")
+    elif H3 is None:
+        parts.append("no bistable band: H3 vanished")
+    elif S is None:
+        parts.append(f"bistable band not known: no fold S found ({c['S_stop']})")
+    elif S >= H3:
+        parts.append(f"no bistable band: S = {S:.3f} lies above H3 = {H3:.3f} m/s")
+    else:
+        parts.append(f"no bistable band: straight rolling changes stability inside "
+                     f"[S, H3] = [{S:.3f}, {H3:.3f}] m/s")
+    others = [f"{name} {v:.3f}" for name, (v, _) in zip(c["hopf_names"], c["hopf"])
+              if name not in HOPF_NAMES]
+    if others:
+        parts.append("other Hopf points " + ", ".join(others) + " m/s")
+    where = (f"F* = {c['kappa_Fstar']:.3f}" + (", on the oleo's stage switch" if c["on_switch"]
+                                                 else ""))
+    parts.append(f"no freeplay allowed (unstable without freeplay at {where}, "
+                 f"V = {c['kappa_V']:.1f} m/s)" if c["kappa"] == 0 else
+                 f"allowed freeplay {c['kappa_yfp']:.4f} mm (kappa* {c['kappa']:.4f} at {where})")
+    if c["on_switch"]:
+        parts[-1] += (f"; away from the switch {c['off_switch_yfp']:.4f} mm "
+                      f"(kappa* {c['kappa_off_switch']:.4f} at F* = {c['off_switch_Fstar']:.3f})")
+    return "; ".join(parts)
+
+
+def table(cells, mark=None):
+    """The table's text: one row per geometry, then one headline per
+    geometry; the user's geometry `mark` (or the grid point nearest it)
+    flagged."""
+    yours = nearest(cells, mark)
     head = ["rho", "mu"] + [f"{h}" + (f" [{u}]" if u else "") for _, h, u, _ in QUANTITIES] \
-        + ["kappa*: V, mode", "CPU [s]"]
+        + ["kappa*: V, mode", "on switch", "CPU [s]"]
     rows = [head]
     for c in cells:
         rows.append([f"{c['rho_deg']:g}", f"{c['mu_deg']:g}"]
-                    + [_cell(c.get(key), fmt) for key, _, _, fmt in QUANTITIES]
+                    + [_cell(c.get(key), fmt, key) for key, _, _, fmt in QUANTITIES]
                     + [f"{c['kappa_V']:.1f}, {c['kappa_mode']}",
+                       "yes" if c["on_switch"] else "no",
                        f"{sum(c['cpu_seconds'].values()):.0f}"])
     widths = [max(len(r[k]) for r in rows) for k in range(len(head))]
     lines = ["  ".join(cell.rjust(w) for cell, w in zip(row, widths)) for row in rows]
     cpu = [sum(c["cpu_seconds"].values()) for c in cells]
+    windows = [tuple(c["switch_window"]) for c in cells if c["switch_window"]]
+    mine = [] if yours is None else [
+        f"Your gear: rho = {mark[0]:g}, mu = {mark[1]:g} deg"
+        + ("" if (yours["rho_deg"], yours["mu_deg"]) == tuple(mark) else
+           f"; nearest grid point ({yours['rho_deg']:g}, {yours['mu_deg']:g})")
+        + " (marked *)"]
     return "\n".join([
         "Design map: side-stay angles rho, mu [deg], eom_terms = 2, `figures` set, F* = 1 "
         "unless stated;",
         "y_fp = 1 mm, eps = 0.1 mm for H1-H3, S and y_tlk/y_fp at F* = 1; kappa* by eq. (17) "
         "(eps = 0.1 mm, V <= 120 m/s, F* in [0.1, 2]);",
+        "allowed y_fp = kappa* eps: the largest freeplay with straight rolling stable up to "
+        "120 m/s at every load, for eps = 0.1 mm, the smoothing width of eq. (15);",
+        "on switch: kappa* set in the oleo's stage-switch window (F* "
+        + (f"{min(w[0] for w in windows):.3f}-{max(w[1] for w in windows):.3f}" if windows
+           else "none") + "), where it depends on the switch's steepness; off the "
+        "stage switch: kappa* eps over the other loads;",
         "S: fold of least V of the orbits born at H3 (where the stable large orbits begin); "
         "bistable: [S, H3] with straight rolling stable in it;",
-        "y_tlk/y_fp at kappa*: at its load and freeplay (+-1: against a side); H1, H2 the "
-        "low-frequency (< 8 Hz) Hopf points, H3 the first high-frequency one."] + lines + [
+        f"stable: the speeds of stable straight rolling within the scan's {ct.V_MIN:g}-"
+        f"{ct.V_MAX:g} m/s (y_fp = 1 mm, F* = 1);",
+        "y_tlk/y_fp at kappa*: at its load and freeplay (+-1: against a side); H1, H2: the "
+        f"low-frequency (< {HIGH_HZ:g} Hz) pair loses, regains stability, H3: the "
+        "high-frequency pair loses it (vanished: no such point)."] + lines + [
         f"CPU per geometry: mean {numpy.mean(cpu):.1f} s, max {max(cpu):.1f} s, "
-        f"total {sum(cpu):.0f} s over {len(cells)} geometries"]) + "\n"
+        f"total {sum(cpu):.0f} s over {len(cells)} geometries"] + mine + [""] + [
+        f"{'*' if c is yours else ' '} ({c['rho_deg']:g}, {c['mu_deg']:g}): {headline(c)}"
+        for c in cells]) + "\n"
 
 
-def summary(points, results, provenance):
+def summary(points, results, provenance, mark=None):
     """The table, its JSON and the maps from the points' results (their
     records, every point's checked present and of one provenance by
-    shared.jobs.grid)."""
+    shared.jobs.grid); mark: the user's geometry (rho, mu) [deg] or None."""
     cells = list(results)
-    text = table(cells)
+    text = table(cells, mark)
     print(text, end="")
     tables = paths.tables_dir()
     jobs.write_text(os.path.join(tables, "design_map.txt"), text)
+    yours = nearest(cells, mark)
     jobs.write_json(os.path.join(tables, "design_map.json"),
                     {"grid": {"rho_deg": sorted({c["rho_deg"] for c in cells}),
                               "mu_deg": sorted({c["mu_deg"] for c in cells})},
-                     "eom_terms": EOM, "freeplay": FREEPLAY, "points": cells}, indent=1)
+                     "eom_terms": EOM, "freeplay": FREEPLAY, "epsilon_mm": mg.EPSILON,
+                     "mark": None if yours is None else
+                     {"rho_deg": mark[0], "mu_deg": mark[1], "nearest":
+                      [yours["rho_deg"], yours["mu_deg"]]},
+                     "points": [dict(c, headline=headline(c)) for c in cells]}, indent=1)
     print(f"design_map: wrote {os.path.relpath(os.path.join(tables, 'design_map.txt'), paths.ROOT)}"
           ", design_map.json")
-    plot(cells)
+    plot(cells, mark)
 
 
-def plot(cells):
+SWITCH_FLAGGED = ("kappa", "kappa_yfp", "kappa_Fstar")   # panels hatched where on_switch
+
+
+def plot(cells, mark=None):
     import matplotlib.pyplot as plt
-    from matplotlib.patches import Rectangle
+    from matplotlib.patches import Patch, Rectangle
 
     from mlgshimmy.shared import draw
     rhos = sorted({c["rho_deg"] for c in cells})
     mus = sorted({c["mu_deg"] for c in cells})
-    fig, axes_ = plt.subplots(2, 5, figsize=(19, 7.6))
+    yours = nearest(cells, mark)
+    fig, axes_ = plt.subplots(3, 4, figsize=(17, 11))
     for ax, (key, heading, unit, fmt) in zip(axes_.flat, QUANTITIES):
         values = numpy.full((len(mus), len(rhos)), numpy.nan)
         for c in cells:
@@ -308,9 +401,17 @@ def plot(cells):
                 v = values[i, j]
                 light = numpy.isfinite(v) and (abs(v) > 0.5 * limit if diverging
                                                else v < low + 0.5 * (high - low))
-                ax.text(j, i, "none" if not numpy.isfinite(v) else format(v, fmt.lstrip("+")),
-                        ha="center", va="center", fontsize=7,
-                        color="w" if light and not diverging else "k")
+                missing = "vanished" if key in HOPF_NAMES else "none"
+                ax.text(j, i, missing if not numpy.isfinite(v) else format(v, fmt.lstrip("+")),
+                        ha="center", va="center", fontsize=7, color="w" if light else "k")
+        for c in cells:
+            j, i = rhos.index(c["rho_deg"]), mus.index(c["mu_deg"])
+            if key in SWITCH_FLAGGED and c["on_switch"]:
+                ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="//",
+                                       ec="0.6", lw=0))
+            if c is yours:
+                ax.add_patch(Rectangle((j - 0.44, i - 0.44), 0.88, 0.88, fill=False, lw=2.2,
+                                       ec="r", ls="--"))
         if 0.0 in rhos and 0.0 in mus:     # the paper's geometry
             ax.add_patch(Rectangle((rhos.index(0.0) - 0.5, mus.index(0.0) - 0.5), 1, 1,
                                    fill=False, lw=2.2, ec="k"))
@@ -321,18 +422,48 @@ def plot(cells):
         ax.grid(False)
         ax.set_title(heading + (f" [{unit}]" if unit else ""), fontsize=9)
         fig.colorbar(mesh, ax=ax, fraction=0.046, pad=0.03)
+    for ax in axes_.flat[len(QUANTITIES):]:
+        ax.set_visible(False)
+    legend = [Patch(fill=False, ec="k", lw=2.2, label="the paper's geometry rho = mu = 0"),
+              Patch(fill=False, hatch="//", ec="0.6",
+                    label="kappa* set on the oleo's stage switch (read the off-switch value)")]
+    if yours is not None:
+        at_point = (yours["rho_deg"], yours["mu_deg"]) == tuple(mark)
+        legend.append(Patch(fill=False, ec="r", ls="--", lw=2.2, label=(
+            f"your gear rho = {mark[0]:g}, mu = {mark[1]:g} deg" + ("" if at_point else
+            f" (nearest grid point {yours['rho_deg']:g}, {yours['mu_deg']:g})"))))
+    fig.legend(handles=legend, loc="lower center", ncol=len(legend), fontsize=9, frameon=False)
     fig.suptitle("Design map over the side-stay angles (eom_terms = 2, `figures` set; "
                  r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm, $F^*$ = 1 unless stated); "
-                 "boxed: the paper's geometry rho = mu = 0")
-    fig.tight_layout()
+                 r"allowed $y_{fp}$ = $\kappa^*\epsilon$ at $\epsilon$ = 0.1 mm")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
     draw.save(fig, "design_map")
 
 
-def main():
+def mark_of(text):
+    """(rho, mu) [deg] of --mark "RHO,MU" (either may be empty: 0)."""
+    parts = text.split(",")
+    if len(parts) != 2:
+        raise ValueError(f"--mark {text!r}: give RHO,MU in degrees")
+    return tuple(float(part) if part.strip() else 0.0 for part in parts)
+
+
+def main(argv=None):
+    # --mark concerns the summary alone: the grid and its jobs do not see it
+    parser = argparse.ArgumentParser(add_help=False, allow_abbrev=False)
+    parser.add_argument("--mark", default="")
+    known, rest = parser.parse_known_args(argv)
+    try:
+        mark = mark_of(known.mark) if known.mark else None
+    except ValueError as exc:
+        sys.exit(f"design_map: {exc}")
     jobgrid.main("design_map", __doc__.splitlines()[0], "point", POINTS,
                  [("--rho", DEFAULT_GRID, "rho values [deg]: a,b,c or start:stop:step"),
                   ("--mu", DEFAULT_GRID, "mu values [deg]: a,b,c or start:stop:step")],
-                 axes, run_job=run_point, check=check, summary=summary)
+                 axes, run_job=run_point, check=check,
+                 summary=lambda points, results, provenance: summary(points, results,
+                                                                      provenance, mark),
+                 argv=rest)
 
 
 if __name__ == "__main__":
