@@ -7,18 +7,35 @@
 #   make submit-design-map DESIGN_RHO=-20:20:2 DESIGN_MU=-20:20:2   on Slurm (mk/cluster/submit.mk)
 # Then the maps $(RUN_ROOT)/figures/design_map.png, the table
 # $(RUN_ROOT)/tables/design_map.txt and design_map.json.  The map sets its own
-# angles: RHO, MU and EOM do not apply to it.
+# angles and runs in the base tree whatever gear is given (it takes no SET:
+# mk/gear.mk AT_BASELINE); RHO and MU, if given, are the user's geometry,
+# marked on the map and in the table at its grid point or the nearest:
+#   make -j2 design-map RHO=12 MU=7             the default grid, (10, 10) marked
 DESIGN_RHO ?= -20:20:10
 DESIGN_MU ?= -20:20:10
-# `design-map` is the job grid `design_map` (a module name has no hyphen)
+DESIGN_GEAR := $(strip $(RHO)$(MU)$(EOM)$(SET))
+# `design-map` is the job grid `design_map` (a module name has no hyphen);
+# with a gear given it is that grid made again in the base tree, without
+# the gear, the user's angles as DESIGN_MARK
+ifeq ($(DESIGN_GEAR),)
 ifneq ($(filter design-map,$(MAKECMDGOALS)),)
 MAKECMDGOALS += design_map
 endif
+endif
 $(eval $(call py_deps,design_map,studies.design_map))
 DESIGN_GRID_ARGS = --rho=$(call shell_quote,$(DESIGN_RHO)) --mu=$(call shell_quote,$(DESIGN_MU))
-$(eval $(call job_grid,design_map,$(DESIGN_GRID_ARGS),$$(PYDEPS_design_map) $(MODEL_INPUTS) | auto,point))
+DESIGN_SUMMARY_ARGS = $(if $(DESIGN_MARK),--mark=$(call shell_quote,$(DESIGN_MARK)))
+$(eval $(call job_grid,design_map,$(DESIGN_GRID_ARGS),$$(PYDEPS_design_map) $(MODEL_INPUTS) | auto,point,$(DESIGN_SUMMARY_ARGS)))
 .PHONY: design-map
+ifeq ($(DESIGN_GEAR),)
 design-map: design_map
+else
+design_mark_comma := ,
+design-map:
+	$(AT_BASELINE) $(MAKE) --no-print-directory design-map RHO= MU= EOM= \
+	    MLG_RUN_ROOT=$(call shell_quote,$(BASE_RUN_ROOT)) \
+	    DESIGN_MARK=$(if $(strip $(RHO)$(MU)),$(call shell_quote,$(RHO)$(design_mark_comma)$(MU)))
+endif
 
 # Figures at a non-zero side-stay geometry with a regression reference, beside
 # sidestay_rho10_mu10 (mk/studies.mk): $(call geometry_reference,fig10,10,10)

@@ -1,14 +1,14 @@
 # A grid of independent jobs (shared.jobs.grid) as make targets; included by
 # ../Makefile before the makefiles that use it.
 #
-#   $(eval $(call job_grid,<tool>,<grid options>,<inputs>,<job command>))
+#   $(eval $(call job_grid,<tool>,<grid options>,<inputs>,<job command>[,<summary options>]))
 #
 # makes `make [-jN] <tool>`: `python3 -m mlgshimmy.studies.<tool> check <grid
 # options>` once per grid (a stamp in $(RUN_ROOT)/<tool>/), then one make job
 # `... <job command> <name>` per $(RUN_ROOT)/<tool>/<name>/result.json that
 # `<tool> targets` lists, rebuilt when it is older than the check or one of
-# <inputs>, then `<tool> summary`.  <grid options> reach the shell only as
-# words quoted with shell_quote.  The grid is read only when <tool> is a goal
+# <inputs>, then `<tool> summary` (with <summary options>, which no job
+# sees).  <grid options> reach the shell only as words quoted with shell_quote.  The grid is read only when <tool> is a goal
 # (never for `make clean` or another target); a rejected grid stops make with
 # the tool's message, which names the variable.  ($(shell) of GNU make < 4.4
 # does not see exported variables: PYTHONPATH, the run root and the geometry
@@ -33,7 +33,7 @@ endif
 
 .PHONY: $(1)
 $(1): $$($(1)_RESULTS)
-	$$(PYTHON) -m mlgshimmy.studies.$(1) summary $(2)
+	$$(PYTHON) -m mlgshimmy.studies.$(1) summary $(2) $(5)
 
 $(RUN_ROOT)/$(1)/%/result.json: $$($(1)_CHECKED) $(3)
 	$$(PYTHON) -m mlgshimmy.studies.$(1) $(4) $$*

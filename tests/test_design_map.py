@@ -60,6 +60,22 @@ def test_make_design_map_is_the_grid():
     assert len(summary) == 1 and "--mu='-5'" in summary[0] and "--mark" not in summary[0]
 
 
+def test_make_design_map_with_rho_mu_marks_the_user_s_gear_on_the_same_grid():
+    """RHO, MU do not move the grid or its tree (no geometry/ subtree): they
+    reach the summary alone, as --mark; the map takes no SET."""
+    proc = make_n("RHO=12", "MU=7")
+    assert proc.returncode == 0, proc.stderr
+    lines = proc.stdout.splitlines()
+    points = [line for line in lines if "design_map point" in line]
+    assert [p.split()[-1] for p in points] == ["rho0_mu-5", "rho10_mu-5"]
+    stamps = [line for line in lines if line.startswith("touch ")]
+    assert stamps and all(f"{ROOT}/build/design_map/grid-" in line for line in stamps), stamps
+    assert [line for line in lines if "design_map summary" in line][0].endswith(
+        "--mark='12,7'")
+    proc = make_n("SET=k_tlk=3.51e7")
+    assert proc.returncode != 0 and "design-map takes no SET" in proc.stderr
+
+
 @pytest.fixture(scope="module")
 def pair(tmp_path_factory):
     """The scans, one AUTO location of H3, kappa* on three loads and the
