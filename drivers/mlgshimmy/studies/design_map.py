@@ -337,8 +337,8 @@ def table(cells, mark=None):
         "stage switch: kappa* eps over the other loads;",
         "S: fold of least V of the orbits born at H3 (where the stable large orbits begin); "
         "bistable: [S, H3] with straight rolling stable in it;",
-        f"stable: the speeds of stable straight rolling within the scan's {ct.V_MIN:g}-"
-        f"{ct.V_MAX:g} m/s (y_fp = 1 mm, F* = 1);",
+        f"headlines, stable at V: the speeds of stable straight rolling within the scan's "
+        f"{ct.V_MIN:g}-{ct.V_MAX:g} m/s (y_fp = 1 mm, F* = 1);",
         "y_tlk/y_fp at kappa*: at its load and freeplay (+-1: against a side); H1, H2: the "
         f"low-frequency (< {HIGH_HZ:g} Hz) pair loses, regains stability, H3: the "
         "high-frequency pair loses it (vanished: no such point)."] + lines + [
