@@ -31,8 +31,10 @@ def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
     continuation.speed_diagram: (equilibria, Diagram)."""
     start = ct.Start(parameter_set, V=gear.start_speed(), **values)
     eq = ct.equilibria(rundir, "eq", start, stop={"V": V_MAX})
-    return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID,
-                                allow_failed=allow_failed or not gear.current().geometry.baseline,
+    # at the paper's geometry a branch may end only at a wheel's lift-off or
+    # on straight rolling (continuation.EDGE); with side-stay angles any MX is kept
+    keep = True if allow_failed or not gear.current().geometry.baseline else ct.EDGE
+    return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID, allow_failed=keep,
                                 figure="fig10", **{**ct.SPEED_ORBIT_STEPS,
                                                    **ct.geometry_orbit_steps(
                                                        gear.current().geometry.baseline)})
@@ -42,16 +44,20 @@ def numbers(diagram, points):
     """The special points of Fig. 10 as {quantity: value}: the Hopf points
     by name (points: the diagram's named points), the folds S1, S2, ... of the
     high-frequency orbits (>= HIGH_HZ; S1 is the paper's S), the folds of
-    the low-frequency ones, and where a branch stopped with no convergence."""
+    the low-frequency ones, and where a branch ends at a wheel's lift-off or
+    stopped with no convergence (an orbit branch that shrinks onto straight
+    rolling at a Hopf point ends there: no row)."""
     out = {f"{p['name']} [m/s]": p["V"] for p in points}
     high = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] >= HIGH_HZ)
     low = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] < HIGH_HZ)
     out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(high)})
     out.update({f"low-frequency fold {k + 1} [m/s]": v for k, v in enumerate(low)})
     for name, (_, run) in zip(diagram.names, diagram.parts):   # runs kept up to an MX
-        for k, point in enumerate(run("MX")):
-            out[f"{name}: stops (MX, {domain.stop_reason(point)}) at V [m/s]"
-                + (f" {k + 1}" if k else "")] = point["V"]
+        stops = [p for p in run("MX") if p["psi_amp"] > ct.COLLAPSED]   # not a Hopf bubble
+        for k, point in enumerate(stops):
+            why = domain.stop_reason(point)
+            out[(f"{name}: ends at wheel lift-off at V [m/s]" if why == "wheel lift-off" else
+                 f"{name}: stops (MX, {why}) at V [m/s]") + (f" {k + 1}" if k else "")] = point["V"]
     return out
 
 

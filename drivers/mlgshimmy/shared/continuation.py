@@ -32,6 +32,10 @@ COLLAPSED = 1e-8      # rad: an orbit with a smaller psi amplitude is straight r
 SHRUNK = 0.3          # an orbit below this part of its branch's largest amplitude has shrunk
 SAME_FREQUENCY = 0.05  # relative: an orbit this close to a Hopf frequency may collapse there
 COLLAPSING = 0.01     # a least amplitude below this part of the branch's largest: collapsed
+# relative: a Hopf point this near where orbits shrink onto straight rolling
+# is the one they join (AUTO's branch point lies up to 1 m/s from it: I_psi
+# x0.9, at 29.03 m/s for H2 at 27.97 m/s)
+JOIN_WINDOW = 0.05
 FIRST_STEP_FLOOR = 1e-5   # follow_orbits retries a jumping first step down to this DS
 
 
@@ -57,15 +61,36 @@ class Start:
         mlgmodel.register_constants(self.model)
 
 
+def ends_branch(point, parameter: str) -> bool:
+    """An MX point that is an end, not a failure: a wheel lifts off there
+    (the model's domain ends: domain.stop_reason), or a periodic orbit has
+    shrunk onto straight rolling at a Hopf point (zero amplitude, and a pair
+    of straight rolling's eigenvalues crosses the axis within JOIN_WINDOW of
+    it along `parameter`: the branch joins that Hopf point, where AUTO finds
+    a branch point and cannot go on).  Zero amplitude elsewhere is AUTO
+    landing on the equilibrium: a failure."""
+    if point["psi_amp"] <= COLLAPSED and point["freq"] > 0.0:   # an orbit, not an equilibrium
+        model = domain.solution_model(point)
+        value = point[parameter]
+        width = JOIN_WINDOW * max(1.0, abs(value))
+
+        def unstable_pairs(at):
+            lam = spectrum.eigenvalues(model.set(**{parameter: at}))
+            return int(numpy.sum((lam.real > 0) & (numpy.abs(lam.imag) > 1e-9)))
+        return unstable_pairs(value - width) != unstable_pairs(value + width)
+    return domain.stop_reason(point) != "numerical"
+
+
 def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[str] = None,
         **kw: Any):
     """autoglue.run on the MLG model: the base constants, then the run-type
     file constants/runs/c.<kind> if given, then the overlay file
     constants/runs/c.<overlay> if given, then the keyword overrides.  A run
     that stops with MX where that is an error goes up the retry ladder
-    (with_ladder); with allow_mx it is kept as it ends; with allow_mx="edge"
-    an MX at the edge of the model's domain (a wheel lifts off:
-    domain.stop_reason) is kept and any other goes up the ladder."""
+    (with_ladder); with allow_mx it is kept as it ends; with allow_mx=EDGE
+    an MX that ends the branch (ends_branch: a wheel lifts off, or the
+    orbits shrink onto straight rolling) is kept and any other goes up the
+    ladder."""
     files = [CONSTANTS] + [os.path.join(RUN_CONSTANTS, f"c.{k}") for k in (kind, overlay) if k]
     rundir = autoglue.claim(rundir)           # emptied on first use: claim, then write
     mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
@@ -75,7 +100,7 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
     def attempt(mx, **rung):
         bd = autoglue.run(rundir, name, constants=files, e=MODEL,
                           **{**kw, "allow_mx": mx or edge, **rung})
-        numerical = [p for p in bd("MX") if domain.stop_reason(p) == "numerical"]
+        numerical = [p for p in bd("MX") if not ends_branch(p, kw["ICP"][0])]
         if edge and numerical and not mx:
             raise autoglue.RunError(f"run {name} in {rundir}: no convergence (MX) at "
                                     f"{numerical[0]['V']:.6g} m/s, inside the model's domain")
@@ -166,7 +191,8 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
     its end (one passed before: collapse_within) is run again up to there,
     and the branch ends there.  names(n) names the n-th run.  With
     allow_failed a run ending in MX is kept up to the MX and a run that
-    fails is reported and the branch ends; else RunError.  A step longer
+    fails is reported and the branch ends; with allow_failed=EDGE only an
+    MX that ends the branch (run's EDGE) is kept; else RunError.  A step longer
     than 2 DSMAX in the parameter raises RunError (AUTO switched to another
     branch), except on the first step from `start` alone: the run is made
     again with a tenth of DS (down to FIRST_STEP_FLOOR).
@@ -179,7 +205,7 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
             orbits = periodic_from(rundir, name, origin, parameter, stop={parameter: stops},
                                    allow_mx=allow_failed, **kw)
         except autoglue.RunError as exc:
-            if not allow_failed:
+            if allow_failed is not True:
                 raise
             print(f"{figure}: orbits {name} left out: {exc.brief}", flush=True)
             break
@@ -249,7 +275,7 @@ LADDER = (("smaller steps", {"DS": 0.1, "DSMIN": 1e-4}),
           ("a finer mesh and smaller steps", {"NTST": 2.0, "DS": 0.1, "DSMIN": 1e-4,
                                               "DSMAX": 0.5}))
 STEP_CONSTANTS = ("DS", "DSMIN", "DSMAX", "NTST")
-EDGE = "edge"       # run(allow_mx=EDGE): an MX kept only where a wheel lifts off
+EDGE = "edge"       # run(allow_mx=EDGE): an MX kept only where it ends the branch (ends_branch)
 
 
 def rung_constants(own, factors):

@@ -21,7 +21,7 @@ _FIELDS = (("F_z", 1), ("F_dyn", 1), ("cos_phi", 1), ("F_keta", 1), ("F_ceta", 1
 LIFT_OFF_LOAD = 1e-4         # of the static tyre load: "zero" at an MX stop
 
 
-def _solution_model(sol) -> mlgmodel.Model:
+def solution_model(sol) -> mlgmodel.Model:
     """The model of an AUTO solution: its PAR and its constants file's constants."""
     names = [n for n in mlgmodel.PARNAMES if n and n != mlgmodel.CONSTANTS_FILE]
     return mlgmodel.Model("figures", **{n: sol.PAR[n] for n in names},
@@ -55,7 +55,7 @@ def tyre_loads(model: mlgmodel.Model, u: Dict[str, float]):
 def least_tyre_load(sol) -> float:
     """The least tyre load [N] over the stored points of an orbit (an AUTO
     solution), relative to nothing: see stop_reason."""
-    model = _solution_model(sol)
+    model = solution_model(sol)
     return min(min(tyre_loads(model, {n: sol[n][k] for n in mlgmodel.UNAMES}))
                for k in range(len(sol["t"])))
 
@@ -63,6 +63,6 @@ def least_tyre_load(sol) -> float:
 def stop_reason(sol) -> str:
     """"wheel lift-off" if the orbit `sol` (an MX solution) has a tyre load
     below LIFT_OFF_LOAD of the static one, else "numerical"."""
-    model = _solution_model(sol)
+    model = solution_model(sol)
     static = min(tyre_loads(model, model.equilibrium()))
     return "wheel lift-off" if least_tyre_load(sol) < LIFT_OFF_LOAD * static else "numerical"
