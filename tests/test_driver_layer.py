@@ -40,7 +40,7 @@ def auto_free(module):
 @pytest.mark.parametrize("module", (
     "shared.paths", "shared.branches", "shared.spectrum", "shared.draw", "shared.jobs",
     "shared.simulator", "shared.surfaces", "shared.paper", "shared.freeplay", "figures.fig06",
-    "figures.fig15", "figures.fig19", "shared.liftoff"))
+    "figures.fig15", "figures.fig19", "shared.liftoff", "shared.lyapunov"))
 def test_module_imports_no_auto(module):
     ok, detail = auto_free(module)
     assert ok, f"mlgshimmy.{module} imports AUTO or autoglue: {detail}"

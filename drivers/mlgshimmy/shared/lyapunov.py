@@ -1,0 +1,166 @@
+"""The first Lyapunov coefficient l1 at a Hopf point: its sign says whether
+the orbits born there are stable (l1 < 0, supercritical) or unstable
+(l1 > 0, subcritical), from the vector field's derivatives at the
+equilibrium alone (ctypes and numpy, no AUTO).
+
+    model = Model("figures", Fstar=1.0, yfp=1.0, eps_rel=0.1, V=144.26969033)
+    hopf = first_lyapunov(model, model.equilibrium())   # H3
+    hopf.l1, hopf.omega, hopf.spread   # 0.0338 (> 0: subcritical), 82.2 rad/s, 4e-8
+
+Kuznetsov, Elements of Applied Bifurcation Theory (3rd ed.), section 3.5,
+eq. (3.20): coefficient(A, B, C).  The second and third derivatives B and
+C of f come from central differences of the exact Jacobian (second_form,
+third_form); exact forms can take their place in coefficient().
+
+`model` is anything with .jacobian(u) -> df/du (an mlgmodel.Model).
+f need only be C^3 along q: the oleo's quadratic damping |eta'| eta' is
+not at eta' = 0, but the critical modes of straight rolling have no axial
+part (q_eta = q_eta' = 0), so J is differentiated only where f is smooth.
+"""
+from typing import Callable, NamedTuple
+
+import numpy
+
+from mlgshimmy.shared import mlgmodel
+
+# Steps tried, along directions scaled to max-norm 1 in the state's units
+# (rad, m, rad/s, m/s).  No one step serves every Hopf point: with freeplay
+# the link law (15) changes its curvature over psi ~ eps / r_tlk ~ 2e-4 rad,
+# so the truncation error (falling as h^2) needs psi steps near 1e-7 rad,
+# while at zero freeplay l1 is 1e5 times smaller and the rounding of J
+# divided by h^2 needs h near 1e-3.  first_lyapunov takes the step where
+# three successive halvings agree best, where truncation meets rounding.
+# The last step, 7.6e-8, stops where a field varying on unit scales keeps
+# two digits in C (rounding eps |J| / h^2 ~ 1e-2 |J|); below it the
+# differences of J round to steady wrong values that would agree.
+STEPS = 1e-2 * 0.5 ** numpy.arange(18)
+
+
+class Hopf(NamedTuple):
+    l1: float              # Kuznetsov's first Lyapunov coefficient, eq. (3.20)
+    omega: float           # the critical pair +- i omega [rad/s]
+    q: numpy.ndarray       # A q = i omega q, <q, q> = 1
+    p: numpy.ndarray       # A^T p = -i omega p, <p, q> = 1
+    real_part: float       # Re of the pair used (0 at an exact Hopf point)
+    h: float = numpy.nan   # the step of B and C (first_lyapunov)
+    spread: float = numpy.nan  # max - min of l1 over the steps 2h, h, h/2
+
+
+def _directional(model, u, x, h):
+    """d/ds J(u + s x) at s = 0 for a real direction x, by the central
+    difference (J(u + h d) - J(u - h d)) / 2h along d = x / max|x|
+    (then scaled back), error O(h^2)."""
+    size = numpy.max(numpy.abs(x))
+    if size == 0.0:
+        return numpy.zeros((len(u), len(u)))
+    d = h * x / size
+    return (model.jacobian(u + d) - model.jacobian(u - d)) * (size / (2 * h))
+
+
+def _mixed(model, u, x, y, h):
+    """d^2/ds dt J(u + s x + t y) at 0 for real x, y, by the four-point
+    central difference (x, y each scaled to max-norm 1, then back)."""
+    sx, sy = numpy.max(numpy.abs(x)), numpy.max(numpy.abs(y))
+    if sx == 0.0 or sy == 0.0:
+        return numpy.zeros((len(u), len(u)))
+    a, b = h * x / sx, h * y / sy
+    J = model.jacobian
+    return (J(u + a + b) - J(u + a - b) - J(u - a + b) + J(u - a - b)) * (sx * sy / (4 * h * h))
+
+
+def second_form(model, u, h: float) -> Callable:
+    """B(x, y) = sum_jk d2f/du_j du_k x_j y_k at u, for complex x and y by
+    linearity: B(x, y) = [d/ds J(u + s Re x) + i d/ds J(u + s Im x)] y."""
+    u = numpy.asarray(u, dtype=float)
+
+    def B(x, y):
+        x = numpy.asarray(x, dtype=complex)
+        return (_directional(model, u, x.real, h) @ y
+                + 1j * (_directional(model, u, x.imag, h) @ y))
+    return B
+
+
+def third_form(model, u, h: float) -> Callable:
+    """C(x, y, z) = sum_jkl d3f/du_j du_k du_l x_j y_k z_l at u, complex x
+    and y split into their real and imaginary parts (C is trilinear)."""
+    u = numpy.asarray(u, dtype=float)
+
+    def C(x, y, z):
+        x, y = numpy.asarray(x, dtype=complex), numpy.asarray(y, dtype=complex)
+        out = numpy.zeros(len(u), dtype=complex)
+        for cx, xr in ((1.0, x.real), (1j, x.imag)):
+            for cy, yr in ((1.0, y.real), (1j, y.imag)):
+                out += cx * cy * (_mixed(model, u, xr, yr, h) @ z)
+        return out
+    return C
+
+
+def critical_pair(A: numpy.ndarray):
+    """(omega, q, p, Re lambda) of the eigenvalue lambda of A nearest the
+    imaginary axis with Im lambda > 0: A q = lambda q, <q, q> = 1, and the
+    left eigenvector p (A^T p = conj(lambda) p) with <p, q> = conj(p) . q = 1."""
+    eig, vec = numpy.linalg.eig(A)
+    upper = numpy.flatnonzero(eig.imag > 0)
+    k = upper[numpy.argmin(numpy.abs(eig.real[upper]))]
+    lam, q = eig[k], vec[:, k] / numpy.linalg.norm(vec[:, k])
+    eig_t, vec_t = numpy.linalg.eig(A.T)
+    p = vec_t[:, numpy.argmin(numpy.abs(eig_t - numpy.conj(lam)))]
+    return lam.imag, q, p / numpy.conj(numpy.vdot(p, q)), lam.real
+
+
+def coefficient(A: numpy.ndarray, B: Callable, C: Callable) -> Hopf:
+    """Kuznetsov's l1 where A = df/du has the pair +- i omega nearest the
+    axis (its small real part is ignored), B and C the forms there:
+
+      l1 = 1/(2 omega) Re[<p, C(q,q,qbar)> - 2 <p, B(q, A^-1 B(q,qbar))>
+                          + <p, B(qbar, (2 i omega I - A)^-1 B(q,q))>]   (3.20)
+
+    with <a, b> = conj(a) . b."""
+    omega, q, p, real_part = critical_pair(A)
+    qbar = numpy.conj(q)
+    resonant = numpy.linalg.solve(2j * omega * numpy.eye(len(q)) - A, B(q, q))
+    bracket = (numpy.vdot(p, C(q, q, qbar))
+               - 2 * numpy.vdot(p, B(q, numpy.linalg.solve(A, B(q, qbar))))
+               + numpy.vdot(p, B(qbar, resonant)))
+    return Hopf(bracket.real / (2 * omega), omega, q, p, real_part)
+
+
+def at_step(model, u, h: float) -> Hopf:
+    """coefficient() with B and C by central differences of step h; u a
+    sequence or {state name: value}."""
+    if isinstance(u, dict):
+        u = [u[name] for name in mlgmodel.UNAMES]
+    u = numpy.asarray(u, dtype=float)
+    hopf = coefficient(model.jacobian(u), second_form(model, u, h), third_form(model, u, h))
+    return hopf._replace(h=h)
+
+
+def first_lyapunov(model, u, steps=STEPS) -> Hopf:
+    """l1 at the equilibrium u (at_step) for each of `steps` (decreasing by
+    halves), kept at the step whose value and its two neighbours' differ
+    least relative to their size: their spread is the error estimate.
+    Relative, because a field whose cubic terms round away gives l1 = 0 at
+    every step.  A step that takes the state out of the model's domain
+    is passed over."""
+    found = []
+    for h in steps:
+        try:
+            found.append(at_step(model, u, h))
+        except RuntimeError:
+            continue
+    l1 = numpy.array([hopf.l1 for hopf in found])
+    spread = numpy.array([numpy.ptp(l1[k - 1:k + 2]) for k in range(1, len(found) - 1)])
+    size = numpy.array([numpy.max(numpy.abs(l1[k - 1:k + 2])) for k in range(1, len(found) - 1)])
+    with numpy.errstate(invalid="ignore", divide="ignore"):
+        k = 1 + int(numpy.argmin(numpy.where(size > 0, spread / size, numpy.inf)))
+    return found[k]._replace(spread=spread[k - 1])
+
+
+def amplitude(hopf: Hopf, mu: float) -> numpy.ndarray:
+    """Half the peak-to-peak swing of each state, to leading order, on the
+    orbit where the pair's real part is mu: the normal form
+    z' = (mu + i omega) z + c1 z|z|^2 with Re c1 = omega l1 has the circle
+    |z|^2 = -mu / (omega l1), and u(t) = u + 2 Re(z q), so 2 |q_i| |z|;
+    NaN where mu / l1 > 0 (no orbit on that side)."""
+    rho2 = -mu / (hopf.omega * hopf.l1)
+    return 2 * numpy.abs(hopf.q) * (numpy.sqrt(rho2) if rho2 >= 0 else numpy.nan)

@@ -1,0 +1,153 @@
+"""Tests of shared/lyapunov.py: Kuznetsov's first Lyapunov coefficient l1
+(eq. 3.20) on systems whose l1 is known in closed form, then at the Hopf
+points of straight rolling of the paper's gear, where its sign must agree
+with the direction of the orbit branches AUTO continues from them and
+its amplitude prediction with their first orbits."""
+import os
+
+import numpy as np
+import pytest
+
+from mlgshimmy.shared import lyapunov, mlgmodel, spectrum
+
+REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference")
+OMEGA, LAM = 2.0, 0.7
+# an orthogonal change of coordinates (l1 is invariant under it, as <q, q> = 1 is)
+ROTATION = np.linalg.qr(np.random.default_rng(35).normal(size=(3, 3)))[0]
+
+
+class Polynomial:
+    """v' = g(v) seen in the coordinates u = R v: f(u) = R g(R^T u), with
+    .jacobian(u) = R Dg(R^T u) R^T, as mlgmodel.Model gives it."""
+
+    def __init__(self, dg, rotation):
+        self.dg, self.R = dg, rotation
+
+    def jacobian(self, u):
+        return self.R @ self.dg(self.R.T @ np.asarray(u)) @ self.R.T
+
+
+def cubic_focus(a):
+    """x' = -w y + a x r^2, y' = w x + a y r^2 (r^2 = x^2 + y^2): in z = (x + iy)/sqrt2
+    along q = (1, -i)/sqrt2, z' = i w z + 2a z|z|^2, so l1 = Re c1 / w = 2a / w."""
+    def dg(v):
+        x, y = v
+        return np.array([[a * (3 * x * x + y * y), -OMEGA + 2 * a * x * y],
+                         [OMEGA + 2 * a * x * y, a * (x * x + 3 * y * y)]])
+    return dg
+
+
+def slaved_radius(v):
+    """x' = -w y + x z, y' = w x + y z, z' = -lam z + r^2: the centre manifold
+    z = r^2 / lam gives r' = r^3 / lam, i.e. the focus above with a = 1/lam:
+    l1 = 2 / (lam w), through the A^-1 B(q, qbar) term alone."""
+    x, y, z = v
+    return np.array([[z, -OMEGA, x], [OMEGA, z, y], [2 * x, 2 * y, -LAM]])
+
+
+def slaved_second_harmonic(v):
+    """x' = -w y + x z, y' = w x - y z, z' = -lam z + x^2 - y^2: with w = x + iy,
+    w' = i w w + conj(w) z and z = Re(k w^2), k = 1/(lam + 2i w) on the centre
+    manifold, so w' has (k/2)|w|^2 w: l1 = lam / (w (lam^2 + 4 w^2)), through
+    the (2 i w I - A)^-1 B(q, q) term alone."""
+    x, y, z = v
+    return np.array([[z, -OMEGA, x], [OMEGA, -z, -y], [2 * x, -2 * y, -LAM]])
+
+
+@pytest.mark.parametrize("system, l1", [
+    (Polynomial(cubic_focus(-0.3), np.eye(2)), 2 * -0.3 / OMEGA),
+    (Polynomial(cubic_focus(0.45), np.array([[0.6, -0.8], [0.8, 0.6]])), 2 * 0.45 / OMEGA),
+    (Polynomial(slaved_radius, ROTATION), 2 / (LAM * OMEGA)),
+    (Polynomial(slaved_second_harmonic, ROTATION), LAM / (OMEGA * (LAM ** 2 + 4 * OMEGA ** 2))),
+], ids=["focus", "rotated focus", "3-d radius", "3-d second harmonic"])
+def test_l1_of_systems_with_a_known_value(system, l1):
+    """The forms of a cubic field are exact central differences of its
+    Jacobian, so every step gives l1 to rounding (1e-9 relative)."""
+    hopf = lyapunov.first_lyapunov(system, np.zeros(len(system.R)))
+    assert hopf.omega == pytest.approx(OMEGA, rel=1e-12)
+    assert hopf.l1 == pytest.approx(l1, rel=1e-9)
+
+
+PAPER_GEAR = {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1}
+ZERO_FREEPLAY = {"Fstar": 1.0, "yfp": 0.0}
+# name: (gear, bracket of V [m/s], V_H named by the AUTO runs (tests/reference/fig10/named.json),
+#        l1 (Kuznetsov's, per unit <q, q>), where the orbit branch from it starts in the reference
+#        runs, its first or last points near V_H)
+HOPF = {
+    "H1": (PAPER_GEAR, (1.3, 1.6), 1.4581594746679292, -413.7354, ("fig10/b.po1", "first")),
+    "H2": (PAPER_GEAR, (28.0, 28.6), 28.306722207961514, -4.094648, ("fig10/b.po1", "last")),
+    "H3": (PAPER_GEAR, (144.0, 144.5), 144.26969033434705, 0.03377912, ("fig10/b.po3", "first")),
+    "V_crit": (ZERO_FREEPLAY, (340.0, 350.0), 346.09999745081984, -3.032322e-6,
+               ("fig07/b.po_F1", "first")),
+}
+
+
+def rolling_at(V, gear):
+    model = mlgmodel.Model("figures", V=V, **gear)
+    u = model.equilibrium()
+    return model, np.array([u[name] for name in mlgmodel.UNAMES])
+
+
+def hopf_point(name):
+    """V_H by bisection on the sign of the critical pair's real part (60
+    halvings of the bracket), l1 there, and mu' = d Re lambda / dV."""
+    gear, bracket = HOPF[name][:2]
+    (V, kind, _), = spectrum.stability_changes("figures", "V", bracket, **gear)
+    assert kind == "HB"
+    model, u = rolling_at(V, gear)
+    mu = [lyapunov.critical_pair(m.jacobian(v))[3]
+          for m, v in (rolling_at(V + dV, gear) for dV in (1e-4, -1e-4))]
+    return V, model, u, lyapunov.first_lyapunov(model, u), (mu[0] - mu[1]) / 2e-4
+
+
+def orbits(run, end, count):
+    """(V, psi_amp) of the first or last `count` orbits of a reference run
+    (b-file columns: BR PT TY LAB V L2-NORM T psi_amp ...)."""
+    rows = [line.split() for line in open(os.path.join(REFERENCE, run))]
+    rows = [(float(r[4]), float(r[7])) for r in rows if r[0] != "0"]
+    # the first row is the Hopf point itself
+    return np.array(rows[1:1 + count] if end == "first" else rows[-count:])
+
+
+@pytest.mark.parametrize("name", HOPF)
+def test_l1_at_the_hopf_points_of_straight_rolling(name):
+    """Straight rolling at F* = 1 (psi = 0: the links centred in the
+    freeplay): l1 < 0 (supercritical) at H1, H2 and V_crit, l1 > 0
+    (subcritical) at H3, as the orbit branches continued by AUTO say.
+    Converged in the step: within 1e-5 relative over the steps 2h, h, h/2
+    chosen (2.8e-6 at H1, 2.0e-6 H2, 1.2e-6 H3, 2.2e-7 V_crit), and
+    at_step(h) against at_step(h/2) within 1e-4."""
+    V, model, u, hopf, _ = hopf_point(name)
+    assert V == pytest.approx(HOPF[name][2], abs=1e-6)
+    assert abs(hopf.real_part) < 1e-12
+    assert hopf.l1 == pytest.approx(HOPF[name][3], rel=1e-5)
+    assert hopf.spread < 1e-5 * abs(hopf.l1)
+    half = lyapunov.at_step(model, u, hopf.h / 2)
+    assert abs(half.l1 / hopf.l1 - 1) < 1e-4
+
+
+@pytest.mark.parametrize("name", HOPF)
+def test_orbits_are_born_on_the_side_l1_says(name):
+    """The normal form has orbits where mu / l1 < 0 (mu = Re lambda ~ mu' (V -
+    V_H)): they start towards higher V at H1 and V_crit, lower at H2 and H3,
+    as in the reference runs."""
+    V, _, _, hopf, slope = hopf_point(name)
+    V_orbits = orbits(*HOPF[name][4], 1)[0, 0]
+    assert np.sign(V_orbits - V) == -np.sign(slope * hopf.l1)
+
+
+@pytest.mark.parametrize("name, rel", [("H2", 0.01), ("H3", 0.02), ("V_crit", 1e-4)])
+def test_amplitude_predicted_by_l1_matches_the_first_orbits(name, rel):
+    """psi_amp = K sqrt|V - V_H| near V_H, K = 2 |q_psi| sqrt(|mu'| / (omega |l1|))
+    (lyapunov.amplitude); from the two reference orbits nearest V_H, K^2 is
+    psi_amp^2 / |V - V_H| extrapolated linearly to V_H.  K = 4.083e-3 (H2;
+    the orbits give -0.4 %), 3.274e-3 (H3; -1.1 %: they reach a quarter of
+    the freeplay angle, where the link law bends), 2.0336e-2 rad/sqrt(m/s)
+    (V_crit; 5e-7).  H1 is left out: the reference's first orbit is
+    0.52 m/s past it, at 70 % of the freeplay angle."""
+    V, _, _, hopf, slope = hopf_point(name)
+    K = lyapunov.amplitude(hopf, -np.sign(hopf.l1) * abs(slope))[0]   # at |V - V_H| = 1
+    near = orbits(*HOPF[name][4], 2)
+    distance = np.abs(near[:, 0] - V)
+    K2 = np.polyfit(distance, near[:, 1] ** 2 / distance, 1)[1]
+    assert K == pytest.approx(np.sqrt(K2), rel=rel)
