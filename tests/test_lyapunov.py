@@ -68,6 +68,26 @@ def test_l1_of_systems_with_a_known_value(system, l1):
     assert hopf.l1 == pytest.approx(l1, rel=1e-9)
 
 
+def test_exact_forms_take_the_place_of_the_differences():
+    """coefficient(A, B, C) with the forms of slaved_radius written out
+    (B from x z, y z, r^2; C = 0), in the rotated coordinates, gives what
+    the differences give, and the closed form 2 / (lam w), to 1e-12."""
+    R = ROTATION
+
+    def B(a, b):
+        a, b = R.T @ a, R.T @ b
+        return R @ np.array([a[0] * b[2] + a[2] * b[0], a[1] * b[2] + a[2] * b[1],
+                             2 * (a[0] * b[0] + a[1] * b[1])])
+
+    def C(a, b, c):
+        return np.zeros(3, dtype=complex)
+
+    system = Polynomial(slaved_radius, R)
+    exact = lyapunov.coefficient(system.jacobian(np.zeros(3)), B, C)
+    assert exact.l1 == pytest.approx(2 / (LAM * OMEGA), rel=1e-12)
+    assert lyapunov.first_lyapunov(system, np.zeros(3)).l1 == pytest.approx(exact.l1, rel=1e-9)
+
+
 PAPER_GEAR = {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1}
 ZERO_FREEPLAY = {"Fstar": 1.0, "yfp": 0.0}
 # name: (gear, bracket of V [m/s], V_H named by the AUTO runs (tests/reference/fig10/named.json),
@@ -124,6 +144,18 @@ def test_l1_at_the_hopf_points_of_straight_rolling(name):
     assert hopf.spread < 1e-5 * abs(hopf.l1)
     half = lyapunov.at_step(model, u, hopf.h / 2)
     assert abs(half.l1 / hopf.l1 - 1) < 1e-4
+
+
+@pytest.mark.parametrize("name", ["H1", "H2", "H3"])
+def test_the_step_resolves_the_freeplay_smoothing(name):
+    """The step chosen moves psi by at most 1/200 of eps / r_tlk (2.1e-4 rad,
+    over which eq. (15) bends): each direction of the differences (Re q,
+    Im q) is scaled to max-norm 1, psi moving by h |q_psi| / max |q|.
+    (1.5e-3 of it at H1, 2.8e-3 at H2, 1.8e-3 at H3.)"""
+    _, model, u, hopf, _ = hopf_point(name)
+    psi_step = hopf.h * max(abs(part[0]) / np.max(np.abs(part))
+                            for part in (hopf.q.real, hopf.q.imag))
+    assert psi_step < model.epsilon_m() / model.r_tlk(u[3]) / 200
 
 
 @pytest.mark.parametrize("name", HOPF)

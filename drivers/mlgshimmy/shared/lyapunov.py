@@ -1,7 +1,7 @@
 """The first Lyapunov coefficient l1 at a Hopf point: its sign says whether
 the orbits born there are stable (l1 < 0, supercritical) or unstable
 (l1 > 0, subcritical), from the vector field's derivatives at the
-equilibrium alone (ctypes and numpy, no AUTO).
+equilibrium alone (numpy and the c/ library, no AUTO).
 
     model = Model("figures", Fstar=1.0, yfp=1.0, eps_rel=0.1, V=144.26969033)
     hopf = first_lyapunov(model, model.equilibrium())   # H3
@@ -13,8 +13,8 @@ C of f come from central differences of the exact Jacobian (second_form,
 third_form); exact forms can take their place in coefficient().
 
 `model` is anything with .jacobian(u) -> df/du (an mlgmodel.Model).
-f need only be C^3 along q: the oleo's quadratic damping |eta'| eta' is
-not at eta' = 0, but the critical modes of straight rolling have no axial
+f need only be smooth along q: the oleo's quadratic damping |eta'| eta'
+is not at eta' = 0, but the critical modes of straight rolling have no axial
 part (q_eta = q_eta' = 0), so J is differentiated only where f is smooth.
 """
 from typing import Callable, NamedTuple
@@ -26,7 +26,7 @@ from mlgshimmy.shared import mlgmodel
 # Steps tried, along directions scaled to max-norm 1 in the state's units
 # (rad, m, rad/s, m/s).  No one step serves every Hopf point: with freeplay
 # the link law (15) changes its curvature over psi ~ eps / r_tlk ~ 2e-4 rad,
-# so the truncation error (falling as h^2) needs psi steps near 1e-7 rad,
+# so the truncation error (falling as h^2) needs psi steps of a few 1e-7 rad,
 # while at zero freeplay l1 is 1e5 times smaller and the rounding of J
 # divided by h^2 needs h near 1e-3.  first_lyapunov takes the step where
 # three successive halvings agree best, where truncation meets rounding.
@@ -148,12 +148,15 @@ def first_lyapunov(model, u, steps=STEPS) -> Hopf:
             found.append(at_step(model, u, h))
         except RuntimeError:
             continue
-    l1 = numpy.array([hopf.l1 for hopf in found])
-    spread = numpy.array([numpy.ptp(l1[k - 1:k + 2]) for k in range(1, len(found) - 1)])
-    size = numpy.array([numpy.max(numpy.abs(l1[k - 1:k + 2])) for k in range(1, len(found) - 1)])
-    with numpy.errstate(invalid="ignore", divide="ignore"):
-        k = 1 + int(numpy.argmin(numpy.where(size > 0, spread / size, numpy.inf)))
-    return found[k]._replace(spread=spread[k - 1])
+    if len(found) < 3:
+        raise RuntimeError(f"lyapunov: only {len(found)} of the steps stay in the model's domain")
+    triples = [numpy.array([hopf.l1 for hopf in found[k - 1:k + 2]])
+               for k in range(1, len(found) - 1)]
+    spread = [numpy.ptp(t) for t in triples]
+    relative = [s / numpy.max(numpy.abs(t)) if numpy.any(t) else numpy.inf
+                for s, t in zip(spread, triples)]
+    k = int(numpy.argmin(relative))
+    return found[k + 1]._replace(spread=spread[k])
 
 
 def amplitude(hopf: Hopf, mu: float) -> numpy.ndarray:
