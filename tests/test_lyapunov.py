@@ -28,8 +28,9 @@ class Polynomial:
 
 
 def cubic_focus(a):
-    """x' = -w y + a x r^2, y' = w x + a y r^2 (r^2 = x^2 + y^2): in z = (x + iy)/sqrt2
-    along q = (1, -i)/sqrt2, z' = i w z + 2a z|z|^2, so l1 = Re c1 / w = 2a / w."""
+    """x' = -w y + a x r^2, y' = w x + a y r^2 (r^2 = x^2 + y^2), i.e. s' = i w s
+    + a |s|^2 s for s = x + iy; Kuznetsov's z = s / sqrt2 (along q = (1, -i) /
+    sqrt2) has z' = i w z + c1 z|z|^2, c1 = 2a, so l1 = Re c1 / w = 2a / w."""
     def dg(v):
         x, y = v
         return np.array([[a * (3 * x * x + y * y), -OMEGA + 2 * a * x * y],
@@ -46,10 +47,11 @@ def slaved_radius(v):
 
 
 def slaved_second_harmonic(v):
-    """x' = -w y + x z, y' = w x - y z, z' = -lam z + x^2 - y^2: with w = x + iy,
-    w' = i w w + conj(w) z and z = Re(k w^2), k = 1/(lam + 2i w) on the centre
-    manifold, so w' has (k/2)|w|^2 w: l1 = lam / (w (lam^2 + 4 w^2)), through
-    the (2 i w I - A)^-1 B(q, q) term alone."""
+    """x' = -w y + x z, y' = w x - y z, z' = -lam z + x^2 - y^2: with s = x + iy,
+    s' = i w s + conj(s) z and z = Re(k s^2), k = 1/(lam + 2i w) on the centre
+    manifold, so s' has (k/2)|s|^2 s, i.e. the focus above with a = Re k / 2:
+    l1 = lam / (w (lam^2 + 4 w^2)), through the (2 i w I - A)^-1 B(q, q) term
+    alone."""
     x, y, z = v
     return np.array([[z, -OMEGA, x], [OMEGA, -z, -y], [2 * x, -2 * y, -LAM]])
 
