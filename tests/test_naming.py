@@ -26,6 +26,18 @@ def test_the_paper_s_gear_has_its_three_named_points():
     assert [m["loses"] for m in modes] == [True, False, True]
     # the paper's 1.5, 28.1, 142.5 m/s (Fig. 10), as docs/reproduction.md compares them
     assert [v for v, _ in hopf] == pytest.approx([1.458, 28.307, 144.270], abs=2e-3)
+    # criticality by l1 (shared.lyapunov): the low-frequency orbits stable, H3's not
+    assert [naming.by_l1(m["l1"]) for m in modes] == ["supercritical", "supercritical",
+                                                      "subcritical"]
+
+
+def test_a_disagreement_of_l1_and_the_branch_is_said():
+    m = {"band": "high", "dof": "lateral", "loses": True, "l1": 0.0338}
+    assert naming.describe(m, "subcritical").endswith("subcritical (l1 = +0.0338; the orbit "
+                                                      "branch agrees)")
+    assert "DISAGREES with the orbit branch, which is supercritical" in \
+        naming.describe(m, "supercritical")
+    assert "no orbit branch near it to check" in naming.describe(m, None)
 
 
 def test_a_lone_high_frequency_point_is_h3_not_h1():
