@@ -124,3 +124,13 @@ def test_a_result_made_for_another_gear_is_refused(tmp_path, monkeypatch):
     (tmp_path / "figx" / "result.json").write_text(json.dumps(stored))
     with pytest.raises(jobs.BadResult, match="made for an unrecorded gear"):
         jobs.read("figx")
+
+
+def test_a_run_root_given_to_regress_leaves_it_in_its_private_directory(tmp_path):
+    """`make regress-<fig> MLG_RUN_ROOT=R` runs, compares and publishes as
+    without it: the figure's runs go to regress's private directory, never
+    to R (it was sent outside it and stopped: no such run directory)."""
+    proc = make("regress-fig09", f"MLG_RUN_ROOT={tmp_path / 'elsewhere'}")
+    assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+    assert "fig09 vs tests/reference/fig09: agree" in proc.stdout
+    assert not (tmp_path / "elsewhere").exists()
