@@ -39,6 +39,7 @@ Studies
   calibrate                   2 s  the c_psi of the `figures` parameter set
   sidestay RHO=10 MU=10      30 s  side-stay angles [deg] against rho = mu = 0 (EOM=0|1|2)
   sweep                      20 s  critical speed over a (rho, mu) grid (SWEEP_RHO, SWEEP_MU: 3 x 3)
+  floquet RUN=<dir>/<run>    2 s  Floquet multipliers along one orbit run, torus/PD/fold crossings
   robustness              45 min  each parameter x0.8-1.2: what moves, and does every figure complete (-j2)
   design-map                5 min  H1-H3, S, allowed freeplay, y_tlk over (rho, mu) (5 x 5; -j2; RHO, MU marked)
   atlas                    17 min  attractor atlas by simulation over (V, F*); -j2: 9 min

@@ -33,6 +33,13 @@ $(eval $(call py_deps,sweep,studies.sweep))
 $(eval $(call job_grid,sweep,--rho=$(call shell_quote,$(SWEEP_RHO)) \
     --mu=$(call shell_quote,$(SWEEP_MU)),$$(PYDEPS_sweep) $(MODEL_INPUTS) | auto,point))
 
+# The Floquet multipliers along one periodic-orbit run, from its d-file (no
+# AUTO run): make floquet RUN=build/fig10/po3 (studies.floquet_plot).
+.PHONY: floquet
+floquet:
+	$(if $(strip $(RUN)),,$(error make floquet needs RUN=<run directory>/<run name>, e.g. RUN=build/fig10/po3))
+	$(PYTHON) -m mlgshimmy.studies.floquet_plot $(call shell_quote,$(RUN))
+
 # Robustness of the answers to a changed model (studies.robustness): one job
 # per variation of one parameter (x0.8, x0.9, x1.1, x1.2 by default), each
 # making fig07, fig09, fig10 and fig12 for that gear and its kappa*:

@@ -19,6 +19,13 @@ _MULTIPLIER = re.compile(r"^\s*-?\d+\s+(-?\d+)\s+Multiplier\s+\d+\s+(\S+)\s+(\S+
 COMPLEX = 3e-3    # |Im mu| above this: a complex pair (AUTO: sqrt(EPSS))
 
 
+def fortran_number(text):
+    """A number as AUTO's Fortran writes it: 1.5D+02, and 1.5+288 where a
+    three-digit exponent leaves no room for the E."""
+    return float(re.sub(r"(?<=[0-9.])([+-]\d+)$", r"E\1", text.replace("D", "E"))
+                 if "E" not in text.upper().replace("D", "E") else text.replace("D", "E"))
+
+
 def read(path):
     """[(parameter value, multipliers as complex array)] per point of the
     branch in the d-file at path, in branch order.  AUTO writes a block for
@@ -37,7 +44,7 @@ def read(path):
                 if current:
                     points[point] = (last_value, numpy.array(current))
                     current = []
-                value = float(m.group(1).replace("D", "E"))
+                value = fortran_number(m.group(1))
             last_value = value
     if current:
         points[point] = (last_value, numpy.array(current))
