@@ -58,7 +58,8 @@ def test_an_overlay_is_parsed_sorted_and_tagged():
     ("Fstar=0.5", "Fstar cannot be overlaid: each figure sets it"),
     ("rho=0.1", "RHO=<degrees>"),
     ("k_tlk=fast", "'fast' is not a number"),
-    ("k_tlk=nan", "must be finite"),
+    ("k_tlk=nan", "'nan' is not a number"),
+    ("k_tlk=1e400", "must be finite"),
     ("k_tlk", "is not NAME=VALUE"),
     ("c_psi=1 c_psi=2", "c_psi is given twice"),
 ])

@@ -21,6 +21,8 @@ import math
 import os
 from typing import Dict, Mapping, Optional
 
+from mlgshimmy.shared import number_text
+
 ENV_RHO, ENV_MU, ENV_EOM = "MLG_RHO_DEG", "MLG_MU_DEG", "MLG_EOM"
 MAKE_VARIABLE = {ENV_RHO: "RHO", ENV_MU: "MU", ENV_EOM: "EOM"}
 EOM_LEVELS = (0, 1, 2)
@@ -110,11 +112,10 @@ def _number(environ: Mapping[str, str], name: str) -> Optional[float]:
     text = environ.get(name, "").strip()
     if not text:
         return None
-    try:
-        value = float(text)
-    except ValueError:
+    value = number_text.parse(text)
+    if value is None:
         raise GeometryError(f"{MAKE_VARIABLE[name]}={text!r} ({name}) is not a number "
-                            "(degrees)") from None
+                            f"in degrees: give {number_text.SYNTAX}")
     return value
 
 

@@ -17,6 +17,8 @@ import os
 import re
 from typing import Dict, Mapping, Tuple
 
+from mlgshimmy.shared import number_text
+
 ENV_SET = "MLG_SET"
 HEADER = os.path.join(os.path.dirname(__file__), "..", "..", "..", "c", "mlg_parameters.h")
 TABLES = ("MLG_CONTINUATION_PARAMETERS", "MLG_SWITCHES", "MLG_CONSTANTS")
@@ -60,10 +62,9 @@ def known() -> Dict[str, str]:
 
 
 def _number(entry: str, text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise OverlayError(f"SET: {entry!r}: {text!r} is not a number") from None
+    value = number_text.parse(text)
+    if value is None:
+        raise OverlayError(f"SET: {entry!r}: {text!r} is not a number: give {number_text.SYNTAX}")
     if not math.isfinite(value):
         raise OverlayError(f"SET: {entry!r}: the value must be finite")
     return value + 0.0       # -0 is 0

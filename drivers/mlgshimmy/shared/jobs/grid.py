@@ -25,7 +25,7 @@ import os
 import shlex
 import sys
 
-from mlgshimmy.shared import paths
+from mlgshimmy.shared import number_text, paths
 from mlgshimmy.shared.jobs import cache
 from mlgshimmy.shared.jobs.atomic import write_json
 from mlgshimmy.shared.jobs.cli import job_line
@@ -50,11 +50,11 @@ class GridError(ValueError):
 
 
 def _number(item, text, variable, unit):
-    try:
-        value = float(item)
-    except ValueError:
+    value = number_text.parse(item)
+    if value is None:
         raise GridError(f"{variable}={text!r}: {item.strip()!r} is not a number "
-                        f"(give comma-separated {unit}, or start:stop:step)") from None
+                        f"(give comma-separated {unit}, or start:stop:step; each "
+                        f"{number_text.SYNTAX})")
     if not math.isfinite(value):
         raise GridError(f"{variable}={text!r}: {item.strip()!r} is not finite")
     return value
