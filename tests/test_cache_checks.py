@@ -62,6 +62,19 @@ def test_a_nan_is_refused_on_write(root):
     assert jobs.read("figZ")["numbers"]["H1 [m/s]"] == 1.458     # the old result stays
 
 
+def test_a_nan_is_refused_on_read(root):
+    """A NaN stored with a matching checksum (written by hand or an older
+    writer) was read and printed as "Hopf at V = nan m/s"."""
+    stored = json.loads(result(root).read_text())
+    stored["data"]["numbers"]["H1 [m/s]"] = float("nan")
+    stored["sha256"] = jobs.cache.checksum(stored["data"])
+    result(root).write_text(json.dumps(stored))
+    with pytest.raises(jobs.BadResult) as error:
+        jobs.read("figZ")
+    assert str(error.value) == (f"figZ: {result(root)} holds a NaN at data['numbers']['H1 [m/s]'], "
+                                "which no result may; remove it and run `make figZ`")
+
+
 def test_the_plot_step_says_one_line(tmp_path):
     env = dict(os.environ, MLG_RUN_ROOT=str(tmp_path))
     subprocess.run([sys.executable, "-m", "mlgshimmy.figures.fig07", "--compute"], env=env,

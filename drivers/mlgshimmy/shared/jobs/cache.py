@@ -185,7 +185,7 @@ def _made_for(stored: dict) -> Optional["gear.Gear"]:
 def read(figure: str, part: Optional[str] = None, root: Optional[str] = None,
          model: Optional["gear.Gear"] = None) -> Any:
     """The data of a figure's cached result (or of one part of it), checked:
-    whole JSON, the figure's and the part's names, the checksum, and the
+    whole JSON, the figure's and the part's names, the checksum, no NaN, and the
     gear it was made for: this process's (gear.current()), or `model`
     (e.g. the paper's gear, gear.Gear(), for a result read from the
     baseline's root).  A file that fails raises BadResult naming it, both
@@ -207,6 +207,11 @@ def read(figure: str, part: Optional[str] = None, root: Optional[str] = None,
                         f"{stored.get('part')!r}, not {figure!r} part {part!r}; {remedy}")
     if stored.get("sha256") != checksum(stored["data"]):
         raise BadResult(f"{figure}: {where} fails its checksum (edited or damaged); {remedy}")
+    # write refuses a NaN; one here (a checksum recomputed by hand, an older
+    # writer) would be drawn and printed as a number
+    nan = _not_a_number(stored["data"])
+    if nan:
+        raise BadResult(f"{figure}: {where} holds a NaN at {nan}, which no result may; {remedy}")
     wanted, made = model or gear.current(), _made_for(stored)
     if made != wanted:
         def name(g):
