@@ -125,6 +125,10 @@ def test_status_against_the_printed_digits(printed, ours, expected):
 def test_calibrated_value_and_tables(tmp_path, monkeypatch):
     monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
     assert paper.status("fig07", "H, F* = 1 [m/s]", 346.1, 346.1000001) == "calibrated"
+    # 15 % off the value it was fitted to: no longer "calibrated"
+    assert paper.status("fig07", "H, F* = 1 [m/s]", 346.1, 346.1 * 1.15) == "off its calibration"
+    assert paper.status("fig07", "H, F* = 1 [m/s]", 346.1, 346.16) == "off its calibration"
+    assert paper.status("fig07", "H, F* = 1 [m/s]", 346.1, 346.14) == "calibrated"
     text = paper.report("fig10", {"H1 [m/s]": 1.45816, "extra": 2.0}, {"H1 [m/s]": 0.77})
     assert text.splitlines()[1].split() == ["quantity", "paper", "ours", "(figures)", "ours",
                                             "(table)", "rel.", "error", "status"]

@@ -50,13 +50,17 @@ def printed_precision(value):
 
 def status(figure, quantity, printed, ours):
     """How ours compares with the printed value: "calibrated" (the
-    parameter set was fitted to it), "agrees" (within the printed digits),
-    "close" (relative error up to CLOSE), "off", or "missing"."""
+    parameter set was fitted to it, and ours agrees with it within the
+    printed digits), "off its calibration" (fitted to it, but ours no
+    longer agrees: a changed model or parameter set), "agrees" (within the
+    printed digits), "close" (relative error up to CLOSE), "off", or
+    "missing"."""
     if ours is None or not numpy.isfinite(ours):
         return "missing"
+    agrees = abs(ours - printed) <= printed_precision(printed) * (1 + 1e-9)
     if (figure, quantity) in CALIBRATED:
-        return "calibrated"
-    if abs(ours - printed) <= printed_precision(printed) * (1 + 1e-9):
+        return "calibrated" if agrees else "off its calibration"
+    if agrees:
         return "agrees"
     return "close" if abs(ours - printed) <= CLOSE * abs(printed) else "off"
 
