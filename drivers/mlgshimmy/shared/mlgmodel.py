@@ -147,6 +147,9 @@ class Model:
             f", {k}={v!r}" for k, v in differ.items()) + ")"
 
     def _ref(self, name: str):
+        # ctypes cuts a name at a NUL: "V\0x" would be V
+        if "\0" in name:
+            raise KeyError(f"no parameter or constant named {name!r} (a name holds no NUL)")
         ref = library().mlg_param_ref(ctypes.byref(self._p), name.encode())
         if not ref:
             raise KeyError(f"no parameter or constant named {name!r}")
@@ -156,17 +159,24 @@ class Model:
         return self._ref(name)[0]
 
     def set(self, **values: float) -> "Model":
-        """Set parameters by name (not validated: see check()). One part of
-        epsilon without the other sets the other to 0."""
+        """Set parameters by name, each a finite number (ranges are not
+        validated: see check()). One part of epsilon without the other sets
+        the other to 0."""
         given = [part for part in _EPSILON_PARTS if part in values]
         if len(given) == 1:
             values = dict(values, **{part: 0.0 for part in _EPSILON_PARTS if part not in given})
         for name, value in values.items():
             ref = self._ref(name)
             try:
-                ref[0] = float(value)
+                number = float(value)
             except (TypeError, ValueError):
                 raise ValueError(f"parameter {name} = {value!r} is not a number") from None
+            except OverflowError:
+                raise ValueError(f"parameter {name} is beyond the range of a double "
+                                 "(|value| < 1.8e308)") from None
+            if not numpy.isfinite(number):
+                raise ValueError(f"parameter {name} = {number!r} is not finite")
+            ref[0] = number
         return self
 
     def constants(self) -> Dict[str, float]:
