@@ -257,3 +257,22 @@ def test_command_line_a_corrupt_reference_exits_2_naming_it(work):
     bad, path = damaged_copy(work, "garbage")
     status, out = cli("--runs", RUN, "--", bad, REFERENCE)
     assert status == 2 and path in out, out
+
+
+def test_command_line_two_runs_of_ones_own_need_no_manifest(work):
+    """docs/regression.md: any two directories of b-files; the first is the
+    baseline and only its b-files are compared.  It demanded a MANIFEST."""
+    mine = copy_reference(work, "mine")
+    far = far_copy(work)
+    shutil.copy(os.path.join(REFERENCE, "b.eq_F1"), far)      # a run the baseline has not
+    status, out = cli(mine, mine)
+    assert status == 0 and "agree (5 labelled points, 55 values" in out, out
+    status, out = cli(mine, far)
+    assert status == 1 and "freq" in out and "eq_F1" not in out, out
+
+
+def test_a_reference_set_without_its_manifest_is_still_refused(work, monkeypatch):
+    monkeypatch.setattr(cd, "REFERENCE_ROOT", work)
+    mine = copy_reference(work, "unlisted")
+    with pytest.raises(cd.DiagramFileError, match=r"unlisted/MANIFEST: missing"):
+        cd.compare_dirs(mine, mine)

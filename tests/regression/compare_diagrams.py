@@ -6,7 +6,9 @@
 (run with /usr/bin/python3 or $PYTHON from the Makefile; AUTO_DIR as for the drivers)
 
 The reference set is checked against its MANIFEST first (reference_set.py: a
-file missing, extra or changed is an error naming it). Then every run of the
+file missing, extra or changed is an error naming it); a REFERENCE_DIR outside
+tests/reference/ without a MANIFEST (a run of one's own) has its b-files
+compared, and RUN_DIR's other b-files are not. Then every run of the
 set, subdirectories included (b.<name>, zero/b.<name>, ...; or only the
 --runs names), is read with AUTO's own reader (auto.parseB) and compared
 with the same path under RUN_DIR, and every b-file under RUN_DIR must have a
@@ -363,8 +365,24 @@ def b_file(directory, run):
     return os.path.join(directory, os.path.dirname(run), f"b.{os.path.basename(run)}")
 
 
+def is_reference_set(directory):
+    """A set under tests/reference/, or any directory with a MANIFEST; any
+    other directory is a run of one's own compared as the baseline
+    (docs/regression.md)."""
+    root = os.path.realpath(REFERENCE_ROOT)
+    return os.path.commonpath([os.path.realpath(directory), root]) == root or \
+        os.path.exists(os.path.join(directory, reference_set.MANIFEST))
+
+
 def run_names(reference_dir):
-    """The runs of a reference set, after checking it against its MANIFEST."""
+    """The runs of a reference set, after checking it against its MANIFEST;
+    of any other directory, its b-files."""
+    if not is_reference_set(reference_dir):
+        runs = sorted(map(reference_set.run_name, reference_set.run_files(reference_dir)))
+        if not runs:
+            raise DiagramFileError(f"{reference_dir}: no b-files to compare (and no "
+                                   f"{reference_set.MANIFEST}: not a reference set)")
+        return runs
     try:
         return reference_set.verify(reference_dir)
     except reference_set.SetError as exc:
@@ -445,7 +463,7 @@ def compare_dirs(reference_dir, run_dir, runs=None, rtol=None, atol=None, raw=Fa
     """Compare both directories run by run: the given runs, or (runs None)
     every run of the reference set (checked against its MANIFEST) and every
     b-file under run_dir that the set stores (runs.json), which must have a
-    reference.  None tolerances come
+    reference; or, reference_dir not a reference set, its b-files.  None tolerances come
     from tolerances(); raw compares every labelled point as stored (no
     labels.json rules)."""
     if not os.path.isdir(reference_dir):
@@ -459,7 +477,8 @@ def compare_dirs(reference_dir, run_dir, runs=None, rtol=None, atol=None, raw=Fa
                         default_atol if atol is None else atol,
                         [] if raw else ignore_rules(reference_dir),
                         os.path.join(reference_dir, LABEL_FILE))
-    if runs is None:
+    # a run of one's own as the baseline: its b-files alone (docs/regression.md)
+    if runs is None and is_reference_set(reference_dir):
         runs = run_names(reference_dir)
         try:
             written = reference_set.stored(reference_dir, map(reference_set.run_name,
@@ -469,6 +488,8 @@ def compare_dirs(reference_dir, run_dir, runs=None, rtol=None, atol=None, raw=Fa
         for run in sorted(set(written) - set(runs)):
             result.problems.append(f"{run}: written by the figure, not in the reference set "
                                    "(a new run: `make refs-<fig>` adds it)")
+    elif runs is None:
+        runs = run_names(reference_dir)
     for run in runs:
         result.files(run, b_file(reference_dir, run), b_file(run_dir, run))
     return result
