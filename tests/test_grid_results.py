@@ -12,6 +12,8 @@ import os
 import subprocess
 import sys
 
+import pytest
+
 from mlgshimmy.shared.jobs import grid
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -171,3 +173,31 @@ def test_a_staged_figure_prints_its_missing_parts_and_its_stages(tmp_path):
     assert "fig11: stage 2: 5 of 9 parts cached" in status.stdout
     assert f"missing  stage 2, index 6   {second[5]}: no " in status.stdout, status.stdout
     assert status.stdout.count("  missing  ") == 37
+
+
+def test_a_job_stopped_by_an_out_of_date_model_says_one_line(tmp_path, monkeypatch):
+    """mlg.exe older than its mlg.c (autoglue.check_prebuilt) ended a study's
+    job in a 30-line traceback; now one line naming the job, the file and
+    the make command that rebuilds it."""
+    from mlgshimmy.shared import autoglue, paths
+    from mlgshimmy.studies import sweep
+    (tmp_path / "auto" / "lib").mkdir(parents=True)
+    (tmp_path / "auto" / "lib" / "main.o").write_text("")
+    model = tmp_path / "models" / "mlg"
+    model.parent.mkdir()
+    for suffix, age in ((".o", 20), (".exe", 10), (".c", 0)):      # mlg.c edited last
+        path = model.parent / f"mlg{suffix}"
+        path.write_text("")
+        os.utime(path, (1e9 - age, 1e9 - age))
+    os.utime(tmp_path / "auto" / "lib" / "main.o", (1e9 - 30, 1e9 - 30))
+    monkeypatch.setenv("AUTO_DIR", str(tmp_path / "auto"))
+    monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
+    monkeypatch.setattr(sweep, "run_point", lambda name: autoglue.check_prebuilt(str(model)))
+    monkeypatch.setattr(sys, "argv", ["sweep", "point", "rho0_mu0", "--rho=0", "--mu=0"])
+    with pytest.raises(SystemExit) as stop:
+        sweep.main()
+    rel = os.path.relpath(f"{model}.exe", paths.ROOT)
+    assert stop.value.code == (
+        f"sweep: rho0_mu0: {model}.exe is out of date (older than mlg.c or AUTO's objects): "
+        f"run `make -C {paths.ROOT} {rel}` (the make target of a figure or study rebuilds it "
+        "too)")

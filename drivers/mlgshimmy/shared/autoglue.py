@@ -322,9 +322,13 @@ def check_prebuilt(model):
     if <model>.o or $AUTO_DIR/lib/*.o is newer; its link line has no room for
     our libraries, so executables built by the Makefile must be up to date.
     """
+    # the next step names the make target (build/models/mlg.exe), run from the checkout
+    rebuild = f"run `make -C {paths.ROOT} {os.path.relpath(model + '.exe', paths.ROOT)}` " \
+        "(the make target of a figure or study rebuilds it too)"
+
     def mtime(path):
         if not os.path.exists(path):
-            raise RunError(f"{path} is missing: build it with make")
+            raise RunError(f"{path} is missing: {rebuild}")
         return os.stat(path).st_mtime
 
     libdir = os.path.join(auto_dir(), "lib")
@@ -333,7 +337,8 @@ def check_prebuilt(model):
     exe = mtime(model + ".exe")
     obj = mtime(model + ".o")
     if mtime(model + ".c") > obj or max(map(mtime, auto_objects + [model + ".o"])) > exe:
-        raise RunError(f"{model}.exe is out of date: rebuild it with make")
+        raise RunError(f"{model}.exe is out of date (older than {os.path.basename(model)}.c or "
+                       f"AUTO's objects): {rebuild}")
 
 
 def special_points(bd):

@@ -336,8 +336,9 @@ def dispatch(tool, job_command, args, points, plane, axes, *, run_job, check, su
     those without a valid result), status (every point without one, with
     its index; exit 1 if any), summary (refused, listing them, while a point
     has no result or the results' provenances differ), and job_command NAME
-    (one job).  A missing or rejected job name (ValueError from run_job) ends
-    the process with a message naming it."""
+    (one job).  A missing or rejected job name (ValueError from run_job), or
+    a job that fails (RuntimeError: AUTO's, the model's), ends the process
+    with a message naming it."""
     module = f"mlgshimmy.studies.{tool}"
     missing_jobs = f"python3 -m {module} jobs --missing {axes}"
     if args.command == "targets":
@@ -393,3 +394,5 @@ def dispatch(tool, job_command, args, points, plane, axes, *, run_job, check, su
             run_job(args.name)
         except ValueError as exc:
             sys.exit(f"{tool}: {args.name} rejected: {exc}")
+        except RuntimeError as exc:     # autoglue.RunError (a failed run, mlg.exe out of date)
+            sys.exit(f"{tool}: {args.name}: {exc}")
