@@ -54,6 +54,47 @@ def test_a_bad_geometry_names_its_make_variable(environ, variable):
         geometry.from_environment(environ)
 
 
+def test_a_degenerate_side_stay_is_refused_in_degrees(tmp_path):
+    """RHO=89.999 was refused by the library, in radians, after make had
+    started the figure (and a figure with parts had made its directory)."""
+    with pytest.raises(geometry.GeometryError) as error:
+        geometry.from_environment({geometry.ENV_RHO: "89.999"})
+    assert str(error.value) == (
+        "RHO=89.999 MU=0: the side-stay angle p = 83 deg (docs/model.md 4.13) makes the gear "
+        "geometry degenerate (cos p ~ 0); give angles with |p| <= 81.89 deg")
+    proc = make("fig07", "RHO=89.999", MLG_RUN_ROOT=str(tmp_path))
+    assert proc.returncode != 0 and "p = 83 deg" in proc.stderr and "fig07" not in proc.stdout
+    assert os.listdir(tmp_path) == []
+
+
+@pytest.mark.parametrize("rho, mu", [(81.8, 0), (82, 0), (-82.1, 0), (0, 89), (60, 60),
+                                     (75, -40), (89.999, 0)])
+def test_the_degenerate_side_stay_is_the_librarys(rho, mu):
+    """The check in degrees refuses exactly what c/parameters.c does."""
+    try:
+        geometry.from_environment({geometry.ENV_RHO: str(rho), geometry.ENV_MU: str(mu)})
+        ours = None
+    except geometry.GeometryError as exc:
+        ours = str(exc)
+    try:
+        mlgmodel.Model("figures", rho=math.radians(rho), mu=math.radians(mu), eom_terms=2)
+        library = None
+    except ValueError as exc:
+        library = str(exc)
+    assert (ours is None) == (library is None), (ours, library)
+
+
+def test_a_rejected_gear_makes_no_directory(tmp_path):
+    """A figure with parts wrote its parts.mk into the gear's tree before the
+    gear was checked (k_tlk = -1 left build/gear/k_tlk_-1/fig11/)."""
+    proc = subprocess.run(["/usr/bin/python3", "-m", "mlgshimmy.figures.fig11", "rules"],
+                          cwd=ROOT, capture_output=True, text=True,
+                          env={**os.environ, "MLG_SET": "k_tlk=-1", "MLG_RUN_ROOT": str(tmp_path)})
+    assert proc.returncode == 1
+    assert proc.stderr == "fig11: SET='k_tlk=-1': parameter k_tlk = -1 N/m: stiffness must be > 0\n"
+    assert os.listdir(tmp_path) == []
+
+
 def test_parameters_tags_and_trees():
     g = geometry.Geometry(10, -20, 2)
     assert g.parameters() == {"rho": math.radians(10), "mu": math.radians(-20), "eom_terms": 2.0}

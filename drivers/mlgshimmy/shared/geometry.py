@@ -17,11 +17,13 @@ conserves energy at non-zero angles) when an angle is given, else to 0.
 y_tlk(): the torque-link apex deflection at a state, y_tlk = r_tlk(eta)
 (psi + beta sin p) (docs/model.md 8.1; c/freeplay.h).
 """
+import functools
 import math
 import os
+import re
 from typing import Dict, Mapping, Optional
 
-from mlgshimmy.shared import number_text
+from mlgshimmy.shared import number_text, overlay
 
 ENV_RHO, ENV_MU, ENV_EOM = "MLG_RHO_DEG", "MLG_MU_DEG", "MLG_EOM"
 MAKE_VARIABLE = {ENV_RHO: "RHO", ENV_MU: "MU", ENV_EOM: "EOM"}
@@ -32,6 +34,37 @@ KEYS = ("rho", "mu", "eom_terms")       # the model parameters a geometry sets
 
 class GeometryError(ValueError):
     """A geometry that is not one (the message names the make variable)."""
+
+
+# c/parameters.c's mlg_params_check: beyond |sin p| = 0.99 the geometry is
+# degenerate (cos p ~ 0, I_beta -> 0).  Checked here too, in degrees, so that
+# make refuses RHO/MU before any recipe runs (or directory is made).
+SIN_P_MAX = 0.99
+
+
+@functools.lru_cache(maxsize=1)
+def _phi0() -> float:
+    """The rake phi0 [rad] of c/mlg_parameters.h (both parameter sets)."""
+    with open(overlay.HEADER) as f:
+        return float(re.search(r"X\(\s*phi0\s*,\s*([^,]+),", f.read()).group(1))
+
+
+def _sin_p(rho_deg: float, mu_deg: float) -> float:
+    """sin p, p the side-stay angle (docs/model.md 4.13), at the rake phi0."""
+    rho, mu, phi0 = math.radians(rho_deg), math.radians(mu_deg), _phi0()
+    return math.sin(rho) * math.cos(phi0) - math.cos(rho) * math.sin(mu) * math.sin(phi0)
+
+
+def _check_side_stay(g: "Geometry") -> None:
+    """GeometryError in degrees, naming RHO and MU, where the library would
+    refuse the angles (for make's RHO and MU: from_environment)."""
+    sp = _sin_p(g.rho_deg, g.mu_deg)
+    if abs(sp) > SIN_P_MAX:
+        raise GeometryError(
+            f"RHO={g.rho_deg:g} MU={g.mu_deg:g}: the side-stay angle p = "
+            f"{math.degrees(math.asin(max(-1.0, min(1.0, sp)))):.4g} deg (docs/model.md "
+            f"4.13) makes the gear geometry degenerate (cos p ~ 0); give angles with "
+            f"|p| <= {math.degrees(math.asin(SIN_P_MAX)):.4g} deg")
 
 
 def _name(value: float) -> str:
@@ -131,7 +164,9 @@ def from_environment(environ: Mapping[str, str] = os.environ) -> Geometry:
         eom = int(eom_text)
     else:
         eom = EOM_WITH_ANGLES if (rho is not None or mu is not None) else 0
-    return Geometry(rho or 0.0, mu or 0.0, eom)
+    g = Geometry(rho or 0.0, mu or 0.0, eom)
+    _check_side_stay(g)
+    return g
 
 
 V_FROM = 0.5    # m/s, continuation.V_MIN: where runs along V start with side-stay angles

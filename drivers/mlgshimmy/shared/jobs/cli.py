@@ -8,7 +8,7 @@ import sys
 import time
 from typing import Callable, Optional, Sequence
 
-from mlgshimmy.shared import gear, paths
+from mlgshimmy.shared import gear, mlgmodel, paths
 from mlgshimmy.shared.jobs import cache
 from mlgshimmy.shared.jobs.atomic import write_text
 from mlgshimmy.shared.jobs.parts import Parts, rules_path
@@ -100,6 +100,13 @@ def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[C
     args = parser.parse_args(argv)
     both = not (args.compute or args.plot or getattr(args, "part", None))
     try:
+        # before anything is written: a rejected gear (a SET out of range)
+        # stops here naming it and leaves no directory of its tree.  `rules` in
+        # a dry run before the library is built (make -n in a fresh clone) has
+        # nothing to check with: --compute checks when it runs
+        computes = args.command is None and (getattr(args, "part", None) or args.compute or both)
+        if computes or (args.command == "rules" and os.path.exists(mlgmodel.LIBRARY)):
+            gear.check()
         jobs = Parts(figure, parts(), parameter_set) if parts else None
         if args.command == "parts":
             print(" ".join(jobs.jobs))
@@ -126,8 +133,6 @@ def run_figure(figure: str, compute: Callable, plot: Callable, parts: Optional[C
                          "--stage K --missing` prints the jobs of stage K's")
             print(f"{figure}: every part is cached")
             return
-        if getattr(args, "part", None) or args.compute or both:
-            gear.check()       # a SET out of range stops here, naming it
         if getattr(args, "part", None):
             jobs.compute(args.part, alone=True)
         if args.compute or both:
