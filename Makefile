@@ -161,6 +161,6 @@ clean:
 distclean:
 	rm -rf build
 
-# Cluster submissions (docs/cluster.md): make submit-<fig>, submit-sweep, submit-atlas;
+# Cluster submissions (docs/cluster.md): make submit-<fig>, submit-sweep, submit-atlas, ...;
 # read last, after the figures and grids it submits are defined.
 -include mk/cluster/submit.mk

@@ -54,6 +54,11 @@ Regression and benchmarks
   bench                      15 s  the benchmark programs
   bench-figures            25 min  make -j1 figures against make -j2 figures
 
+Cluster (docs/cluster.md): SCHEDULER=slurm|parallel, SUBMIT_ARGS, SUBMIT_OPTIONS
+  submit-<fig>                1 s  a figure: fig11, fig13, fig14, fig16 part by part, others as one job
+  submit-sweep, submit-atlas  1 s  a study's grid, a job per point, then its summary
+  submit-design-map, submit-robustness  1 s  the same for these grids
+
 C library and AUTO-07p (docs/c-library.md, docs/auto-workflow.md)
   build/lib/libmlg.so        15 s  the model library (and build/lib/libmlg.a)
   install                    15 s  headers, libraries, mlg.pc into $(DESTDIR)$(PREFIX)

@@ -4,9 +4,12 @@ commands of a staged pipeline (--dry-run), stages from a command, and its refusa
 import json
 import os
 import re
+import shutil
 import stat
 import subprocess
 import sys
+
+import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WRAPPER = os.path.join(ROOT, "mk", "cluster", "array-task.sh")
@@ -270,3 +273,37 @@ def test_a_21_by_21_design_map_is_441_job_lines(tmp_path):
     lines = listed.stdout.splitlines()
     assert listed.returncode == 0 and len(lines) == 441, listed.stderr
     assert len(set(lines)) == 441 and all("design_map" in line for line in lines), lines[:2]
+
+
+def test_a_figure_without_parts_is_submitted_as_one_job(tmp_path):
+    """make submit-fig10 said only "No rule to make target": a figure without
+    parts is one job, `make <fig>`, with the gear as make read it."""
+    plain = make_dry_run("submit-fig10")
+    assert plain.returncode == 0, plain.stderr
+    assert "set -eo pipefail; printf '%s\\n' 'make --no-print-directory AUTO_THREADS=1 fig10 ' | " \
+        in plain.stdout, plain.stdout
+    assert "--name fig10 --stage -" in plain.stdout
+    gear = make_dry_run("submit-fig10", "SET=k_tlk=3.51e7")
+    assert "fig10 RHO='\\''0'\\'' MU='\\''0'\\'' EOM='\\''0'\\'' SET='\\''k_tlk=3.51e7'\\'''" \
+        in gear.stdout, gear.stdout
+    other = subprocess.run(["make", "--no-print-directory", "submit-fig99"], cwd=ROOT,
+                           capture_output=True, text=True, timeout=120,
+                           env={k: v for k, v in os.environ.items() if k not in
+                                ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "MAKEOVERRIDES")})
+    assert other.returncode != 0
+    assert other.stderr.startswith("submit-fig99: nothing of that name can be submitted; the "
+                                   "submit targets are submit-fig11 "), other.stderr
+    assert "submit-fig10" in other.stderr and "submit-sweep" in other.stderr
+
+
+def test_a_figure_without_parts_runs_as_one_job_under_parallel(tmp_path):
+    if shutil.which("parallel") is None:
+        pytest.skip("GNU parallel is not installed (tests/test_cluster_parallel.py installs it)")
+    environment = {k: v for k, v in os.environ.items()
+                   if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "MAKEOVERRIDES")}
+    proc = subprocess.run(["make", "--no-print-directory", "submit-fig06", "SCHEDULER=parallel",
+                           f"MLG_RUN_ROOT={tmp_path}", f"SUBMIT_ARGS=--out {tmp_path}/out"],
+                          cwd=ROOT, env=environment, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+    assert "stage 1: 1 COMPLETED" in proc.stdout and "everything completed" in proc.stdout
+    assert (tmp_path / "figures" / "fig06.png").stat().st_size > 10000

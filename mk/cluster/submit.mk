@@ -3,7 +3,9 @@
 #
 #   make submit-<fig> [SCHEDULER=slurm|parallel]   a staged figure (fig11 fig13 fig14
 #                                                   fig16): its parts stage after stage,
-#                                                   then `make <fig>` assembles and draws
+#                                                   then `make <fig>` assembles and draws;
+#                                                   any other figure: one job, `make <fig>`
+#                                                   (with the RHO, MU, EOM, SET given)
 #   make submit-sweep [SWEEP_RHO=... SWEEP_MU=...]  the side-stay sweep, then its summary
 #   make submit-atlas [ATLAS_V=... ATLAS_FSTAR=...] the atlas, then its summary
 #   make submit-design-map [DESIGN_RHO=... DESIGN_MU=...]  the design map, then its summary
@@ -47,8 +49,11 @@ SUBMIT_PREREQUISITES := setup $(MLG_MODEL).exe $(MLG_SHARED) $(MLG_SIMULATE)
 SUBMIT_PY = PYTHONPATH=$(call shell_quote,$(CURDIR)/drivers) $(PYTHON)
 SUBMIT_MAKE = make --no-print-directory AUTO_THREADS=$(AUTO_THREADS)
 
-.PHONY: $(addprefix submit-,$(FIGURES_WITH_PARTS)) submit-sweep submit-atlas submit-design-map \
-        submit-robustness
+# the figures without parts: one job each
+SUBMIT_WHOLE := $(filter-out $(FIGURES_WITH_PARTS),$(FIGURES))
+SUBMIT_GRIDS := sweep atlas design-map robustness
+SUBMIT_TARGETS := $(addprefix submit-,$(FIGURES_WITH_PARTS) $(SUBMIT_WHOLE) $(SUBMIT_GRIDS))
+.PHONY: $(SUBMIT_TARGETS)
 # the figure says how many stages it has (`stages`), so an empty `jobs --missing`
 # stage does not end the list
 $(addprefix submit-,$(FIGURES_WITH_PARTS)): submit-%: $(SUBMIT_PREREQUISITES)
@@ -56,6 +61,20 @@ $(addprefix submit-,$(FIGURES_WITH_PARTS)): submit-%: $(SUBMIT_PREREQUISITES)
 	$(SUBMIT) --name $* --stages "$$stages" \
 	    --stages-from $(call shell_quote,$(PYTHON) -m mlgshimmy.figures.$* jobs --stage {k} $(SUBMIT_MISSING)) \
 	    --assemble $(call shell_quote,$(SUBMIT_MAKE) $*) $(SUBMIT_AFTER)
+
+# the job carries the gear as mk/gear.mk read it (the task's make may not inherit
+# the submitting shell's environment)
+SUBMIT_GEAR = $(if $(GEAR_GIVEN),RHO=$(call shell_quote,$(MLG_RHO_DEG)) \
+    MU=$(call shell_quote,$(MLG_MU_DEG)) EOM=$(call shell_quote,$(MLG_EOM)) \
+    SET=$(call shell_quote,$(SET)))
+$(addprefix submit-,$(SUBMIT_WHOLE)): submit-%: $(SUBMIT_PREREQUISITES)
+	set -eo pipefail; printf '%s\n' $(call shell_quote,$(SUBMIT_MAKE) $* $(SUBMIT_GEAR)) | \
+	    $(SUBMIT) --name $* --stage - $(SUBMIT_AFTER)
+
+# anything else named submit-*: one line saying what can be submitted
+submit-%:
+	@set -e; echo "submit-$*: nothing of that name can be submitted; the submit targets are" \
+	    "$(SUBMIT_TARGETS) (make help)" >&2; exit 1
 
 SWEEP_GRID_ARGS = --rho=$(call shell_quote,$(SWEEP_RHO)) --mu=$(call shell_quote,$(SWEEP_MU))
 # submit-<target>: a job grid (shared.jobs.grid) of the study <module>, its axes in the
