@@ -12,10 +12,19 @@ $(eval $(call auto_equations,$(MLG_MODEL),models/mlg.c,$(MLG_LIB),-I$(CURDIR)/c)
 # AUTO's link line; run() and @r then find both up to date and use them.
 # Should they relink (an AUTO newer than mlg.exe, mlg.exe deleted), their
 # own link line works, since mlg.o holds the library. Rerun make demo after
-# editing mlg.c there, or after AUTO's cl() / @cl (they delete *.o, *.exe).
+# AUTO's cl() / @cl (they delete *.o, *.exe).
+#
+# @r (cmds.make) recompiles an edited mlg.c with AUTO's flags alone, which fails
+# on c/'s headers, and (cmds.make has .IGNORE) then ran the old mlg.exe. So
+# auto.env sets MAKEFILES to mlg.mk, which gives cmds.make's make in this
+# directory a rule for mlg.o: this make's, with the library; cmds.make then
+# links mlg.exe with its own line. If the build fails the rule removes mlg.o
+# and mlg.exe, so that nothing old runs. (AUTO's Python run() compiles without
+# make: it stops at the compiler's error itself.)
 DEMO_DIR ?= build/demo
 DEMO := $(patsubst %/,%,$(DEMO_DIR))
-DEMO_FILES := $(addprefix $(DEMO)/,mlg.c mlg.o mlg.exe c.mlg mlg.auto auto.env)
+DEMO_FILES := $(addprefix $(DEMO)/,mlg.c mlg.o mlg.exe c.mlg mlg.auto mlg.mk auto.env)
+DEMO_ABS := $(abspath $(DEMO))
 
 $(DEMO)/mlg.c: models/mlg.c
 $(DEMO)/c.mlg: constants/c.mlg
@@ -36,11 +45,23 @@ $(DEMO)/mlg.exe: $(DEMO)/mlg.o $(wildcard $(AUTO_DIR)/lib/*.o) $(AUTO_QUIET_FPE)
 	$(AUTO_FC) -L$(AUTO_DIR)/lib $(AUTO_FFLAGS) $(AUTO_OPT) $< -o $@ \
 	    $(AUTO_DIR)/lib/*.o -lauto_c $(AUTO_QUIET_LDFLAGS)
 
+$(DEMO)/mlg.mk: models/models.mk
+	@mkdir -p $(@D)
+	@printf '%s\n' \
+	    "# Read by every GNU make of a shell that sourced auto.env (MAKEFILES); it acts" \
+	    "# only in AUTO's cmds.make for mlg here (@r mlg). Written by make demo (models/models.mk)." \
+	    "# MAKEFLAGS: not cmds.make's -i (.IGNORE), which would hide a failed build." \
+	    "ifeq (\$$(CURDIR) \$$(EQUATION_NAME),$(DEMO_ABS) mlg)" \
+	    "mlg.o: mlg.c" \
+	    "	@MAKEFILES= MAKEFLAGS= MFLAGS= \$$(MAKE) --no-print-directory -C $(CURDIR) AUTO_DIR=$(AUTO_DIR) DEMO_DIR=$(DEMO_ABS) $(DEMO_ABS)/mlg.o || \\" \
+	    "	{ rm -f mlg.o mlg.exe; echo \"@r mlg: mlg.c does not build with the model library (above): mlg.o and mlg.exe removed, so that no old executable runs; fix mlg.c and run it again\" >&2; exit 1; }" \
+	    "endif" > $@
+
 # auto.env: AUTO_DIR and PATH for AUTO's commands, as AUTO's own
 # cmds/auto.env.sh sets them, plus .bin/ with `auto` (AUTO's launcher, or
 # Debian's auto-07p) and the `python`/`python3` it runs: $(PYTHON), which
 # has numpy. OMP_NUM_THREADS as the drivers' (AUTO_THREADS): results depend on it.
-$(DEMO)/auto.env: $(AUTO_USED) | auto
+$(DEMO)/auto.env: $(AUTO_USED) models/models.mk | auto
 	@mkdir -p $(@D)/.bin
 	@set -e; launcher=$(AUTO_DIR)/bin/auto; [ -x "$$launcher" ] || launcher=$$(command -v auto-07p) || \
 	    { echo "demo: no AUTO launcher ($(AUTO_DIR)/bin/auto or auto-07p)" >&2; exit 1; }; \
@@ -54,7 +75,8 @@ $(DEMO)/auto.env: $(AUTO_USED) | auto
 	    "AUTO_DIR=$(AUTO_DIR)" \
 	    "PATH=$(abspath $(DEMO))/.bin:\$$AUTO_DIR/cmds:\$$PATH" \
 	    "OMP_NUM_THREADS=$(AUTO_THREADS)   # one thread, as the drivers: results depend on it" \
-	    "export AUTO_DIR PATH OMP_NUM_THREADS" > $@
+	    "MAKEFILES=$(DEMO_ABS)/mlg.mk   # @r mlg rebuilds an edited mlg.c with the library" \
+	    "export AUTO_DIR PATH OMP_NUM_THREADS MAKEFILES" > $@
 	@echo "demo: wrote $@ (AUTO_DIR=$(AUTO_DIR))"
 
 .PHONY: demo

@@ -95,3 +95,31 @@ def test_c_mlg_keeps_dsmax_near_2():
     straight rolling in V."""
     text = (ROOT / "constants" / "c.mlg").read_text()
     assert float(re.search(r"DSMAX\s*=\s*([0-9.eE+-]+)", text).group(1)) <= 2.0
+
+
+def test_at_r_rebuilds_an_edited_mlg_c_or_runs_nothing(tmp_path):
+    """@r mlg after editing mlg.c: AUTO's cmds.make compiled it alone, failed
+    on mlg_model.h and (its .IGNORE) ran the old mlg.exe.  Now it is built with
+    the library (mlg.mk, through MAKEFILES in auto.env); a broken mlg.c
+    removes mlg.o and mlg.exe, so that nothing old runs."""
+    where = tmp_path / "demo"
+    proc = subprocess.run(["make", "--no-print-directory", "demo", f"DEMO_DIR={where}"],
+                          cwd=ROOT, env=clean_env(), capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    source = where / "mlg.c"
+    before = built(where)
+    source.write_text(source.read_text().replace("p.V = 50.0;", "p.V = 60.0;"))
+    os.utime(source, ns=(before["mlg.o"] + 10**9,) * 2)      # edited after make demo
+    status, out = in_demo(where, "@r mlg")
+    assert status == 0, out
+    assert "No such file" not in out and "(ignored)" not in out, out
+    assert all(built(where)[name] > before[name] for name in before), out
+    first = points(where / "fort.7")[0]
+    assert first[:3] == (1, EP, 1) and first[3] == 60.0, first      # the edited STPNT ran
+    # a broken mlg.c: the build fails, said in one line, and no executable runs
+    source.write_text(source.read_text().replace("p.V = 60.0;", "p.V = 60.0 +;"))
+    (where / "fort.7").unlink()
+    status, out = in_demo(where, "@r mlg")
+    assert "@r mlg: mlg.c does not build with the model library (above): mlg.o and mlg.exe " \
+        "removed, so that no old executable runs; fix mlg.c and run it again" in out, out
+    assert not (where / "mlg.exe").exists() and not (where / "fort.7").exists(), out
