@@ -50,17 +50,25 @@ export REGRESS_QUICK REGRESS_FIGURES
 # stops the recipe with its own message; nothing runs with an empty $scratch.
 private_run = mkdir -p $(1); scratch=$$(mktemp -d $(abspath $(1))/.$(2).XXXXXX); \
     $(3) --no-print-directory MLG_RUN_ROOT=$$scratch MLG_BASE_RUN_ROOT=$$scratch \
-      $(2) $(REGRESS_WITH_$(2)) || \
+      $(2) $(REGRESS_WITH_$(2)) & $(wait_forwarding) || \
       { echo "$(2): failed; its runs are kept in $$scratch" >&2; $(4); }; \
-    runs=$$scratch$(if $(GEAR_SUBDIR),/$(GEAR_SUBDIR))
+    trap - TERM INT HUP; runs=$$scratch$(if $(GEAR_SUBDIR),/$(GEAR_SUBDIR))
+
+# Shell code after `<sub-make> &`: wait for it, its exit status; a TERM, INT or
+# HUP to the recipe's shell reaches it as TERM.  bash runs no trap while a
+# child runs in the foreground and passes it no signal, so an interrupted
+# make left the sub-make and its driver running.  (Run in the background,
+# the sub-make ignores a terminal's INT: it gets the TERM instead.)
+wait_forwarding = child=$$!; \
+    trap "kill -TERM $$child 2>/dev/null; wait $$child; exit 143" TERM INT HUP; wait $$child
 
 .PHONY: regress refs
 regress: setup
 	@set -e; if [ -z "$(strip $(REGRESS_FIGURES))" ]; then \
 	    echo "regress: no figures are registered (REGRESS_FIGURES is empty)"; exit 1; fi
 	@set -e; failed=; for fig in $(REGRESS_FIGURES); do \
-	    $(MAKE) --no-print-directory regress-$$fig || failed="$$failed $$fig"; \
-	done; \
+	    $(MAKE) --no-print-directory regress-$$fig & $(wait_forwarding) || failed="$$failed $$fig"; \
+	done; trap - TERM INT HUP; \
 	if [ -n "$$failed" ]; then echo "regress: DIFFERENT or failed:$$failed"; exit 1; fi; \
 	echo "regress: $(strip $(REGRESS_FIGURES)) agree with tests/reference/"
 
@@ -95,7 +103,8 @@ regress-%: setup
 	echo "regress-$*: runs in $(REGRESS_ROOT)/$*/"; exit $$status
 
 refs: setup
-	@set -e; for fig in $(REGRESS_FIGURES); do $(MAKE) --no-print-directory refs-$$fig; done
+	@set -e; for fig in $(REGRESS_FIGURES); do \
+	    $(MAKE) --no-print-directory refs-$$fig & $(wait_forwarding); done
 
 refs-%: setup
 	$(if $(GEAR_SUBDIR),$(error refs-$*: reference sets are made at the paper's gear; run it without RHO, MU, EOM or SET))

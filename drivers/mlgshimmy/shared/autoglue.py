@@ -12,7 +12,9 @@ gives numpy >= 1.24 the `numpy.bool` AUTO 0.9.2 still uses, and sets the
 OpenMP thread count of the AUTO runs this process starts to
 MLG_AUTO_THREADS (1 unless set: more threads change AUTO's rounding, and a
 fold curve of Fig. 11 then stops at a run-dependent point; an inherited
-OMP_NUM_THREADS is not used).  A missing AUTO raises AutoMissing.
+OMP_NUM_THREADS is not used), and has SIGTERM and SIGHUP stop the AUTO
+executable with the process (shared.children).  A missing AUTO raises
+AutoMissing.
 
 The CPU guards of the runs known to stall (run(time_limit=...): Fig. 11's
 FOLD_TIME_LIMIT, shared.torus's CURVE_TIME_LIMIT, 120 s each) are scaled
@@ -39,7 +41,7 @@ from typing import Any, Callable, List, Optional, Sequence, Union
 
 import numpy
 
-from mlgshimmy.shared import branches, paths
+from mlgshimmy.shared import branches, children, paths
 from mlgshimmy.shared.jobs import locks
 
 
@@ -103,6 +105,7 @@ def init():
     """AUTO's Python package, imported once (see the module's text)."""
     global _auto
     cpu_guard_scale()   # a bad value stops the job before its first run, not at a guard
+    children.stop_with_this_process()   # a make interrupted leaves no mlg.exe running
     if _auto is None:
         where = auto_dir()
         if not os.path.isdir(os.path.join(where, "python", "auto")):
@@ -389,12 +392,10 @@ class _CPULimit:
             signal.setitimer(signal.ITIMER_REAL, 0)
 
     def _check(self, signum, frame):
-        for entry in os.listdir("/proc"):
+        for pid in children.of_this_process():
             try:
-                with open(f"/proc/{entry}/stat") as stat:
-                    parent = int(stat.read().rsplit(")", 1)[1].split()[1])
-                if parent == os.getpid() and _cpu_seconds(entry) > self.seconds:
-                    os.kill(int(entry), signal.SIGKILL)
+                if _cpu_seconds(pid) > self.seconds:
+                    os.kill(pid, signal.SIGKILL)
                     self.fired = True
             except (OSError, ValueError, IndexError):
                 continue

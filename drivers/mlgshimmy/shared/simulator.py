@@ -8,7 +8,7 @@ Python: the one place that runs it and reads its summary.
 import os
 import subprocess
 
-from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import children, mlgmodel
 from mlgshimmy.shared import paths
 
 SIMULATOR = os.path.join(paths.BUILD, "bin", "mlg_simulate")
@@ -32,6 +32,7 @@ def run(csv, *args, params=None):
     command = [SIMULATOR, *map(str, args)] + (["--out", csv] if csv else [])
     for name, value in (params or {}).items():
         command += ["--param", f"{name}={value}"]
+    children.stop_with_this_process()   # a make interrupted leaves no simulator running
     return subprocess.run(command, capture_output=True, text=True)
 
 
