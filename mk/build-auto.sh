@@ -29,9 +29,19 @@ fetch_debian_source() {
             sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources > "$src_list"
         fi
         apt-get update
-        # The .debian.tar.xz may be unavailable; the .orig.tar.gz and .dsc are what we need.
-        (cd "$download" && apt-get source --download-only auto-07p) || \
-            echo "build-auto: apt-get source exited non-zero; checking what arrived"
+        # Only the .dsc and the .orig tarball are used; the Debian diff
+        # (.debian.tar.xz) is often gone from the mirror, and apt's "E: Failed to
+        # fetch ... 404" for it read as fatal: its output goes to a log, shown
+        # only when what is needed did not arrive.
+        local log=$download/apt-get-source.log
+        if ! (cd "$download" && apt-get source --download-only auto-07p) >"$log" 2>&1; then
+            if ls "$download"/auto-07p_*.dsc "$download"/auto-07p_*.orig.tar.* >/dev/null 2>&1; then
+                echo "build-auto: the .dsc and .orig tarball arrived, not all of the Debian source package (the Debian diff is not needed here; apt-get's output: $log)"
+            else
+                cat "$log" >&2
+                die "apt-get source auto-07p did not download the .dsc and .orig tarball (its output above, and in $log)"
+            fi
+        fi
     fi
     local dsc orig
     dsc=$(ls "$download"/auto-07p_*.dsc 2>/dev/null | head -n1) || true
