@@ -107,7 +107,7 @@ refs: setup
 	    $(MAKE) --no-print-directory refs-$$fig & $(wait_forwarding); done
 
 refs-%: setup
-	$(if $(GEAR_SUBDIR),$(error refs-$*: reference sets are made at the paper's gear; run it without RHO, MU, EOM or SET))
+	$(if $(GEAR_SUBDIR),$(error refs-$*: reference sets are made at the paper's gear: run it without RHO, MU, EOM or SET))
 	@set -e; $(call private_run,$(REFS_ROOT),$*,$(MAKE),exit 1); \
 	$(PYTHON) $(REFERENCE_SET) replace $* $$scratch/$* || \
 	    { echo "refs-$*: $(REFERENCE_ROOT)/$* left as it was; runs in $$scratch" >&2; exit 1; }; \
