@@ -24,7 +24,7 @@ import subprocess
 import sys
 import time
 
-from mlgshimmy.shared import gear, mlgmodel, overlay, paths
+from mlgshimmy.shared import children, gear, mlgmodel, overlay, paths
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared.jobs import grid as jobgrid
 from mlgshimmy.shared.jobs.atomic import write_text
@@ -110,6 +110,7 @@ def make_target(target, model, log):
            if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "MLG_SET", "MLG_RHO_DEG",
                         "MLG_MU_DEG", "MLG_EOM")}
     env["MLG_RUN_ROOT"] = gear.base_root()
+    children.stop_with_this_process()     # a stopped job stops its make too
     started = time.monotonic()
     with open(log, "a") as out:
         status = subprocess.run(["make", "--no-print-directory", target, *args], cwd=paths.ROOT,
