@@ -276,3 +276,13 @@ def test_a_reference_set_without_its_manifest_is_still_refused(work, monkeypatch
     mine = copy_reference(work, "unlisted")
     with pytest.raises(cd.DiagramFileError, match=r"unlisted/MANIFEST: missing"):
         cd.compare_dirs(mine, mine)
+
+
+def test_a_tolerance_carries_its_reason(tmp_path):
+    """tolerances.json may say why a set is looser ("reason", a text), and
+    nothing else besides rtol and atol."""
+    (tmp_path / "tolerances.json").write_text('{"rtol": 2e-4, "reason": "why"}')
+    assert cd.tolerances(str(tmp_path)) == (2e-4, cd.ATOL)
+    (tmp_path / "tolerances.json").write_text('{"rtol": 2e-4, "reason": 3}')
+    with pytest.raises(cd.SettingsError, match="'reason' must be a text"):
+        cd.tolerances(str(tmp_path))

@@ -36,7 +36,7 @@ branch, the size of the motion it is the mean of (rounding noise of 1e-8 rad
 is no change; an offset of a thousandth of the amplitude is).
 
 The defaults rtol = 1e-5 and atol = 1e-10 can be set for one figure in
-REFERENCE_DIR/tolerances.json ({"rtol": 1e-4, "atol": 1e-8}); command-line
+REFERENCE_DIR/tolerances.json ({"rtol": 1e-4, "atol": 1e-8, "reason": "why"}); command-line
 options override both. REFERENCE_DIR/labels.json lists labelled points whose
 position is numerically arbitrary, with the reason; they are left out of
 both sides:
@@ -448,10 +448,12 @@ def tolerances(reference_dir):
         raise SettingsError(f"{path}: expected {{\"rtol\": R, \"atol\": A}} ({exc})") from exc
     if not isinstance(values, dict):
         raise SettingsError(f"{path}: expected {{\"rtol\": R, \"atol\": A}}, got {values!r}")
-    unknown = sorted(set(values) - {"rtol", "atol"})
+    unknown = sorted(set(values) - {"rtol", "atol", "reason"})
     if unknown:
         raise SettingsError(f"{path}: unknown key(s) {', '.join(map(repr, unknown))} "
-                            "(known: rtol, atol)")
+                            "(known: rtol, atol, reason)")
+    if not isinstance(values.pop("reason", ""), str):
+        raise SettingsError(f"{path}: 'reason' must be a text")
     for key, value in values.items():
         if isinstance(value, bool) or not isinstance(value, (int, float)) \
                 or not (math.isfinite(value) and value >= 0):
