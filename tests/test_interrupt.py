@@ -11,24 +11,21 @@ import time
 
 import pytest
 
+from mlgshimmy.shared import children
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def session(sid):
     """[(pid, command)] of the living processes of session sid (no zombies)."""
     found = []
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
+    for pid in children.living(lambda fields: int(fields[3]) == sid):
         try:
-            with open(f"/proc/{entry}/stat") as stat:
-                fields = stat.read().rsplit(")", 1)[1].split()
-            with open(f"/proc/{entry}/cmdline", "rb") as cmdline:
+            with open(f"/proc/{pid}/cmdline", "rb") as cmdline:
                 command = cmdline.read().replace(b"\0", b" ").decode(errors="replace")
         except OSError:
             continue
-        if int(fields[3]) == sid and fields[0] != "Z":
-            found.append((int(entry), command.strip()))
+        found.append((pid, command.strip()))
     return found
 
 

@@ -10,13 +10,14 @@ then ends this process by that signal as before.
 import os
 import signal
 import threading
-from typing import List
+from typing import Callable, List
 
 STOPPING = (signal.SIGTERM, signal.SIGHUP)
 
 
-def of_this_process() -> List[int]:
-    """The pids of this process's living children."""
+def living(where: Callable[[List[str]], bool]) -> List[int]:
+    """The pids of the living processes (no zombies) whose /proc/<pid>/stat
+    fields after the command (state, ppid, pgrp, session, ...) satisfy where."""
     found = []
     for entry in os.listdir("/proc"):
         if not entry.isdigit():
@@ -26,9 +27,14 @@ def of_this_process() -> List[int]:
                 fields = stat.read().rsplit(")", 1)[1].split()
         except OSError:
             continue
-        if int(fields[1]) == os.getpid() and fields[0] != "Z":
+        if fields[0] != "Z" and where(fields):
             found.append(int(entry))
     return found
+
+
+def of_this_process() -> List[int]:
+    """The pids of this process's living children."""
+    return living(lambda fields: int(fields[1]) == os.getpid())
 
 
 def _stop(signum, frame):
