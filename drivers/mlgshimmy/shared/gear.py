@@ -100,10 +100,6 @@ class Gear:
         return cls(geometry.Geometry(record["rho_deg"], record["mu_deg"], record["eom_terms"]),
                    tuple(record["set"].items()))
 
-    def mirror(self) -> "Gear":
-        return Gear(self.geometry.mirror(), self.overlay)
-
-
 def from_environment(environ=os.environ) -> Gear:
     """The gear MLG_RHO_DEG, MLG_MU_DEG, MLG_EOM and MLG_SET name;
     GeometryError or OverlayError naming the make variable."""

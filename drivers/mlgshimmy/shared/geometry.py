@@ -29,7 +29,6 @@ ENV_RHO, ENV_MU, ENV_EOM = "MLG_RHO_DEG", "MLG_MU_DEG", "MLG_EOM"
 MAKE_VARIABLE = {ENV_RHO: "RHO", ENV_MU: "MU", ENV_EOM: "EOM"}
 EOM_LEVELS = (0, 1, 2)
 EOM_WITH_ANGLES = 2
-KEYS = ("rho", "mu", "eom_terms")       # the model parameters a geometry sets
 
 
 class GeometryError(ValueError):
