@@ -8,8 +8,11 @@
  *
  * Bad starting parameters end the run: one message on stderr naming the
  * parameter and exit status 1 (AUTO's Python interface raises).  Later, a
- * continuation step that leaves the domain is answered with a huge residual,
- * without a message, so that AUTO shortens its step (MX if it persists). */
+ * continuation step that leaves the domain is answered with a large finite
+ * residual, without a message, so that AUTO shortens its step (MX if it
+ * persists).  A non-finite solution that AUTO accepts anyway ends the run at
+ * once, naming where (pvls). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,9 +29,20 @@ static void start_failed(int started, const char *what, const char *why)
     exit(1);
 }
 
-static void reject(integer ndim, doublereal *f)
+/* A step outside the domain: a residual that is large but finite, with the
+ * identity as its Jacobian, so that each Newton iterate moves every state by
+ * -REJECTED, out of the domain again, and AUTO's iteration fails, which halves
+ * the step.  Overflow here would give NaN, which AUTO's convergence test
+ * takes as converged (every comparison with NaN is false). */
+#define REJECTED 1e10
+static void reject(integer ndim, integer ijac, doublereal *f, doublereal *dfdu,
+                   doublereal *dfdp)
 {
-    for (integer i = 0; i < ndim; i++) f[i] = 1e30;
+    for (integer i = 0; i < ndim; i++) f[i] = REJECTED;
+    if (ijac == 0) return;
+    for (integer k = 0; k < ndim * ndim; k++) dfdu[k] = k % (ndim + 1) == 0 ? 1.0 : 0.0;
+    if (ijac == 1) return;
+    for (integer k = 0; k < ndim * MLG_NPAR; k++) dfdp[k] = 0.0;
 }
 
 /* The constants for PAR(15): the `table` values, overridden by the file
@@ -81,7 +95,7 @@ int func(integer ndim, const doublereal *u, const integer *icp, const doublereal
     const char *invalid = parameters_for(par, &p);
     if (invalid) {
         start_failed(started, "invalid starting parameters", invalid);
-        reject(ndim, f);
+        reject(ndim, ijac, f, dfdu, dfdp);
         return 0;
     }
     double J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
@@ -90,7 +104,7 @@ int func(integer ndim, const doublereal *u, const integer *icp, const doublereal
     if (status != MLG_OK) {
         start_failed(started, "starting point outside the model's domain",
                      mlg_status_text(status));
-        reject(ndim, f);
+        reject(ndim, ijac, f, dfdu, dfdp);
         return 0;
     }
     started = 1;
@@ -132,8 +146,20 @@ static doublereal measure(enum measure_kind kind, int state, const doublereal *u
     return 0.0;
 }
 
+/* Exit status of a run stopped at a non-finite solution (drivers read it
+ * from the log line, shared/autoglue.py NON_FINITE) */
+#define NON_FINITE_EXIT 3
+
 int pvls(integer ndim, const doublereal *u, doublereal *par)
 {
+    for (integer i = 1; i <= ndim; i++) {
+        if (!isfinite(getp("NRM", i, u))) {
+            fprintf(stderr, "mlg: non-finite solution (component %ld) at V = %g m/s, "
+                    "F* = %g: run stopped\n", (long)i, par[MLG_PAR_V],
+                    par[MLG_PAR_Fstar]);
+            exit(NON_FINITE_EXIT);
+        }
+    }
     int k = MLG_MEASURES_FIRST_PAR - 1;
 #define X(name, kind, state, unit, doc) par[k++] = measure(kind, state, u, par);
     MLG_MEASURES(X)

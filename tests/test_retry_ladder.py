@@ -28,7 +28,8 @@ def OWN():
     return {"DS": 0.05, "DSMIN": 1e-5, "DSMAX": 1.0, "NTST": 80}
 
 
-MX = autoglue.RunError("run po3 in x: no convergence (MX) at branch -2 label 4")
+MX = autoglue.RunError("run po3 in x: no convergence (MX) at branch -2 label 4",
+                       kind=autoglue.MX)
 
 
 def test_the_first_rung_that_completes_is_kept():
@@ -43,8 +44,37 @@ def test_every_rung_stopping_raises_the_first_stop():
     with pytest.raises(autoglue.RunError) as error:
         continuation.with_ladder(attempt, OWN, "po3")
     assert error.value is MX and len(calls) == 1 + len(continuation.LADDER)
-    assert calls[-1][1] == {"NTST": 160, "DS": pytest.approx(0.005),
+    assert calls[-2][1] == {"NTST": 160, "DS": pytest.approx(0.005),
                             "DSMIN": pytest.approx(1e-9), "DSMAX": pytest.approx(0.5)}
+    assert calls[-1][1] == {"NTST": 400}
+
+
+def test_a_non_finite_stop_goes_up_the_ladder_too():
+    stop = autoglue.RunError("run fold1- in x: non-finite solution (component 3) at V = -0.4 "
+                             "m/s, F* = 2.27: run stopped", kind=autoglue.NON_FINITE)
+    attempt, calls = attempts([stop, "smaller steps"])
+    assert continuation.with_ladder(attempt, OWN, "fold1-") == "smaller steps"
+    assert len(calls) == 2
+
+
+def test_keep_last_keeps_the_last_rung_and_reports_it(capsys):
+    errors = []
+    for rung in range(1 + len(continuation.LADDER)):
+        error = autoglue.RunError(f"run fold1- in x: no convergence (MX) at V = {300 + rung}",
+                                  kind=autoglue.MX)
+        error.diagram = f"diagram of attempt {rung}"
+        errors.append(error)
+    attempt, calls = attempts(errors)
+    kept = continuation.with_ladder(attempt, OWN, "fold1-", keep_last=True)
+    assert kept == f"diagram of attempt {len(continuation.LADDER)}"
+    assert "REPORTED: run fold1- in x: no convergence (MX) at V = 304 with every rung" \
+        in capsys.readouterr().out
+
+
+def test_a_rung_costs_its_mesh_times_its_steps():
+    assert continuation.rung_cost(OWN(), {"DS": 0.005}) == 1.0
+    assert continuation.rung_cost(OWN(), {"NTST": 400}) == 5.0
+    assert continuation.rung_cost(OWN(), {"NTST": 160, "DSMAX": 0.5}) == 4.0
 
 
 def test_other_errors_and_allowed_stops_are_not_retried():

@@ -135,16 +135,38 @@ def _import_package(name: str, parent: str):
     return module
 
 
+MX, NON_FINITE = "MX", "non-finite"   # RunError.kind of a run that did not converge
+
+
 class RunError(RuntimeError):
     """An AUTO run that failed, did not converge or missed a special point.
-    str() ends with the tail of the run's log; .brief is the first line."""
+    str() ends with the tail of the run's log; .brief is the first line;
+    .kind is MX (a branch ends with no convergence), NON_FINITE (the model
+    stopped the run at a non-finite solution, models/mlg.c) or None."""
 
-    def __init__(self, message, log=None):
+    def __init__(self, message, log=None, kind=None):
         self.brief = message
+        self.kind = kind
         if log:
             message += f"\n  log {log}, last lines:\n" + "".join(
                 f"    | {line}" for line in tail(log))
         super().__init__(message)
+
+    @property
+    def unconverged(self) -> bool:
+        """Whether AUTO's iteration failed (a smaller step or a finer mesh
+        may succeed: continuation.with_ladder)."""
+        return self.kind in (MX, NON_FINITE)
+
+
+# the line models/mlg.c writes before it stops a run at a non-finite solution
+NON_FINITE_LINE = "mlg: non-finite solution"
+
+
+def non_finite_stop(log):
+    """The model's line saying it stopped the run at a non-finite solution
+    (stripped), or None."""
+    return next((line.strip() for line in tail(log, 40) if NON_FINITE_LINE in line), None)
 
 
 def tail(path, lines=15):
@@ -446,7 +468,12 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
         why = (f"killed by its CPU guard after {guard:g} s of CPU time ({time_limit:g} s x "
                f"{CPU_GUARD_SCALE_ENV}={cpu_guard_scale():g}; raise {CPU_GUARD_SCALE_ENV} "
                "on a slow node)" if limit.fired else exc)
-        PROGRESS.step(rundir, name, time.monotonic() - started, "FAILED")
+        stop = None if limit.fired else non_finite_stop(log)
+        PROGRESS.step(rundir, name, time.monotonic() - started,
+                      "stopped at a non-finite solution" if stop else "FAILED")
+        if stop:
+            raise RunError(f"run {name} in {rundir}: {stop.removeprefix('mlg: ')}", log,
+                           NON_FINITE) from exc
         raise RunError(f"run {name} in {rundir}: AUTO stopped ({why})", log) from exc
     finally:
         os.chdir(cwd)
@@ -459,11 +486,11 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
     try:
         check_diagram(bd, f"run {name} in {rundir}", expect)
     except RunError as exc:
-        if not (allow_mx and "(MX)" in str(exc)):
+        if not (allow_mx and exc.kind == MX):
             # an MX is the caller's to judge (continuation.with_ladder retries it)
-            word = "stops with no convergence (MX)" if "(MX)" in str(exc) else "FAILED"
+            word = "stops with no convergence (MX)" if exc.kind == MX else "FAILED"
             PROGRESS.step(rundir, name, time.monotonic() - started, word)
-            raise RunError(str(exc), log) from None
+            raise RunError(exc.brief, log, exc.kind) from None
         status = "done, ends in MX (kept up to there, as allowed)"
     PROGRESS.step(rundir, name, time.monotonic() - started, status)
     return bd
@@ -565,12 +592,12 @@ def check_diagram(bd, what, expect=()):
     for branch in bd:
         if not numpy.all(numpy.isfinite(branch.coordarray)):
             raise RunError(f"{what}: non-finite values on branch {branch.BR} "
-                           "(AUTO continued past a rejected step)")
+                           "(AUTO continued past a rejected step)", kind=NON_FINITE)
     points = special_points(bd)
     mx = [(br, lab) for br, lab, ty in points if ty == "MX"]
     if mx:
         raise RunError(f"{what}: no convergence (MX) at "
-                       + ", ".join(f"branch {br} label {lab}" for br, lab in mx))
+                       + ", ".join(f"branch {br} label {lab}" for br, lab in mx), kind=MX)
     found = {ty for _, _, ty in points}
     missing = [ty for ty in expect if ty not in found]
     if missing:

@@ -86,30 +86,47 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
     """autoglue.run on the MLG model: the base constants, then the run-type
     file constants/runs/c.<kind> if given, then the overlay file
     constants/runs/c.<overlay> if given, then the keyword overrides.  A run
-    that stops with MX where that is an error goes up the retry ladder
-    (with_ladder); with allow_mx it is kept as it ends; with allow_mx=EDGE
-    an MX that ends the branch (ends_branch: a wheel lifts off, or the
-    orbits shrink onto straight rolling) is kept and any other goes up the
-    ladder."""
+    that does not converge (MX, or the model stops it at a non-finite
+    solution) where that is an error goes up the retry ladder
+    (with_ladder), its time_limit scaled by each rung's cost; with
+    allow_mx=True it is kept as it ends; with allow_mx=Ends(...) an MX
+    that the Ends explains is kept and any other goes up the ladder
+    (EDGE: the ends of the model's domain and of the orbits)."""
     files = [CONSTANTS] + [os.path.join(RUN_CONSTANTS, f"c.{k}") for k in (kind, overlay) if k]
     rundir = autoglue.claim(rundir)           # emptied on first use: claim, then write
     mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
-
-    edge = kw.get("allow_mx") == EDGE
-
-    def attempt(mx, **rung):
-        bd = autoglue.run(rundir, name, constants=files, e=MODEL,
-                          **{**kw, "allow_mx": mx or edge, **rung})
-        numerical = [p for p in bd("MX") if not ends_branch(p, kw["ICP"][0])]
-        if edge and numerical and not mx:
-            raise autoglue.RunError(f"run {name} in {rundir}: no convergence (MX) at "
-                                    f"{numerical[0]['V']:.6g} m/s, inside the model's domain")
-        return bd
+    ends = kw["allow_mx"] if isinstance(kw.get("allow_mx"), Ends) else None
 
     def own():
         merged = autoglue.read_constants(files)
         return {key: kw.get(key, merged[key]) for key in STEP_CONSTANTS}
-    return with_ladder(attempt, own, f"run {name}", keep_mx=kw.get("allow_mx") is True)
+
+    def attempt(mx, **rung):
+        options = {**kw, "allow_mx": mx or ends is not None, **rung}
+        if rung and kw.get("time_limit"):
+            options["time_limit"] = kw["time_limit"] * rung_cost(own(), rung)
+        bd = autoglue.run(rundir, name, constants=files, e=MODEL, **options)
+        stops = [p for p in bd("MX") if not ends.explains(p, kw["ICP"][0])] if ends else []
+        if stops and not mx:
+            error = autoglue.RunError(
+                f"run {name} in {rundir}: no convergence (MX) at {kw['ICP'][0]} = "
+                f"{stops[0][kw['ICP'][0]]:.6g}, {ends.unexplained}", kind=autoglue.MX)
+            error.diagram = bd
+            raise error
+        return bd
+    return with_ladder(attempt, own, f"run {name}", keep_mx=kw.get("allow_mx") is True,
+                       keep_last=ends is not None and ends.keep)
+
+
+def reported(what: str, make, errors=(autoglue.RunError,)):
+    """make() (a run or a curve), or None with one REPORTED line naming
+    `what` and why when it fails: a figure draws the curves it has and says
+    which it left out."""
+    try:
+        return make()
+    except errors as exc:
+        print(f"REPORTED: {what} left out: {getattr(exc, 'brief', exc)}", flush=True)
+        return None
 
 
 def load(rundir: str, name: str):
@@ -123,7 +140,7 @@ def load(rundir: str, name: str):
     try:
         autoglue.check_diagram(bd, f"run {name} in {rundir}")
     except autoglue.RunError as exc:
-        if "(MX)" not in str(exc):
+        if exc.kind != autoglue.MX:
             raise
     return bd
 
@@ -269,13 +286,30 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
 # made again from the same start; the first rung that ends without MX is
 # kept.  Smaller steps first (a sharp fold, a switch or a nearly degenerate
 # point needs them), then a finer mesh (an orbit whose profile steepens),
-# then both.  A run from a Hopf point has no other end to restart from.
+# then both, then a much finer mesh (at rho = mu = 10 deg Fig. 11's 42 Hz
+# fold curve turns in V at (473.79 m/s, F* = 0.981) only with NTST = 400).
+# A run from a Hopf point has no other end to restart from.
 LADDER = (("smaller steps", {"DS": 0.1, "DSMIN": 1e-4}),
           ("a finer mesh", {"NTST": 2.0}),
           ("a finer mesh and smaller steps", {"NTST": 2.0, "DS": 0.1, "DSMIN": 1e-4,
-                                              "DSMAX": 0.5}))
+                                              "DSMAX": 0.5}),
+          ("a five times finer mesh", {"NTST": 5.0}))
 STEP_CONSTANTS = ("DS", "DSMIN", "DSMAX", "NTST")
-EDGE = "edge"       # run(allow_mx=EDGE): an MX kept only where it ends the branch (ends_branch)
+
+
+class Ends:
+    """run(allow_mx=Ends(explains, unexplained, keep)): an MX point p where
+    explains(p, parameter) holds is an end of the branch and kept; any other
+    sends the run up the LADDER.  If every rung stops where nothing
+    explains it, RunError, or with keep the last rung's run is kept and the
+    stop reported (a figure draws what it has and says so)."""
+
+    def __init__(self, explains, unexplained: str, keep: bool = False):
+        self.explains, self.unexplained, self.keep = explains, unexplained, keep
+
+
+# an MX kept only where it ends the branch (ends_branch)
+EDGE = Ends(ends_branch, "inside the model's domain")
 
 
 def rung_constants(own, factors):
@@ -288,32 +322,47 @@ def rung_constants(own, factors):
     return out
 
 
-def with_ladder(attempt, own, what, keep_mx=False):
+def rung_cost(own, rung):
+    """How many times its own run a rung costs: collocation work grows
+    with NTST, the number of steps with 1/DSMAX."""
+    return (rung.get("NTST", own["NTST"]) / own["NTST"]) * (own["DSMAX"]
+                                                            / rung.get("DSMAX", own["DSMAX"]))
+
+
+def with_ladder(attempt, own, what, keep_mx=False, keep_last=False):
     """attempt(mx, **constants) -> diagram; own() -> the run's own
     STEP_CONSTANTS.  With keep_mx (the caller draws a branch up to an MX
     and reports where it stopped) the run as given, MX allowed.  Else the
-    run as given, then up LADDER while it stops with MX; if every rung stops
-    too, the first RunError.  Other errors are raised."""
+    run as given, then up LADDER while it does not converge (RunError
+    .unconverged); if every rung fails too, the first RunError, or with
+    keep_last the last rung's diagram (the error's .diagram), reported.
+    Other errors are raised."""
     if keep_mx:
         return attempt(True)
     try:
         return attempt(False)
     except autoglue.RunError as exc:
-        if "(MX)" not in str(exc):
+        if not exc.unconverged:
             raise
         first = exc
     steps = own()
+    last = first
     for rung, factors in LADDER:
         constants = rung_constants(steps, factors)
         try:
             bd = attempt(False, **constants)
         except autoglue.RunError as exc:
-            if "(MX)" not in str(exc):
+            if not exc.unconverged:
                 raise
+            last = exc
             continue
         print(f"{what}: no convergence (MX) at first; complete with {rung} "
               f"({', '.join(f'{k} = {v:g}' for k, v in constants.items())})", flush=True)
         return bd
+    if keep_last and getattr(last, "diagram", None) is not None:
+        print(f"REPORTED: {last.brief} with every rung of the retry ladder; "
+              "kept up to there", flush=True)
+        return last.diagram
     raise first
 
 

@@ -1,13 +1,14 @@
 """Fig. 11's curves from the Fig. 10 special points at F* = 1: Hopf curves,
 folds of periodic orbits (and the upper fold curves started from the
 slices' folds), the pitchforks and the zero-freeplay Hopf curve."""
+import functools
+
 import numpy
 
 from mlgshimmy.figures.fig11.ends import SWITCH_WIDTHS, explained
 from mlgshimmy.figures.fig11.orbits import ROLLING, slice_rundir
 from mlgshimmy.figures.fig11.plane import (GEOMETRY, MODEL, F_MAX, F_MIN, SLICES, STOP, V_SCAN,
                                            on_curves)
-from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude
@@ -16,12 +17,6 @@ from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import stationary
 
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
-# A fold curve that AUTO stops (MX) where nothing explains it (ends.explained:
-# not inside the stage switch, not on the Hopf locus) is run again on this
-# finer mesh (the base constants' NTST is 80), FINE_COST times the time
-# limit: at rho = mu = 10 deg the 42 Hz fold curve turns in V at
-# (473.79 m/s, F* = 0.981), where NTST 80 and 160 stop and 400 turns.
-FINE_NTST, FINE_COST = 400, 5
 
 
 def hopf_curve(rundir, name, point, sign):
@@ -33,26 +28,26 @@ def hopf_curve(rundir, name, point, sign):
 
 
 def fold_curve(rundir, name, point, sign, **kw):
-    """A fold curve of Fig. 11 from the LP `point`, first step DS = 0.05 sign,
-    again on the mesh FINE_NTST (run <name>_fine) if it stops (MX) where
-    nothing explains it; the coarse run is kept if the fine one fails."""
-    options = {"stop": STOP, "DS": 0.05 * sign, "DSMAX": 1.0, "NMX": 400, "allow_mx": True, **kw}
-    coarse = ct.fold_curve(rundir, name, point, ("V", "Fstar"), **options)
-    stops = [{"V": p["V"], "Fstar": p["Fstar"], "curve": "fold"} for p in coarse("MX")]
-    if not stops or not explained(stops, stage_switch(), None)["open"]:
-        return coarse
-    print(f"fig11: {name} stops (MX) at V = {stops[-1]['V']:.4g}, F* = {stops[-1]['Fstar']:.4g}: "
-          f"again with NTST = {FINE_NTST}")
-    if "time_limit" in options:
-        options["time_limit"] *= FINE_COST
-    try:
-        return ct.fold_curve(rundir, f"{name}_fine", point, ("V", "Fstar"), NTST=FINE_NTST,
-                             **options)
-    except autoglue.RunError as exc:
-        print(f"REPORTED: {name}_fine failed ({exc.brief}); the run on the base mesh is kept")
-        return coarse
+    """A fold curve of Fig. 11 from the LP `point`, first step DS = 0.05
+    sign.  An MX end that nothing explains (ends.explained: not inside the
+    stage switch, not on the Hopf locus) sends it up the retry ladder
+    (continuation.LADDER); if every rung stops too, the last is kept and
+    the stop reported."""
+    return ct.fold_curve(rundir, name, point, ("V", "Fstar"), stop=STOP, DS=0.05 * sign,
+                         DSMAX=1.0, NMX=400, allow_mx=FOLD_ENDS, **kw)
 
 
+def fold_end_explained(point, _parameter):
+    """Whether a fold curve's MX point is an end ends.explained accounts for."""
+    stop = {"V": point["V"], "Fstar": point["Fstar"], "curve": "fold"}
+    return not explained([stop], stage_switch(), None)["open"]
+
+
+FOLD_ENDS = ct.Ends(fold_end_explained, "neither inside the stage switch nor on the Hopf "
+                    "locus", keep=True)
+
+
+@functools.lru_cache(maxsize=None)
 def stage_switch():
     """The stage-switch window of the plane's loads (ends.inside)."""
     return magnitude.stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
@@ -67,20 +62,25 @@ def curves(rundir, parameter_set="figures"):
     points = ct.hopf_points(rundir, "hb", parameter_set, "V", V_SCAN, Fstar=1.0, **MODEL)
     for k, point in enumerate(points):
         for sign in (1, -1):
-            out["hopf"].append(hopf_curve(rundir, f"hopf{k + 1}{'+-'[sign < 0]}", point, sign))
+            name = f"hopf{k + 1}{'+-'[sign < 0]}"
+            out["hopf"].append(ct.reported(f"fig11 {name}",
+                                           lambda: hopf_curve(rundir, name, point, sign)))
     # the fold S, located on an orbit run with the base step sizes (the fold
     # located on Fig. 10's finer-stepped run does not start the fold curve)
     high = ct.periodic_from(rundir, "po_fold", points[-1], stop={"V": [30.0, 200.0]},
                             NMX=400, expect=["LP"])
     for k, point in enumerate(high("LP")):
         for sign in (1, -1):
-            out["fold"].append(fold_curve(rundir, f"fold{k + 1}{'+-'[sign < 0]}", point, sign))
+            name = f"fold{k + 1}{'+-'[sign < 0]}"
+            out["fold"].append(ct.reported(f"fig11 {name}",
+                                           lambda: fold_curve(rundir, name, point, sign)))
     zero, = ct.hopf_points(rundir, "hb_zero", parameter_set, "V", V_SCAN, Fstar=1.0, yfp=0.0,
                            **GEOMETRY)
     for sign in (1, -1):
-        out["zero"].append(ct.hopf_curve(rundir, f"hopf_zero{'+-'[sign < 0]}", zero,
-                                         ("Fstar", "V"), stop=STOP, DS=0.02 * sign,
-                                         allow_mx=True))
+        name = f"hopf_zero{'+-'[sign < 0]}"
+        out["zero"].append(ct.reported(f"fig11 {name}", lambda: ct.hopf_curve(
+            rundir, name, zero, ("Fstar", "V"), stop=STOP, DS=0.02 * sign, allow_mx=True)))
+    out = {kind: [d for d in found if d is not None] for kind, found in out.items()}
     if not stationary.symmetric(MODEL):
         # the pitchforks are imperfect: the folds of the yawed states bound
         # where they exist (at every V: the states do not depend on it)
@@ -123,10 +123,9 @@ def upper_folds(rundir, first, folds):
         k += 1
         for sign in (1, -1):
             name = f"fold_upper{k}{'+-'[sign < 0]}"
-            try:
-                out.append(fold_curve(rundir, name, point, sign, time_limit=FOLD_TIME_LIMIT))
-            except autoglue.RunError as exc:
-                print(f"REPORTED: {name} left out: {exc.brief}")
+            curve = ct.reported(name, lambda: fold_curve(rundir, name, point, sign,
+                                                         time_limit=FOLD_TIME_LIMIT))
+            out += [] if curve is None else [curve]
     missed = [p for p in points if not (on_curves(p, first) or on_curves(p, out))]
     for p in missed:
         print(f"REPORTED: fig11 slice fold at V = {p['V']:.4g}, F* = {p['Fstar']:.4g} "
@@ -155,19 +154,14 @@ def slice_hopf(rundir, first, parameter_set="figures"):
             if on_curves(at, first) or on_curves(at, out):
                 continue
             k += 1
-            try:
-                point = ct.hopf_point(rundir, f"hb_slice{k}", parameter_set, "V", V,
-                                      state=state, Fstar=Fstar, **MODEL)
-            except autoglue.RunError as exc:
-                print(f"REPORTED: fig11 Hopf point at V = {V:.4g}, F* = {Fstar:.4g} "
-                      f"not located: {exc.brief}")
-                continue
-            for sign in (1, -1):
+            point = ct.reported(f"fig11 Hopf point at V = {V:.4g}, F* = {Fstar:.4g}",
+                                lambda: ct.hopf_point(rundir, f"hb_slice{k}", parameter_set,
+                                                      "V", V, state=state, Fstar=Fstar,
+                                                      **MODEL))
+            for sign in (1, -1) if point is not None else ():
                 name = f"hopf_slice{k}{'+-'[sign < 0]}"
-                try:
-                    out.append(hopf_curve(rundir, name, point, sign))
-                except autoglue.RunError as exc:
-                    print(f"REPORTED: {name} left out: {exc.brief}")
+                curve = ct.reported(name, lambda: hopf_curve(rundir, name, point, sign))
+                out += [] if curve is None else [curve]
     print(f"fig11: {k} Hopf curves started from the slices' Hopf points")
     return out
 
