@@ -64,6 +64,7 @@ import fnmatch
 import json
 import math
 import os
+import re
 import sys
 
 import numpy
@@ -77,7 +78,8 @@ except ImportError:   # exit status 2: nothing compared (1 would read "differ")
           f"PYTHONPATH={os.path.join(ROOT, 'drivers')} {sys.executable} {sys.argv[0]} ... "
           "(make does)", file=sys.stderr)
     sys.exit(2)
-import named_points  # noqa: E402  (this directory: run as a script, or pytest's pythonpath)
+import causes  # noqa: E402  (this directory: run as a script, or pytest's pythonpath)
+import named_points  # noqa: E402
 import reference_set  # noqa: E402
 
 REFERENCE_ROOT = os.path.join(ROOT, "tests", "reference")
@@ -160,6 +162,10 @@ def stability_text(branch, segs, limit=8):
     return ", ".join(parts)
 
 
+NOT_WRITTEN = "not written by the figure"
+PROBLEM_RUN = re.compile(r"(\S+?)(?: branch \d+)?: ")   # the run a problem's text names
+
+
 class Comparison:
     """Differences between two diagrams: structural problems (text), value
     rows (run, branch, label, type, column, reference, ours, rel. error) and
@@ -170,6 +176,7 @@ class Comparison:
         self.rtol, self.atol, self.ignore = rtol, atol, list(ignore)
         self.rules_file = rules_file
         self.problems, self.rows, self.special = [], [], []
+        self.reference = {}   # run -> the reference's branches (causes.starts)
         self.points = self.values = self.changes = 0
 
     def ok(self):
@@ -177,8 +184,9 @@ class Comparison:
 
     def files(self, run, ref_path, our_path):
         ref = read_branches(ref_path)
+        self.reference[run] = ref
         if not os.path.exists(our_path):
-            self.problems.append(f"{run}: not written by the figure ({our_path} missing)")
+            self.problems.append(f"{run}: {NOT_WRITTEN} ({our_path} missing)")
             return
         ours = read_branches(our_path)
         if len(ref) != len(ours):
@@ -346,8 +354,20 @@ class Comparison:
                          .rstrip())
         return lines
 
+    def structural(self):
+        """The structural problems, each change once with the problems that
+        follow from it indented under it (causes.fold)."""
+        problems = [(PROBLEM_RUN.match(p).group(1), p) for p in self.problems]
+        missing = {run for run, p in problems if NOT_WRITTEN in p}
+        lines = []
+        for _, own, follow in causes.fold(problems, causes.starts(self.reference,
+                                                                  labelled_points), missing):
+            lines += [f"  {p}" for p in own]
+            lines += [f"      which is why {p} ({why})" for _, p, why in follow]
+        return lines
+
     def report(self):
-        lines = self.summary() + [f"  {p}" for p in self.problems]
+        lines = self.summary() + self.structural()
         if self.rows:
             header = ("run", "BR", "LAB", "TY", "column", "reference", "ours", "rel. error")
             cells = [header] + [(run, str(br), str(lab), ty, col, f"{a:.10e}", f"{b:.10e}",
