@@ -315,6 +315,45 @@ def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
     return spectrum.growth(model, BANDS, u)
 
 
+def growth_at_speeds(Fstar, yfp, speeds, scaling="fixed", parameter_set="figures", **model):
+    """[growth at each of `speeds`] from one state of straight rolling
+    (it does not depend on V)."""
+    try:
+        u = rolling_state(Fstar, yfp, scaling, parameter_set, **model)
+    except rolling.NoRollingState:
+        return [{"any": numpy.inf, **{band: -numpy.inf for band in BANDS}, "real": numpy.inf}
+                for _ in speeds]
+    at = mlgmodel.Model(parameter_set, **values(scaling, yfp, Fstar, V=speeds[0]), **model)
+    jacobians = []
+    for V in speeds:
+        at.set(V=V)
+        at.check()
+        jacobians.append(at.jacobian(u))
+    return spectrum.growths(numpy.array(jacobians), BANDS)
+
+
+def first_crossing(Fstar, speeds, band, grid=KAPPA_GRID, **model):
+    """(y_fp, V): the least over `speeds` of the first y_fp at which `band`
+    changes stability (yfp_crossings with first_only at each speed; the
+    first speed of a tie), or (inf, None).  The grid is climbed once for
+    all speeds, and only the speeds that change in the first grid step
+    where any does are narrowed (spectrum.root to 1e-10 mm): the others'
+    first changes lie beyond it."""
+    rates = [g[band] for g in growth_at_speeds(Fstar, 0.0, speeds, **model)]
+    unstable = [V for V, rate in zip(speeds, rates) if rate > 0]
+    if unstable:   # unstable without freeplay
+        return 0.0, unstable[0]
+    for lo, hi in zip(numpy.r_[0.0, grid][:-1], grid):
+        above = [g[band] for g in growth_at_speeds(Fstar, hi, speeds, **model)]
+        changed = [k for k in range(len(speeds)) if (above[k] > 0) != (rates[k] > 0)]
+        if changed:
+            return min(((spectrum.root(lambda y, V=speeds[k]: growth(Fstar, y, V, **model)[band],
+                                       lo, hi, rates[k], above[k], tol=1e-10), speeds[k])
+                        for k in changed), key=lambda found: found[0])
+        rates = above
+    return numpy.inf, None
+
+
 def yfp_crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed", first_only=False, **model):
     """y_fp values where the growth of `band` changes sign along `grid`
     (bisection to 1e-10 mm); with first_only, only the first of them.  The
@@ -340,10 +379,13 @@ def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN
     sign = -1.0 if highest else 1.0
     best = (sign * numpy.inf, None)
     for _ in range(4):
-        for V in speeds:
-            found = yfp_crossings(Fstar, V, band, first_only=not highest, **model)
-            if found and sign * (found[-1] if highest else found[0]) < sign * best[0]:
-                best = (found[-1] if highest else found[0], V)
+        if not highest:
+            found = first_crossing(Fstar, speeds, band, **model)
+            best = found if found[0] < best[0] else best
+        for V in speeds if highest else ():
+            found = yfp_crossings(Fstar, V, band, **model)
+            if found and found[-1] > best[0]:
+                best = (found[-1], V)
         if not numpy.isfinite(best[0]):
             return best
         step = speeds[1] - speeds[0]

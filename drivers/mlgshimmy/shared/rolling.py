@@ -169,7 +169,8 @@ def _tangent(model: mlgmodel.Model, par: str, u: numpy.ndarray):
         return None
 
 
-_paths: Dict[tuple, List[Tuple[float, numpy.ndarray]]] = {}
+# per load and gear: the freeplays solved, in order, and their states
+_paths: Dict[tuple, Tuple[List[float], List[numpy.ndarray]]] = {}
 
 
 def _model(parameter_set, Fstar, yfp, epsilon, overrides):
@@ -186,18 +187,18 @@ def state(parameter_set: str, Fstar: float, yfp: float, epsilon: Dict[str, float
     ends first."""
     key = (parameter_set, float(Fstar), tuple(sorted(epsilon.items())),
            tuple(sorted(overrides.items())))
-    path = _paths.get(key)
-    if path is None:
+    if key not in _paths:
         u0 = _model(parameter_set, Fstar, 0.0, epsilon, key[3]).equilibrium()
-        path = _paths[key] = [(0.0, numpy.array([u0[n] for n in mlgmodel.UNAMES]))]
-    ys = [y for y, _ in path]
+        _paths[key] = ([0.0], [numpy.array([u0[n] for n in mlgmodel.UNAMES])])
+    ys, us = _paths[key]
     k = bisect.bisect_right(ys, yfp) - 1
-    y0, u0 = path[k]
+    y0, u0 = ys[k], us[k]
     if y0 != yfp:
         def model_at(y):
             return _model(parameter_set, Fstar, y, epsilon, key[3])
         found = follow(model_at, "yfp", y0, u0, float(yfp),
                        f"straight rolling from zero freeplay at F* = {Fstar:g}")
-        path[k + 1:k + 1] = found
-        u0 = found[-1][1]
+        ys[k + 1:k + 1] = [y for y, _ in found]
+        us[k + 1:k + 1] = [u for _, u in found]
+        u0 = us[k + len(found)]
     return dict(zip(mlgmodel.UNAMES, u0))

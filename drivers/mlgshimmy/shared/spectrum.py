@@ -40,6 +40,35 @@ def bisect(same_as_lo: Callable[[float], bool], lo: float, hi: float, tol: float
     return 0.5 * (lo + hi)
 
 
+def root(f: Callable[[float], float], lo: float, hi: float, f_lo: float, f_hi: float,
+         tol: float = 0.0, steps: int = 200) -> float:
+    """Where the continuous f changes sign (f > 0 against f <= 0) in
+    [lo, hi], f_lo and f_hi its values there: the bracket narrowed to tol
+    by regula falsi with the Illinois rule (the end that stays has its
+    value halved), with a halving step wherever a value is not finite or
+    three steps did not halve the bracket; its midpoint, as bisect gives
+    it, in far fewer evaluations of f."""
+    side, checkpoint = 0, hi - lo
+    for k in range(steps):
+        if hi - lo <= tol:
+            break
+        # every third step: a halving if the last three did not halve the bracket
+        slow = k % 3 == 2 and hi - lo > 0.5 * checkpoint
+        if k % 3 == 2:
+            checkpoint = hi - lo
+        secant = not slow and numpy.isfinite(f_lo) and numpy.isfinite(f_hi) and f_hi != f_lo
+        x = hi - f_hi * (hi - lo) / (f_hi - f_lo) if secant else 0.5 * (lo + hi)
+        x = min(max(x, lo + 0.25 * tol), hi - 0.25 * tol)
+        f_x = f(x)
+        if (f_x > 0) == (f_lo > 0):
+            lo, f_lo = x, f_x
+            f_hi, side = (0.5 * f_hi if side == -1 else f_hi), -1
+        else:
+            hi, f_hi = x, f_x
+            f_lo, side = (0.5 * f_lo if side == 1 else f_lo), 1
+    return 0.5 * (lo + hi)
+
+
 def _unstable(parameter_set, values, u=None):
     """(number of real, number of complex eigenvalues with Re > 0, eigenvalues)
     at the state u (default: the model's straight-rolling equilibrium)."""
@@ -102,12 +131,21 @@ def growth(model: mlgmodel.Model, bands: Dict[str, Tuple[float, float]],
     """{band: largest real part of the eigenvalues of straight rolling (or
     of the state u) whose frequency |Im|/2pi lies in (lo, hi]} for bands
     {name: (lo, hi)} (-inf if none), and "any": the largest of all."""
-    eig = eigenvalues(model, u)
+    u = model.equilibrium() if u is None else u
+    return growths(numpy.array(model.jacobian(u))[None], bands)[0]
+
+
+def growths(jacobians: numpy.ndarray, bands: Dict[str, Tuple[float, float]]) -> List[dict]:
+    """growth of each of a stack of Jacobians (k x NX x NX), their
+    eigenvalues in one call."""
+    eig = numpy.linalg.eigvals(jacobians)
     freq = numpy.abs(eig.imag) / (2 * numpy.pi)
-    out = {"any": float(eig.real.max())}
+    out = [{"any": float(e.real.max())} for e in eig]
     for band, (lo, hi) in bands.items():
         inside = (freq > lo) & (freq <= hi)
-        out[band] = float(eig.real[inside].max()) if inside.any() else -numpy.inf
+        rates = numpy.where(inside, eig.real, -numpy.inf).max(axis=1)
+        for row, rate in zip(out, rates):
+            row[band] = float(rate)
     return out
 
 
