@@ -61,7 +61,10 @@ TEST_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
 BENCH_PROGRAMS += tests/bench/bench_auto_jacobian.py
 BENCH_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
 
-# The figure-suite benchmark (-j1 against -j2, about 25 min on 2 idle cores; `make bench` names it).
-.PHONY: bench-figures
+# The figure-suite benchmark (-j1 against -j2, about 25 min on 2 idle cores; `make bench` names it),
+# then Fig. 11 and a design-map point at a side-stay geometry against the paper's gear (bench-gear).
+.PHONY: bench-figures bench-gear
 bench-figures: setup
 	$(PYTHON) tests/bench/bench_figures.py
+bench-gear: setup
+	$(PYTHON) tests/bench/bench_figures.py --gear-rows

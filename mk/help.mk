@@ -52,7 +52,9 @@ Regression and benchmarks
   fig12_rho10_mu10           20 s  Fig. 12 at rho = mu = 10 deg, EOM 2, for its reference set
   refs, refs-<fig>                 regenerate reference sets, deliberately (as regress)
   bench                      15 s  the benchmark programs
-  bench-figures            25 min  make -j1 figures against make -j2 figures
+  bench-figures            70 min  make -j1 figures against -j2; Fig. 11 and a design-map
+                                   point at RHO=15 MU=-5 against the paper's gear
+  bench-gear               45 min  only those last rows
 
 Cluster (docs/cluster.md): SCHEDULER=slurm|parallel, SUBMIT_ARGS, SUBMIT_OPTIONS
   submit-<fig>                1 s  a figure: fig11, fig13, fig14, fig16 part by part, others as one job

@@ -8,6 +8,11 @@ idle; `--compare-only` repeats the comparison of the last two suites, and
 `--compare ROOT1 ROOT2` compares any two run roots (e.g. a suite before and
 after a change).
 
+Then the rows of a gear against the paper's, measured in the same session
+(`--gear-rows` makes only these): `make -j2 fig11` from scratch, wall and
+CPU seconds, at the paper's gear and at GEAR; and one design-map point's
+CPU seconds (studies.design_map.compute, by stage) at both.
+
 The parallel work is the parts of Figs. 11, 13, 14 and 16 and the figures
 themselves; with more cores the wall time is bounded by the longest single
 part chain (Fig. 11's assembly after its slowest slice, Fig. 16's fold-seed
@@ -16,6 +21,7 @@ part), so it levels off at a few minutes beyond about 8 cores.
 import json
 import math
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -37,6 +43,59 @@ def suite(jobs):
     if proc.returncode != 0:
         sys.exit(f"bench_figures: make -j{jobs} figures failed (log {log.name})")
     return seconds, run_root
+
+
+GEAR = {"RHO": "15", "MU": "-5"}   # a side-stay geometry no driver was tuned at
+DESIGN_POINT = """
+import json, sys, tempfile
+from mlgshimmy.studies import design_map
+out = design_map.compute(float(sys.argv[1]), float(sys.argv[2]), tempfile.mkdtemp(dir=sys.argv[3]))
+print(json.dumps(out["cpu_seconds"]))
+"""
+
+
+def timed(argv, env):
+    """(wall seconds, CPU seconds of it and its children, exit status) of a command."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    started = time.monotonic()
+    proc = subprocess.run(argv, cwd=ROOT, env=env, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, text=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return time.monotonic() - started, cpu, proc
+
+
+def gear_rows():
+    """Fig. 11 (make -j2, from scratch) and one design-map point at the
+    paper's gear and at GEAR: printed rows, exit status 1 if a run failed."""
+    bench = os.path.join(ROOT, "build", "bench")
+    status = 0
+    for label, gear in (("the paper's gear", {}), (", ".join(f"{k}={v}" for k, v in GEAR.items()),
+                                                   GEAR)):
+        tag = "-".join(f"{k.lower()}{v}" for k, v in gear.items()) or "paper"
+        run_root = os.path.join(bench, f"fig11-{tag}")
+        shutil.rmtree(run_root, ignore_errors=True)
+        wall, cpu, proc = timed(["make", "-j2", "--no-print-directory", "fig11"]
+                                + [f"{k}={v}" for k, v in gear.items()],
+                                dict(os.environ, MLG_RUN_ROOT=run_root))
+        with open(os.path.join(bench, f"fig11-{tag}.log"), "w") as log:
+            log.write(proc.stdout)
+        print(f"bench_figures: fig11 at {label}: make -j2 {wall / 60:.1f} min wall, "
+              f"{cpu / 60:.1f} CPU-min" + ("" if proc.returncode == 0 else
+                                           f" FAILED (log build/bench/fig11-{tag}.log)"),
+              flush=True)
+        status |= proc.returncode != 0
+        rho, mu = float(gear.get("RHO", 0)), float(gear.get("MU", 0))
+        _, _, proc = timed([sys.executable, "-c", DESIGN_POINT, str(rho), str(mu), bench],
+                           dict(os.environ, PYTHONPATH=os.path.join(ROOT, "drivers")))
+        if proc.returncode != 0:
+            print(f"bench_figures: design-map point at {label} FAILED:\n{proc.stdout[-2000:]}")
+            status = 1
+            continue
+        seconds = json.loads(proc.stdout.splitlines()[-1])
+        print(f"bench_figures: design-map point at {label}: {sum(seconds.values()):.1f} s of "
+              "CPU (" + ", ".join(f"{k} {v:.1f}" for k, v in seconds.items()) + ")", flush=True)
+    return status
 
 
 def run_dirs(run_root):
@@ -127,12 +186,15 @@ def main():
                          os.path.join(ROOT, "build", "bench", "j2")))
     if sys.argv[1:2] == ["--compare"] and len(sys.argv) == 4:   # two suites of your own
         sys.exit(compare(sys.argv[2], sys.argv[3], f"{sys.argv[2]} vs {sys.argv[3]}"))
+    if sys.argv[1:] == ["--gear-rows"]:
+        sys.exit(gear_rows())
     serial, one = suite(1)
     print(f"bench_figures: make -j1 figures {serial / 60:.1f} min", flush=True)
     parallel, two = suite(2)
     print(f"bench_figures: make -j2 figures {parallel / 60:.1f} min; ratio -j2/-j1 "
           f"{parallel / serial:.2f} (goal <= 0.55)", flush=True)
-    sys.exit(compare(one, two))
+    status = compare(one, two)
+    sys.exit(gear_rows() or status)
 
 
 if __name__ == "__main__":
