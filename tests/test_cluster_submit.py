@@ -120,7 +120,7 @@ def test_the_environment_of_the_submitting_shell_is_carried(tmp_path):
 
 
 def test_stages_from_a_command(tmp_path):
-    script = tmp_path / "jobs.sh"   # like `fig11.py jobs --stage K`: empty past the last
+    script = tmp_path / "jobs.sh"   # like `mlgshimmy.figures.fig11 jobs --stage K`: empty past the last
     script.write_text('case $1 in 1) echo "echo a"; echo "echo b";; 2) echo "echo c";; esac\n')
     result = submit(["submit", "--name", "f", "--scheduler", "slurm", "--stages-from",
                      f"bash {script} {{k}}", "--out", tmp_path / "out", "--dry-run"],

@@ -48,7 +48,6 @@ def test_sweep_check_rejects_rho_95_naming_rho():
 def test_make_sidestay_with_a_bad_eom_stops_before_any_run_naming_eom(eom):
     proc = subprocess.run(["make", "-n", "sidestay", "RHO=10", "MU=10", f"EOM={eom}"],
                           cwd=ROOT, capture_output=True, text=True)
-    # (the flat drivers/sidestay.py is now the module mlgshimmy.studies.sidestay)
     assert proc.returncode != 0 and f"EOM={eom} must be 0" in proc.stderr \
         and "mlgshimmy.studies.sidestay" not in proc.stdout, \
         (proc.stdout + proc.stderr).strip()[-300:]
@@ -81,7 +80,6 @@ def test_make_sweep_with_a_repeated_point_stops_before_any_job_naming_sweep_rho(
         env["PYTHONPATH"] = pythonpath
     proc = subprocess.run(["make", "-n", "sweep", "SWEEP_RHO=10,10.0000001"], cwd=ROOT,
                           capture_output=True, text=True, env=env)
-    # (drivers/sweep.py point is now python3 -m mlgshimmy.studies.sweep point)
     assert proc.returncode != 0 and "SWEEP_RHO" in proc.stderr \
         and "mlgshimmy.studies.sweep point" not in proc.stdout, \
         (proc.stdout + proc.stderr).strip()[-400:]

@@ -9,7 +9,7 @@ sample, at most 1024 MB unless --max-output / MLG_SIMULATE_MAX_OUTPUT_MB):
   the options and the budget, under a 2 GB address-space limit as well;
 - a CSV over the output budget is refused the same way, and not created;
 - the budgets can be lowered and raised by option and environment variable;
-- Fig. 8's run (drivers/fig08.py's options) is unaffected: its summary is
+- Fig. 8's run (mlgshimmy.figures.fig08's options) is unaffected: its summary is
   the one the simulator printed before the budgets (same numbers to 1e-9
   relative, same sample counts) and its CSV has every sample.
 
@@ -88,7 +88,7 @@ def test_budgets_follow_option_and_environment(tmp_path):
         assert status == 2 and "MLG_SIMULATE_MAX_OUTPUT_MB" in err, err
 
 
-# The summary of Fig. 8's run (drivers/fig08.py: --set figures --V 300.0
+# The summary of Fig. 8's run (mlgshimmy.figures.fig08: --set figures --V 300.0
 # --Fstar 0.2 --yfp 0 --t-end 15.0 --dt-out 0.001 --psi0 0.001) printed by the
 # simulator before the budgets existed (commit d0647f9).
 FIG08 = {"window_samples": 1001, "window_start_s": 14, "t_end": 15,

@@ -2,9 +2,9 @@
 side-stay axis (degrees on the command line, radians in the model) and the
 level of the equations of motion eom_terms (docs/model.md section 8).  No
 AUTO import and no library needed.  The process's model, of which the
-geometry is one part, is shared.variant's.
+geometry is one part, is shared.gear's.
 
-    make fig10 RHO=10 MU=10 [EOM=2]      # mk/variant.mk sets the environment:
+    make fig10 RHO=10 MU=10 [EOM=2]      # mk/gear.mk sets the environment:
     MLG_RHO_DEG=10 MLG_MU_DEG=10 MLG_EOM=2 python3 -m mlgshimmy.figures.fig10
 
 Read from MLG_RHO_DEG, MLG_MU_DEG and MLG_EOM (from_environment), checked

@@ -1,5 +1,5 @@
 """The attractor atlas drawn over (V, F*): (a) what the cells settle on,
-(b) the largest settled torsion amplitude.  Called by `atlas.py summary`."""
+(b) the largest settled torsion amplitude.  Called by the atlas's `summary`."""
 import numpy
 
 # one colour per kind; a cell with several kinds takes the colour of the
