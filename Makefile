@@ -101,7 +101,6 @@ include c/simulate/simulate.mk
 include models/models.mk
 include mk/jobs.mk
 include mk/figures.mk
-include mk/magnitude.mk
 include mk/studies.mk
 include mk/geometries.mk
 -include tests/regression/regression.mk

@@ -1,4 +1,5 @@
-# The paper's figures (mlgshimmy.figures); included by ../Makefile.
+# The paper's figures (mlgshimmy.figures) and the catalogue of every figure
+# and study; included by ../Makefile.
 # Each AUTO figure computes its runs under $(RUN_ROOT)/<fig>/ and caches its
 # result there (result.json: shared.jobs.cache); `make <fig>` draws from it,
 # recomputing first when one of its inputs is newer: a file of the driver's
@@ -36,27 +37,36 @@ $(1)-plot:
 	$$(PYTHON) -m mlgshimmy.figures.$(or $(3),$(1)) $(4) --plot
 endef
 
-FIGURES_WITH_PARTS := fig11 fig13 fig14 fig16
+# $(call uncached_figure,<fig>,<inputs>,<redraw inputs>,<redraw options>): a
+# figure with no cached result (it computes nothing, or simulates, or draws
+# other figures' results): `make <fig>` runs its driver, `make <fig>-plot`
+# runs it again on <redraw inputs> only, with <redraw options> (fig08: --plot).
+define uncached_figure
+.PHONY: $(1) $(1)-plot
+$(1): $(2)
+	$$(PYTHON) -m mlgshimmy.figures.$(1)
+$(1)-plot: $(3)
+	$$(PYTHON) -m mlgshimmy.figures.$(1)$(if $(4), $(4))
+endef
 
-# Zero freeplay (section IV.A): Figs. 7 and 9; Fig. 8 simulates (c/simulate).
-$(eval $(call cached_figure,fig07))
-$(eval $(call cached_figure,fig09))
+# Every figure and study as it declares itself (DECLARED in its module, read
+# by shared.jobs.catalogue without importing it): the figures' rules,
+# FIGURES, REGRESS_FIGURES, REGRESS_QUICK, REGRESS_WITH_<fig>,
+# FIGURES_WITH_PARTS, the submit lists and the lines of make help.  Remade
+# when a module of figures/ or studies/ is newer, or one it read is gone.
+# It needs only python3; on a machine without it the packages come first.
+CATALOGUE := drivers/mlgshimmy/shared/jobs/catalogue.py
+CATALOGUE_MK := $(DEPS_DIR)/catalogue.mk
+CATALOGUE_SOURCES := $(wildcard $(addprefix drivers/mlgshimmy/,figures/*.py figures/*/declared.py \
+    studies/*.py studies/*/declared.py))
+include $(CATALOGUE_MK)
+ifneq ($(filter-out $(CATALOGUE_SOURCES),$(CATALOGUE_READ)),)
+$(CATALOGUE_MK): stamp-changed
+endif
+$(CATALOGUE_MK): $(CATALOGUE) $(CATALOGUE_SOURCES) $(if $(wildcard $(PYTHON)),,| $(PACKAGES_STAMP))
+	@mkdir -p $(@D)
+	@set -e; $(PYTHON) $(CATALOGUE) make > $@.tmp; mv $@.tmp $@
 
-# y_fp = 1 mm, eps = 0.1 y_fp (section IV.B-C): Figs. 10-12; fig06 needs no AUTO.
-.PHONY: fig06 fig06-plot
-fig06 fig06-plot: $(MLG_SHARED) | packages
-	$(PYTHON) -m mlgshimmy.figures.fig06
-
-$(eval $(call cached_figure,fig10))
-# Fig. 11's lift-off edge simulates (shared.liftoff).
-$(eval $(call cached_figure,fig11,$(MLG_SIMULATE)))
-$(eval $(call cached_figure,fig12))
-# Fig. 12 with the printed strut spring (strut variant 1).
-$(eval $(call cached_figure,fig12_v1,,fig12,--strut-variant 1))
-
-FIGURES += fig06 fig07 fig09 fig10 fig11 fig12 fig12_v1
-REGRESS_FIGURES += fig07 fig09 fig10 fig11 fig12
-REGRESS_QUICK += fig07 fig09
 TEST_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)
 BENCH_PROGRAMS += tests/bench/bench_auto_jacobian.py
 BENCH_DEPS += $(MLG_MODEL).exe $(MLG_SHARED)

@@ -78,8 +78,6 @@ criterion: $(CRITERION_GROUPS:%=$(CRITERION_DIR)/%.json) $(CRITERION_DIR)/auto.j
 criterion-plot:
 	$(PYTHON) -m mlgshimmy.studies.criterion report
 
-FIGURES += criterion
-
 # Attractor atlas over (V, F*) by time simulation (studies.atlas); axes
 # "a,b,c" or "start:stop:step", one job per cell:
 #   make -j2 atlas                       the default grid (atlas DEFAULT_*)

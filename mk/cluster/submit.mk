@@ -1,15 +1,17 @@
 # Cluster submissions (docs/cluster.md) as make targets; to be included by ../../Makefile
 # after the makefiles that define the figures and the grids:
 #
-#   make submit-<fig> [SCHEDULER=slurm|parallel]   a staged figure (fig11 fig13 fig14
-#                                                   fig16): its parts stage after stage,
-#                                                   then `make <fig>` assembles and draws;
-#                                                   any other figure: one job, `make <fig>`
-#                                                   (with the RHO, MU, EOM, SET given)
-#   make submit-sweep [SWEEP_RHO=... SWEEP_MU=...]  the side-stay sweep, then its summary
-#   make submit-atlas [ATLAS_V=... ATLAS_FSTAR=...] the atlas, then its summary
-#   make submit-design-map [DESIGN_RHO=... DESIGN_MU=...]  the design map, then its summary
-#   make submit-robustness [ROBUST_PARAMETERS=... ROBUST_FACTORS=...]  the robustness suite
+#   make submit-<fig> [SCHEDULER=slurm|parallel]   a figure with parts (FIGURES_WITH_PARTS):
+#                                                   its parts stage after stage, then
+#                                                   `make <fig>` assembles and draws; any
+#                                                   other figure or study: one job, `make
+#                                                   <target>` (with the RHO, MU, EOM, SET
+#                                                   given, and what it declares it carries)
+#   make submit-sweep [SWEEP_RHO=... SWEEP_MU=...]  a study with a grid (SUBMIT_GRIDS): a job
+#                                                   per point, then its summary (likewise
+#                                                   atlas, design-map, robustness)
+# Every figure and study has one: the lists come from their declarations
+# (mk/figures.mk's catalogue).
 #
 #   SUBMIT_ARGS     options of the submit command (--per-task 50, --throttle 20,
 #                   --jobs 8 for parallel, --env VAR=VALUE, --dry-run)
@@ -49,10 +51,10 @@ SUBMIT_PREREQUISITES := setup $(MLG_MODEL).exe $(MLG_SHARED) $(MLG_SIMULATE)
 SUBMIT_PY = PYTHONPATH=$(call shell_quote,$(CURDIR)/drivers) $(PYTHON)
 SUBMIT_MAKE = make --no-print-directory AUTO_THREADS=$(AUTO_THREADS)
 
-# the figures without parts: one job each
-SUBMIT_WHOLE := $(filter-out $(FIGURES_WITH_PARTS),$(FIGURES))
-SUBMIT_GRIDS := sweep atlas design-map robustness
-SUBMIT_TARGETS := $(addprefix submit-,$(FIGURES_WITH_PARTS) $(SUBMIT_WHOLE) $(SUBMIT_GRIDS))
+# SUBMIT_WHOLE (one job each) and SUBMIT_GRIDS (<target>:<module>:<variable of
+# its grid options>) come from the catalogue
+SUBMIT_TARGETS := $(addprefix submit-,$(FIGURES_WITH_PARTS) $(SUBMIT_WHOLE) \
+    $(foreach grid,$(SUBMIT_GRIDS),$(firstword $(subst :, ,$(grid)))))
 .PHONY: $(SUBMIT_TARGETS)
 # the figure says how many stages it has (`stages`), so an empty `jobs --missing`
 # stage does not end the list
@@ -68,7 +70,8 @@ SUBMIT_GEAR = $(if $(GEAR_GIVEN),RHO=$(call shell_quote,$(MLG_RHO_DEG)) \
     MU=$(call shell_quote,$(MLG_MU_DEG)) EOM=$(call shell_quote,$(MLG_EOM)) \
     SET=$(call shell_quote,$(SET)))
 $(addprefix submit-,$(SUBMIT_WHOLE)): submit-%: $(SUBMIT_PREREQUISITES)
-	set -eo pipefail; printf '%s\n' $(call shell_quote,$(SUBMIT_MAKE) $* $(SUBMIT_GEAR)) | \
+	set -eo pipefail; printf '%s\n' $(call shell_quote,$(SUBMIT_MAKE) $* $(SUBMIT_GEAR)$(if \
+	    $(SUBMIT_CARRY), $(SUBMIT_CARRY))) | \
 	    $(SUBMIT) --name $* --stage - $(SUBMIT_AFTER)
 
 # anything else named submit-*: one line saying what can be submitted
@@ -88,7 +91,6 @@ submit-$(1): $$(SUBMIT_PREREQUISITES)
 	    --assemble $$(call shell_quote,$$(SUBMIT_PY) -m mlgshimmy.studies.$(2) summary $$($(3))) \
 	    $$(SUBMIT_AFTER)
 endef
-$(eval $(call submit_grid,sweep,sweep,SWEEP_GRID_ARGS))
-$(eval $(call submit_grid,atlas,atlas,ATLAS_ARGS))
-$(eval $(call submit_grid,design-map,design_map,DESIGN_GRID_ARGS))
-$(eval $(call submit_grid,robustness,robustness,ROBUST_ARGS))
+grid_word = $(word $(1),$(subst :, ,$(2)))
+$(foreach grid,$(SUBMIT_GRIDS),$(eval $(call submit_grid,$(call grid_word,1,$(grid)),$(call \
+    grid_word,2,$(grid)),$(call grid_word,3,$(grid)))))

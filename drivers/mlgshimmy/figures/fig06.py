@@ -8,6 +8,19 @@ import numpy
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import mlgmodel
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig06": {
+        "help": "Fig. 6: torque-link force profiles, eqs. (14), (15)",
+        "time": "5 s",
+        "cached": False,
+        "needs": ["library"],
+        "report": ("Torque-link force profiles, eq. (15) for five smoothing widths against the "
+                   "non-smooth eq. (14) (section III)."),
+    },
+}
+
 RATIOS = (2.0, 1.0, 0.5, 0.2, 0.1)      # epsilon / y_fp
 
 

@@ -22,6 +22,20 @@ from mlgshimmy.shared import paths  # noqa: E402
 from mlgshimmy.shared import simulator  # noqa: E402
 from mlgshimmy.shared import jobs
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig08": {
+        "help": "Fig. 8: time simulation, V = 300 m/s, F* = 0.2 (CVODE)",
+        "time": "5 s",
+        "cached": False,
+        "needs": ["simulator"],
+        "redraw": "--plot",
+        "report": ("Time simulation at V = 300 m/s, F* = 0.2: the oscillation grows and "
+                   "settles on the orbit of Fig. 7(a); beta and eta oscillate weakly (IV.A)."),
+    },
+}
+
 OUT_DIR = os.path.join(paths.run_root(), "fig08")
 FIG_DIR = paths.figures_dir()
 

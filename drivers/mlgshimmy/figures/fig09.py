@@ -10,6 +10,18 @@ from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig09": {
+        "help": "Fig. 9: zero-freeplay Hopf curve in (V, F*)",
+        "time": "5 s",
+        "regress": "quick",
+        "report": ("The zero-freeplay Hopf curve in (V, F*): it bounds stable straight rolling "
+                   "and lies outside the operating region (IV.A)."),
+    },
+}
+
 FSTAR_RANGE = (0.1, 3.5)   # below F* ~ 0.1 the curve leaves V <= 600 m/s steeply
 
 

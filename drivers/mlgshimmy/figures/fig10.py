@@ -17,6 +17,19 @@ from mlgshimmy.shared import naming
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig10": {
+        "help": "Fig. 10: y_fp = 1 mm, F* = 1: three Hopf points, orbits, fold",
+        "time": "40 s",
+        "regress": True,
+        "report": ("F* = 1 with +-1 mm of freeplay: Hopf points at 1.5, 28.1 and 142.5 m/s, "
+                   "low-frequency orbits between the first two, high-frequency orbits with a "
+                   "fold S at 41.5 m/s; bistability for V in (41.5, 142.5) (IV.B)."),
+    },
+}
+
 DEG = draw.DEG
 V_MAX = ct.V_MAX
 V_GRID = ct.SPEED_SCAN

@@ -22,6 +22,27 @@ from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import stationary
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig12": {
+        "help": "Fig. 12: V = 50 m/s: pitchforks, yawed states, orbits in F*",
+        "time": "20 s",
+        "regress": True,
+        "report": ("V = 50 m/s, diagram in F*: two pitchforks with stationary yawed states "
+                   "between them, a Hopf point, orbits with stable low- and high-frequency "
+                   "segments; bistability for F* in (a_12, b_12), values the paper withholds "
+                   "(IV.C)."),
+    },
+    "fig12_v1": {
+        "help": "Fig. 12 with the printed strut stage order",
+        "time": "20 s",
+        "options": "--strut-variant 1",
+        "report": ("Fig. 12 with the strut spring's stage order as printed (strut variant 1; "
+                   "docs/model.md)."),
+    },
+}
+
 DEG = draw.DEG
 COLUMNS = ("Fstar", "psi_amp", "psi_mean", "freq")
 F_MIN, F_MAX = 0.02, 3.5

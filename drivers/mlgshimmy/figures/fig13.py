@@ -15,6 +15,20 @@ from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 from mlgshimmy.shared.draw import magnitude as draw_magnitude
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig13": {
+        "help": "Fig. 13: eps = 0.1 y_fp, y_fp = 0.2-2 mm",
+        "time": "1 min",
+        "regress": True,
+        "parts": True,
+        "report": ("eps = 0.1 y_fp: diagrams in V for y_fp = 0.2-2 mm scale with y_fp while "
+                   "the bifurcation speeds stay fixed; orbit amplitudes linear in y_fp, "
+                   "frequencies constant (IV.D.1)."),
+    },
+}
+
 FREEPLAYS = freeplay.FIG13_FREEPLAYS
 COLOURS = draw.sequence(len(FREEPLAYS))
 FIT_RANGE = (0.05, 2.0)   # y_fp range of the linear fits [mm]

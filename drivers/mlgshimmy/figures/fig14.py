@@ -15,6 +15,19 @@ from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.draw import magnitude as draw_magnitude
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig14": {
+        "help": "Fig. 14: eps = 0.1 mm, y_fp = 0.05-1 mm, Hopf curves",
+        "time": "1.5 min",
+        "regress": True,
+        "parts": True,
+        "report": ("eps = 0.1 mm: diagrams for y_fp = 0.05-1 mm whose bifurcation points move "
+                   "with y_fp; orbits exist only beyond a freeplay threshold (IV.D.2)."),
+    },
+}
+
 FREEPLAYS = freeplay.FIG14_FREEPLAYS
 
 

@@ -10,6 +10,19 @@ from mlgshimmy.shared import freeplay as fp
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig15": {
+        "help": "Fig. 15: the profiles of Figs. 13 and 14 rescaled",
+        "time": "5 s",
+        "cached": False,
+        "needs": ["library"],
+        "report": ("The profiles of Figs. 13 and 14 rescaled: they coincide for eps/y_fp fixed "
+                   "and do not for eps fixed (IV.D)."),
+    },
+}
+
 SPAN = 3.0   # x* range: |x*| <= SPAN
 
 

@@ -19,6 +19,20 @@ from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import surfaces
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig16": {
+        "help": "Fig. 16: orbit surfaces over (V, y_fp), both scalings",
+        "time": "10 min",
+        "regress": True,
+        "parts": True,
+        "report": ("Orbit surfaces over (V, y_fp) for both scalings; regions R1 = (0, r_1) and "
+                   "R2 = (r_2, r_3) of y_fp where straight rolling is stable up to 120 m/s, "
+                   "values the paper withholds (IV.E)."),
+    },
+}
+
 FAMILY = {
     "ratio": (0.5, 1.0, 1.5, 2.0),   # a pure scaling (Fig. 13): few slices suffice
     "fixed": (0.04, 0.05, 0.06, 0.07, 0.08, 0.098, 0.11, 0.13, 0.15, 0.2, 0.25, 0.35, 0.6, 0.7,

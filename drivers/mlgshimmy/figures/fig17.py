@@ -10,6 +10,19 @@ from mlgshimmy.shared import jobs
 from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import paper
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig17": {
+        "help": "Fig. 17: Fig. 16's curves in (V, y_fp/eps), after fig16",
+        "time": "+ 5 s",
+        "regress": "with fig16",
+        "after": ["fig16"],
+        "report": ("The curves of Fig. 16(b) in (V, y_fp/eps) with the points a, b, c that "
+                   "bound R1 and R2 (IV.E)."),
+    },
+}
+
 
 def compute():
     """Fig. 16's curves and window, and the numbers of a, b, c."""

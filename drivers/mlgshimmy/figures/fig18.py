@@ -24,6 +24,25 @@ from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import regions
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig18": {
+        "help": "Fig. 18: a, b, c continued in F*, kappa*",
+        "time": "70 s",
+        "regress": True,
+        "report": ("a, b, c continued in F*: regions of the (y_fp/eps, F*) plane and the "
+                   "envelope y_fp/eps < kappa* for F* up to 2, a value the paper withholds "
+                   "(IV.E)."),
+    },
+    "fig18_v1": {
+        "help": "Fig. 18 with the printed strut stage order",
+        "time": "70 s",
+        "options": "--strut-variant 1",
+        "report": "Fig. 18 with the printed strut stage order (strut variant 1).",
+    },
+}
+
 FSTARS = mg.ENVELOPE_LOADS
 MAP_KAPPA = numpy.geomspace(0.05, 8.0, 50)
 MAP_SPEEDS = numpy.linspace(mg.V_MIN, mg.V_LIMIT, 30)

@@ -12,6 +12,20 @@ from mlgshimmy.shared import jobs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 
+# What make, make help, make submit and the report know of this figure
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "fig19": {
+        "help": "Fig. 19: profiles allowed by kappa*, after fig18, fig18_v1",
+        "time": "+ 5 s",
+        "cached": False,
+        "needs": ["library"],
+        "after": ["fig18", "fig18_v1"],
+        "report": ("The rescaled profiles allowed by y_fp/eps < kappa* (eq. 17), between the "
+                   "kappa* profile and eps -> infinity (IV.E)."),
+    },
+}
+
 SPAN = 3.0
 
 

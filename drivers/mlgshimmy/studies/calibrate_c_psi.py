@@ -10,6 +10,23 @@ from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import jobs
 
+# What make, make help, make submit and the report know of this study
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "calibrate": {
+        "help": "the c_psi of the `figures` parameter set",
+        "time": "2 s",
+        "report": {
+            "command": "make calibrate",
+            "text": ("The c_psi of the `figures` parameter set: the zero-freeplay Hopf point "
+                     "at F* = 1 continued in (V, c_psi) from the printed 410 up to 346.1 m/s "
+                     "(docs/model.md section 5)."),
+            "tables": ["calibration/c_psi.txt"],
+            "figures": [],
+        },
+    },
+}
+
 V_PAPER = 346.1
 
 

@@ -29,6 +29,23 @@ from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 
+# What make, make help, make submit and the report know of this study
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "criterion": {
+        "help": "eq. (17): kappa* under each low-load assumption (use -j2)",
+        "time": "3 min",
+        "in_figures": True,
+        "report": {
+            "command": "make -j2 criterion",
+            "text": ("kappa* of eq. (17) under each low-load assumption (strut readings, "
+                     "stage-switch position, c_psi, tyre laws at light load)."),
+            "tables": ["tables/criterion.txt"],
+            "figures": ["figures/criterion.png"],
+        },
+    },
+}
+
 VARIANTS = (0, 1)
 # The one-parameter family joining the strut variants: the stage-switch
 # position eta_s of the monotone spring (docs/model.md 4.15).  0.34 m is the

@@ -67,6 +67,24 @@ from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared.jobs import grid as jobgrid
 
+# What make, make help, make submit and the report know of this study
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "design-map": {
+        "help": "H1-H3, S, allowed freeplay, y_tlk over (rho, mu) (5 x 5; -j2; RHO, MU marked)",
+        "time": "5 min",
+        "grid": "DESIGN_GRID_ARGS",
+        "report": {
+            "command": "make -j2 design-map",
+            "text": ("The design map over side-stay angles (rho, mu): critical speed, H1-H3, "
+                     "the fold S, the bistable interval and the allowed freeplay "
+                     "(docs/design-map.md)."),
+            "tables": ["tables/design_map.txt"],
+            "figures": ["figures/design_map.png"],
+        },
+    },
+}
+
 DEFAULT_GRID = "-20:20:10"
 EOM = 2                      # the complete equations (docs/model.md 8.4)
 FSTAR = 1.0

@@ -19,6 +19,17 @@ import numpy
 
 from mlgshimmy.shared import floquet, paths
 
+# What make, make help, make submit and the report know of this study
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "floquet": {
+        "usage": "floquet RUN=<dir>/<run>",
+        "help": "Floquet multipliers along one orbit run, torus/PD/fold crossings",
+        "time": "2 s",
+        "carries": ["RUN"],
+    },
+}
+
 REAL = floquet.COMPLEX     # |Im mu| up to this: a real multiplier
 
 

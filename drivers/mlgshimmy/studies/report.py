@@ -13,8 +13,8 @@ shared.paper.PAPER, beside ours, the relative error and a status; the
 values the paper withholds, shared.paper.HELD_OUT, with ours), then the
 provenance (commit, AUTO, compilers, Python, numpy, matplotlib), then one
 section per figure: what the paper shows, our PNG and its table; then the
-studies beyond the paper that have been run (criterion, atlas, sweep,
-side-stay: their tables and figures, STUDIES)."""
+studies beyond the paper that have been run (their tables and figures,
+STUDIES)."""
 import argparse
 import datetime
 import html
@@ -27,63 +27,16 @@ import sys
 
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs import catalogue
 from mlgshimmy.shared.jobs.atomic import write_text
 
-# (figure, command, what the paper shows): the order of the page
-FIGURES = [
-    ("fig06", "make fig06", "Torque-link force profiles, eq. (15) for five smoothing widths "
-     "against the non-smooth eq. (14) (section III)."),
-    ("fig07", "make fig07", "Zero freeplay, diagrams in V at F* = 0.2 and 1: stable straight "
-     "rolling up to a supercritical Hopf point H, torsional shimmy beyond it, far above the "
-     "80 m/s operating region; H at F* = 1 is 346.1 m/s (IV.A, IV.B)."),
-    ("fig08", "make fig08", "Time simulation at V = 300 m/s, F* = 0.2: the oscillation grows "
-     "and settles on the orbit of Fig. 7(a); beta and eta oscillate weakly (IV.A)."),
-    ("fig09", "make fig09", "The zero-freeplay Hopf curve in (V, F*): it bounds stable "
-     "straight rolling and lies outside the operating region (IV.A)."),
-    ("fig10", "make fig10", "F* = 1 with +-1 mm of freeplay: Hopf points at 1.5, 28.1 and "
-     "142.5 m/s, low-frequency orbits between the first two, high-frequency orbits with a "
-     "fold S at 41.5 m/s; bistability for V in (41.5, 142.5) (IV.B)."),
-    ("fig11", "make fig11", "The (V, F*) plane with freeplay: Hopf, fold and pitchfork curves "
-     "and the regions of low- and high-frequency shimmy, bistability and off-centre yaw "
-     "(IV.B, IV.C)."),
-    ("fig12", "make fig12", "V = 50 m/s, diagram in F*: two pitchforks with stationary yawed "
-     "states between them, a Hopf point, orbits with stable low- and high-frequency segments; "
-     "bistability for F* in (a_12, b_12), values the paper withholds (IV.C)."),
-    ("fig12_v1", "make fig12_v1", "Fig. 12 with the strut spring's stage order as printed "
-     "(strut variant 1; docs/model.md)."),
-    ("fig13", "make fig13", "eps = 0.1 y_fp: diagrams in V for y_fp = 0.2-2 mm scale with "
-     "y_fp while the bifurcation speeds stay fixed; orbit amplitudes linear in y_fp, "
-     "frequencies constant (IV.D.1)."),
-    ("fig14", "make fig14", "eps = 0.1 mm: diagrams for y_fp = 0.05-1 mm whose bifurcation "
-     "points move with y_fp; orbits exist only beyond a freeplay threshold (IV.D.2)."),
-    ("fig15", "make fig15", "The profiles of Figs. 13 and 14 rescaled: they coincide for "
-     "eps/y_fp fixed and do not for eps fixed (IV.D)."),
-    ("fig16", "make fig16", "Orbit surfaces over (V, y_fp) for both scalings; regions R1 = "
-     "(0, r_1) and R2 = (r_2, r_3) of y_fp where straight rolling is stable up to 120 m/s, "
-     "values the paper withholds (IV.E)."),
-    ("fig17", "make fig17", "The curves of Fig. 16(b) in (V, y_fp/eps) with the points a, b, c "
-     "that bound R1 and R2 (IV.E)."),
-    ("fig18", "make fig18", "a, b, c continued in F*: regions of the (y_fp/eps, F*) plane and "
-     "the envelope y_fp/eps < kappa* for F* up to 2, a value the paper withholds (IV.E)."),
-    ("fig18_v1", "make fig18_v1", "Fig. 18 with the printed strut stage order (strut variant "
-     "1)."),
-    ("fig19", "make fig19", "The rescaled profiles allowed by y_fp/eps < kappa* (eq. 17), "
-     "between the kappa* profile and eps -> infinity (IV.E)."),
-]
-# Studies beyond the paper: (name, command, what, text files, figures), each
-# path relative to the run root; shown when made (the side-stay runs by glob)
-STUDIES = [
-    ("criterion", "make -j2 criterion", "kappa* of eq. (17) under each low-load assumption "
-     "(strut readings, stage-switch position, c_psi, tyre laws at light load).",
-     ["tables/criterion.txt"], ["figures/criterion.png"]),
-    ("atlas", "make -j2 atlas", "The attractor atlas: what a time simulation settles on over "
-     "(V, F*), y_fp = 1 mm, eps = 0.1 mm, and its comparison with Fig. 11.",
-     ["atlas/summary.txt"], ["figures/atlas.png", "figures/atlas_fig11.png"]),
-    ("sweep", "make sweep", "The critical shimmy speed over a grid of side-stay angles.",
-     [], ["figures/sweep_critical_speed.png"]),
-    ("sidestay", "make sidestay RHO=10 MU=10", "Side-stay angles against rho = mu = 0.",
-     ["tables/sidestay_*.txt"], ["figures/sidestay_*.png"]),
-]
+# (figure, command, what the paper shows): the order of the page; and the
+# studies beyond the paper: (name, command, what, text files, figures), each
+# path relative to the run root, shown when made (the side-stay runs by glob).
+# Both as the figures and studies declare themselves (shared.jobs.catalogue).
+FIGURES = [(e["name"], f"make {e['name']}", e["report"]) for e in catalogue.figures()]
+STUDIES = [(e["name"], e["report"]["command"], e["report"]["text"], e["report"]["tables"],
+            e["report"]["figures"]) for e in catalogue.studies() if "report" in e]
 STATUS_CLASS = {"agrees": "good", "calibrated": "calib", "off its calibration": "bad",
                 "close": "close", "off": "bad", "missing": "bad", "held out": "held"}
 STATUS_TEXT = {

@@ -29,6 +29,23 @@ from mlgshimmy.shared import magnitude as mg
 from mlgshimmy.shared.jobs import grid as jobgrid
 from mlgshimmy.shared.jobs.atomic import write_text
 
+# What make, make help, make submit and the report know of this study
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "robustness": {
+        "help": "each parameter x0.8-1.2: what moves, and does every figure complete (-j2)",
+        "time": "45 min",
+        "grid": "ROBUST_ARGS",
+        "report": {
+            "command": "make -j2 robustness",
+            "text": ("Each parameter scaled by 0.8-1.2: what moves (H1-H3, S, V_crit, kappa*) "
+                     "and whether every figure still completes."),
+            "tables": ["tables/robustness.txt"],
+            "figures": [],
+        },
+    },
+}
+
 PARAMETERS = ("k_tlk", "c_psi", "I_psi", "k_beta", "c_beta", "M", "I_0",
               "a4_F", "a3_M", "a4_M", "l_tlk", "a_tlk", "b_tlk")
 FACTORS = "0.8,0.9,1.1,1.2"

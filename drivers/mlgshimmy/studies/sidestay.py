@@ -32,6 +32,22 @@ from mlgshimmy.shared import paths
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import jobs
 
+# What make, make help, make submit and the report know of this study
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "sidestay": {
+        "usage": "sidestay RHO=10 MU=10",
+        "help": "side-stay angles [deg] against rho = mu = 0 (EOM=0|1|2)",
+        "time": "30 s",
+        "report": {
+            "command": "make sidestay RHO=10 MU=10",
+            "text": "Side-stay angles against rho = mu = 0.",
+            "tables": ["tables/sidestay_*.txt"],
+            "figures": ["figures/sidestay_*.png"],
+        },
+    },
+}
+
 V_START, V_STOP = ct.V_MIN, ct.V_MAX
 FSTAR_RANGE = [0.1, 3.5]
 PSI_AMP_STOP = 0.2                 # rad: larger orbits approach wheel lift-off

@@ -30,6 +30,22 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs import grid as jobgrid
+
+# What make, make help, make submit and the report know of this study
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "sweep": {
+        "help": "critical speed over a (rho, mu) grid (SWEEP_RHO, SWEEP_MU: 3 x 3)",
+        "time": "20 s",
+        "grid": "SWEEP_GRID_ARGS",
+        "report": {
+            "command": "make sweep",
+            "text": "The critical shimmy speed over a grid of side-stay angles.",
+            "tables": [],
+            "figures": ["figures/sweep_critical_speed.png"],
+        },
+    },
+}
 axis = jobgrid.axis
 
 DEFAULT_GRID = "-10,0,10"

@@ -41,6 +41,15 @@ from mlgshimmy.shared.torus import (V_MAX, curve_arrays, multiplier_check, on_br
                                     orbit_branch, predicted_rate, simulated_rate,
                                     torus_crossings, torus_curve, tr_point, windows)
 
+# What make, make help, make submit and the report know of this study
+# (shared.jobs.catalogue reads it as text: literals only).
+DECLARED = {
+    "torus": {
+        "help": "torus points of Figs. 7 and 10: meshes, windows, curves",
+        "time": "> 7 min",
+    },
+}
+
 CASES = {"fig07_F0.2": {"Fstar": 0.2, "yfp": 0.0},
          "fig07_F1": {"Fstar": 1.0, "yfp": 0.0},
          "fig10_F1": {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1}}
