@@ -23,6 +23,13 @@ MODEL_INPUTS := constants/c.mlg $(wildcard constants/runs/c.*) $(MLG_MODEL).exe 
 # --strut-variant 1).  A figure whose driver lists parts (FIGURES_WITH_PARTS)
 # gets them as make jobs first (mk/parts.mk, with the rules the driver
 # writes), so that `make -jN` runs them side by side.
+# The figure is drawn in the job that computed it, as soon as its result
+# exists: a separate job would wait for a job slot, which the parts of a
+# long figure (a sub-make reading the same jobserver) take first, for as
+# long as they run.  The draw marks the figure with the make that drew it
+# (DRAWN_BY), so that `make <fig>` draws once; a draw that fails there
+# leaves the result as it is and is repeated by `make <fig>`, which reports it.
+DRAWN_BY = $(RUN_ROOT)/figures/.$(1).drawn-by-make
 define cached_figure
 $(eval $(call py_deps,$(or $(3),$(1)),figures.$(or $(3),$(1))))
 $(call result,$(1)): $$(PYDEPS_$(or $(3),$(1))) $(MODEL_INPUTS) $(2) | auto
@@ -30,9 +37,13 @@ $(call result,$(1)): $$(PYDEPS_$(or $(3),$(1))) $(MODEL_INPUTS) $(2) | auto
 	    $$(MAKE) --no-print-directory -f mk/parts.mk FIGURE=$(1) \
 	        INPUTS="$$(filter-out $$(DEPS_DIR)/%,$$^)")
 	$$(PYTHON) -m mlgshimmy.figures.$(or $(3),$(1)) $(4) --compute
+	@set -e; if out=$$$$($$(PYTHON) -m mlgshimmy.figures.$(or $(3),$(1)) $(4) --plot 2>&1); then \
+	    printf '%s\n' "$$$$out"; { mkdir -p $$(RUN_ROOT)/figures && \
+	    echo $$$$PPID > $$(call DRAWN_BY,$(1)); } || true; fi
 .PHONY: $(1) $(1)-plot
 $(1): $(call result,$(1))
-	$$(PYTHON) -m mlgshimmy.figures.$(or $(3),$(1)) $(4) --plot
+	@set -e; if [ "$$$$(cat $$(call DRAWN_BY,$(1)) 2>/dev/null)" != $$$$PPID ]; then \
+	    $$(PYTHON) -m mlgshimmy.figures.$(or $(3),$(1)) $(4) --plot; fi
 $(1)-plot:
 	$$(PYTHON) -m mlgshimmy.figures.$(or $(3),$(1)) $(4) --plot
 endef

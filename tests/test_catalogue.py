@@ -89,7 +89,8 @@ def test_make_and_help_see_a_new_figure(tree):
 
 
 def test_the_report_and_submit_see_a_new_figure(tree):
-    make(tree, "fig99")
+    drawn = make(tree, "fig99")
+    assert drawn.count("fig99: x = 1") == 1, drawn   # drawn once, by the job that computed it
     make(tree, "report")
     page = (tree / "build" / "report" / "index.html").read_text()
     assert 'id="fig99"' in page and "A figure that only a test adds." in page

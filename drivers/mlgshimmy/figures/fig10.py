@@ -98,7 +98,7 @@ def compute():
                                 **FREEPLAY, **at)[1]
         table = numbers(diagram, diagram.named)
     except (autoglue.RunError, RuntimeError) as exc:
-        print(f"fig10: the `table` set failed, its column stays empty: {getattr(exc, 'brief', exc)}")
+        print(f"fig10: the `table` set stops, its column stays empty: {getattr(exc, 'brief', exc)}")
         table = {}
     points = freeplay.named
     # V_crit: where zero freeplay loses stability (the paper's 346.1 m/s, Fig. 7)

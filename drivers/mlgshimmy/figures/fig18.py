@@ -75,7 +75,7 @@ def auto_check(rundir, **model):
         out[name] = []
         for d, run in curve.items():
             if isinstance(run, autoglue.RunError):
-                mg.progress("fig18", f"AUTO: {name} continued {d} in F* FAILED: {run.brief}")
+                mg.progress("fig18", f"AUTO: {name} continued {d} in F* stops, left out: {run.brief}")
             else:
                 out[name].append(run)
                 mg.progress("fig18", f"AUTO: {name} continued {d} in F*")

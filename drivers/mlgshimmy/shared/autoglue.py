@@ -259,16 +259,19 @@ def _label(rundir):
 
 
 class _Progress:
-    """One console line per AUTO run: figure, run, done/total, elapsed.
-    The total is the number of runs the same figure made last time, under
-    any run root (build/.runs/<figure>.count), "?" the first time."""
+    """One console line per AUTO run: figure, run, its number and, where
+    known, the total: the number of runs the same figure, or the same part
+    of it (paths.PART_ENV), made last time under any run root
+    (build/.runs/<figure>[.<part>].count); the first time, no total."""
 
     def __init__(self):
         self.started = time.monotonic()
         self.done = {}
 
     def count_file(self, figure):
-        return os.path.join(paths.BUILD, ".runs", f"{figure}.count")
+        part = os.environ.get(paths.PART_ENV)
+        return os.path.join(paths.BUILD, ".runs", f"{figure}.{part}.count" if part else
+                            f"{figure}.count")
 
     def previous(self, figure):
         try:
@@ -283,10 +286,10 @@ class _Progress:
             self.done[figure] = [0, self.previous(figure)]
         self.done[figure][0] += 1
         done, total = self.done[figure]
-        total = "?" if total is None or total < done else total
+        count = f"run {done}" if total is None or total < done else f"{done}/{total}"
         where = os.path.relpath(os.path.join(os.path.abspath(rundir), name),
                                 os.path.join(paths.run_root(), figure))
-        print(f"{figure}: {where} {status} ({done}/{total}) in {seconds:.1f} s, "
+        print(f"{figure}: {where} {status} ({count}) in {seconds:.1f} s, "
               f"{time.monotonic() - self.started:.0f} s elapsed", flush=True)
 
     def save(self):
@@ -469,8 +472,11 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
                f"{CPU_GUARD_SCALE_ENV}={cpu_guard_scale():g}; raise {CPU_GUARD_SCALE_ENV} "
                "on a slow node)" if limit.fired else exc)
         stop = None if limit.fired else non_finite_stop(log)
-        PROGRESS.step(rundir, name, time.monotonic() - started,
-                      "stopped at a non-finite solution" if stop else "FAILED")
+        # a stop, not yet a failure: the caller may retry or do without it,
+        # and says so; a failure it cannot take stops the figure, naming it
+        word = ("stopped at a non-finite solution" if stop else "stopped by its CPU guard"
+                if limit.fired else f"stopped by AUTO (see {name}.log)")
+        PROGRESS.step(rundir, name, time.monotonic() - started, word)
         if stop:
             raise RunError(f"run {name} in {rundir}: {stop.removeprefix('mlg: ')}", log,
                            NON_FINITE) from exc
@@ -488,7 +494,8 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
     except RunError as exc:
         if not (allow_mx and exc.kind == MX):
             # an MX is the caller's to judge (continuation.with_ladder retries it)
-            word = "stops with no convergence (MX)" if exc.kind == MX else "FAILED"
+            word = "stops with no convergence (MX)" if exc.kind == MX else \
+                "stops: " + exc.brief.split(f"in {rundir}: ", 1)[-1]
             PROGRESS.step(rundir, name, time.monotonic() - started, word)
             raise RunError(exc.brief, log, exc.kind) from None
         status = "done, ends in MX (kept up to there, as allowed)"

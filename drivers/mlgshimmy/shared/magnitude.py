@@ -134,7 +134,7 @@ def _hopf_runs(rundir, name, hb, figure):
                                        DS=sign * step / 5, DSMAX=step, NMX=4000)
                          for d, sign in (("a", 1), ("b", -1)))
         except autoglue.RunError as exc:
-            progress(figure, f"{name}: Hopf curve with ICP {order} failed ({exc.brief})"
+            progress(figure, f"{name}: Hopf curve with ICP {order} stops ({exc.brief})"
                      + ("; repeating with the parameters swapped" if order[0] == "yfp" else ""))
     raise autoglue.RunError(f"{name}: Hopf curve failed with both parameter orders")
 

@@ -11,6 +11,9 @@ import os
 # the repository: this file is drivers/mlgshimmy/shared/paths.py in it
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 BUILD = os.path.join(ROOT, "build")
+# the part of a figure this process computes alone (set by jobs.parts), for
+# what is counted per part
+PART_ENV = "MLG_PART"
 
 
 def run_root() -> str:

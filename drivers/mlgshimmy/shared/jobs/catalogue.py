@@ -2,8 +2,9 @@
 {target: {...}}` in its module (a package: in its declared.py), read as
 text, nothing imported, so that make can use it before anything is built
 (as depends.py reads imports).  From it come the make rules of the
-figures, FIGURES, REGRESS_FIGURES, REGRESS_QUICK, the figures with parts,
-the submit targets, the lines of `make help` and the report's entries:
+figures, FIGURES (quickest first), REGRESS_FIGURES, REGRESS_QUICK, the
+figures with parts, the submit targets, the lines of `make help` and the
+report's entries:
 
     python3 drivers/mlgshimmy/shared/jobs/catalogue.py make > build/deps/catalogue.mk
 
@@ -83,6 +84,18 @@ def seconds(time: str) -> float:
     if not m:
         raise ValueError(f"time {time!r} is not like '10 s', '1.5 min', '+ 5 s'")
     return float(m.group(1)) * (60 if m.group(2) == "min" else 1)
+
+
+def quick_first(entries: List[Dict]) -> List[Dict]:
+    """The entries by typical time, quickest first (`make -jN figures` starts
+    them in this order, so that the first figures are drawn in seconds); a
+    time "+ 5 s" counts after the longest of the figures it reads."""
+    by_name = {e["name"]: e for e in entries}
+
+    def total(e):
+        after = [total(by_name[n]) for n in e.get("after", []) if n in by_name]
+        return seconds(e["time"]) + (max(after) if e["time"].startswith("+") and after else 0)
+    return sorted(entries, key=total)
 
 
 def check(path: str, room: str, target: str, entry: Dict) -> None:
@@ -179,7 +192,7 @@ def make_text(root: str = PACKAGE_DIR) -> str:
     regress = [e["name"] for e in figs if e.get("regress") in (True, "quick")]
     quick = [e["name"] for e in figs if e.get("regress") == "quick"]
     with_parts = [e["name"] for e in figs if e.get("parts")]
-    made = [e["name"] for e in figs] + [e["name"] for e in studs if e.get("in_figures")]
+    made = [e["name"] for e in quick_first(figs + [e for e in studs if e.get("in_figures")])]
     whole = [n for n in made if n not in with_parts] + \
         [e["name"] for e in studs if not e.get("grid") and not e.get("in_figures")]
     grids = [f"{e['name']}:{e['module'].split('.')[-1]}:{e['grid']}"

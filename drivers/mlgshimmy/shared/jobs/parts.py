@@ -64,10 +64,13 @@ class Parts:
         self.stage(name)   # a part of this figure (the error names the parts)
         job = self.jobs[name]
         started = time.monotonic()
+        if alone:   # its AUTO runs are counted as this part's (autoglue's progress)
+            os.environ[paths.PART_ENV] = name
         if cache.compute_once(self.figure, lambda: job.function(_Reader(self, alone))
                               if isinstance(job, Needs) else job(), self.parameter_set, name):
-            print(f"{self.figure}: part {name} computed in {time.monotonic() - started:.0f} s",
-                  flush=True)
+            cached = sum(os.path.exists(cache.path(self.figure, n)) for n in self.jobs)
+            print(f"{self.figure}: part {name} computed in {time.monotonic() - started:.0f} s "
+                  f"({cached} of {len(self.jobs)} parts cached)", flush=True)
 
     def __getitem__(self, name: str) -> Any:
         return _Reader(self, False)[name]
