@@ -27,6 +27,7 @@ DECLARED = {
         "report": ("F* = 1 with +-1 mm of freeplay: Hopf points at 1.5, 28.1 and 142.5 m/s, "
                    "low-frequency orbits between the first two, high-frequency orbits with a "
                    "fold S at 41.5 m/s; bistability for V in (41.5, 142.5) (IV.B)."),
+        "paper": {"H1 [m/s]": 1.5, "H2 [m/s]": 28.1, "H3 [m/s]": 142.5, "S1 [m/s]": 41.5},
     },
 }
 

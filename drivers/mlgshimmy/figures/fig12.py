@@ -33,6 +33,8 @@ DECLARED = {
                    "between them, a Hopf point, orbits with stable low- and high-frequency "
                    "segments; bistability for F* in (a_12, b_12), values the paper withholds "
                    "(IV.C)."),
+        # values the paper replaces by symbols: our quantity -> its symbol
+        "held_out": {"a_12": "a_12", "b_12": "b_12"},
     },
     "fig12_v1": {
         "help": "Fig. 12 with the printed strut stage order",

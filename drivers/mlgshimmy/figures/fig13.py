@@ -26,6 +26,9 @@ DECLARED = {
         "report": ("eps = 0.1 y_fp: diagrams in V for y_fp = 0.2-2 mm scale with y_fp while "
                    "the bifurcation speeds stay fixed; orbit amplitudes linear in y_fp, "
                    "frequencies constant (IV.D.1)."),
+        # IV.D.1: the Fig. 10 diagram is the y_fp = 1 mm slice of Fig. 13
+        "paper": {"y_fp = 1: H1 [m/s]": 1.5, "y_fp = 1: H2 [m/s]": 28.1,
+                  "y_fp = 1: H3 [m/s]": 142.5, "y_fp = 1: S1 [m/s]": 41.5},
     },
 }
 

@@ -30,6 +30,7 @@ DECLARED = {
         "report": ("Orbit surfaces over (V, y_fp) for both scalings; regions R1 = (0, r_1) and "
                    "R2 = (r_2, r_3) of y_fp where straight rolling is stable up to 120 m/s, "
                    "values the paper withholds (IV.E)."),
+        "held_out": {"r1 = a [mm]": "r_1", "r2 = b [mm]": "r_2", "r3 = c [mm]": "r_3"},
     },
 }
 

@@ -34,6 +34,7 @@ DECLARED = {
         "report": ("a, b, c continued in F*: regions of the (y_fp/eps, F*) plane and the "
                    "envelope y_fp/eps < kappa* for F* up to 2, a value the paper withholds "
                    "(IV.E)."),
+        "held_out": {"kappa*": "kappa*"},
     },
     "fig18_v1": {
         "help": "Fig. 18 with the printed strut stage order",

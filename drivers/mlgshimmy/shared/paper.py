@@ -15,29 +15,21 @@ import os
 import numpy
 
 from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs import catalogue
 from mlgshimmy.shared.jobs.atomic import write_text
 from mlgshimmy.shared import gear
 
-# Every result value section IV prints, by the figure that shows it (the
-# `figures` set is calibrated on the first one).  Inputs the text names
-# (V = 300 m/s of Fig. 8, the 80 m/s operating region, the 120 m/s and
-# F* = 2 limits of IV.E, the y_fp of the panels) are not results.
-PAPER = {
-    "fig07": {"H, F* = 1 [m/s]": 346.1},
-    "fig10": {"H1 [m/s]": 1.5, "H2 [m/s]": 28.1, "H3 [m/s]": 142.5, "S1 [m/s]": 41.5},
-    # IV.D.1: the Fig. 10 diagram is the y_fp = 1 mm slice of Fig. 13
-    "fig13": {"y_fp = 1: H1 [m/s]": 1.5, "y_fp = 1: H2 [m/s]": 28.1,
-              "y_fp = 1: H3 [m/s]": 142.5, "y_fp = 1: S1 [m/s]": 41.5},
-}
-# The quantity the paper's number was fitted to (model.md section 5).
-CALIBRATED = {("fig07", "H, F* = 1 [m/s]")}
-# Values the paper replaces by symbols (held-out checks): our quantity ->
-# the paper's symbol.  Ours are reported; the paper's are never guessed.
-HELD_OUT = {
-    "fig12": {"a_12": "a_12", "b_12": "b_12"},
-    "fig16": {"r1 = a [mm]": "r_1", "r2 = b [mm]": "r_2", "r3 = c [mm]": "r_3"},
-    "fig18": {"kappa*": "kappa*"},
-}
+# As each figure declares them (shared.jobs.catalogue): every result value
+# section IV prints, by the figure that shows it ("paper"; inputs the text
+# names, as V = 300 m/s of Fig. 8 or the 120 m/s of IV.E, are not results),
+# the quantity the `figures` set was fitted to ("calibrated", model.md
+# section 5), and the values the paper replaces by symbols ("held_out": our
+# quantity -> the paper's symbol; ours are reported, the paper's never
+# guessed).
+_FIGURES = catalogue.figures()
+PAPER = {e["name"]: e["paper"] for e in _FIGURES if "paper" in e}
+CALIBRATED = {(e["name"], q) for e in _FIGURES for q in e.get("calibrated", [])}
+HELD_OUT = {e["name"]: e["held_out"] for e in _FIGURES if "held_out" in e}
 CLOSE = 0.02   # relative error up to which a value outside the printed digits is "close"
 
 
