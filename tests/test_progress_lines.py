@@ -18,7 +18,9 @@ from mlgshimmy.shared.jobs import Parts
 
 @pytest.fixture
 def counts(tmp_path, monkeypatch):
-    """A fresh build/.runs and run root; no part being computed."""
+    """A fresh build/.runs and run root; no part being computed; the AUTO
+    of the real build tree."""
+    monkeypatch.setenv("AUTO_DIR", autoglue.auto_dir())
     monkeypatch.setattr(paths, "BUILD", str(tmp_path / "build"))
     monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path / "runs"))
     monkeypatch.setenv(paths.PART_ENV, "")   # restored after the test, whatever it sets
