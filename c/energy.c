@@ -5,24 +5,52 @@
 #define DUAL_N 0
 #include "vector_field.h"
 
-/* Integral of F_keta from eta_ref to eta: 5-point Gauss-Legendre on panels of
- * at most 0.1 mm (the integrand has no closed-form antiderivative). */
-static double strut_potential(const mlg_constants *c, double eta_ref, double eta)
+/* The integral of force(ctx, x) from a to b: 5-point Gauss-Legendre on
+ * equal panels no wider than `panel` (at most 1e6 of them); the integrands
+ * here have no elementary antiderivative, or none for every law. */
+static double integral(double (*force)(const void *, double), const void *ctx, double a,
+                       double b, double panel)
 {
     static const double node[5] = {-0.9061798459386640, -0.5384693101056831, 0.0,
                                    0.5384693101056831, 0.9061798459386640};
     static const double weight[5] = {0.2369268850561891, 0.4786286704993665,
                                      0.5688888888888889, 0.4786286704993665,
                                      0.2369268850561891};
-    /* at most 1e6 panels: an int, whatever stroke z_tlk0 allows */
-    int panels = 1 + (int)fmin(fabs(eta - eta_ref) / 1e-4, 1e6);
-    double h = (eta - eta_ref) / panels, sum = 0.0;
+    int panels = 1 + (int)fmin(fabs(b - a) / panel, 1e6);
+    double h = (b - a) / panels, sum = 0.0;
     for (int k = 0; k < panels; k++) {
-        double mid = eta_ref + (k + 0.5) * h;
-        for (int j = 0; j < 5; j++)
-            sum += weight[j] * strut_spring_force(c, d_const(mid + 0.5 * h * node[j])).v;
+        double mid = a + (k + 0.5) * h;
+        for (int j = 0; j < 5; j++) sum += weight[j] * force(ctx, mid + 0.5 * h * node[j]);
     }
     return 0.5 * h * sum;
+}
+
+static double strut_force(const void *c, double eta)
+{
+    return strut_spring_force(c, d_const(eta)).v;
+}
+
+static double link_force(const void *mp, double y)
+{
+    const model_parameters *m = mp;
+    return torque_link_force((int)m->c->freeplay_law, MLG_MODE_BY_STATE, m->k_tlk, d_const(y),
+                             m->yfp, m->eps).v;
+}
+
+/* The torque links' potential: the integral of the law's force from 0 to y,
+ * split where a law may bend (|y| = y_fp, y_fp +- eps) so that each piece
+ * is smooth, on panels of eps/16 */
+static double link_potential(const model_parameters *mp, double y)
+{
+    double yfp = mp->yfp.v, eps = mp->eps.v, s = y < 0.0 ? -1.0 : 1.0;
+    double bends[4] = {yfp - eps, yfp, yfp + eps, fabs(y)}, from = 0.0, sum = 0.0;
+    double panel = eps > 0.0 ? eps / 16.0 : fmax(fabs(y), 1e-300);
+    for (int k = 0; k < 4; k++) {
+        double to = fmin(fmax(bends[k], from), fabs(y));
+        sum += integral(link_force, mp, s * from, s * to, panel);
+        from = to;
+    }
+    return sum;
 }
 
 int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
@@ -57,8 +85,9 @@ int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
 
     /* potential: lateral and longitudinal springs, torque links, oleo, load F_z at height H */
     double r_tlk = torque_link_radius(mp.c, l.z_tlk).v;
-    double links = torque_link_energy(mp.k_tlk, d_const(r_tlk * psi_s), mp.yfp, mp.eps).v;
+    double links = link_potential(&mp, r_tlk * psi_s);
+    double strut = integral(strut_force, mp.c, eta_ref, eta, 1e-4);   /* 0.1 mm panels */
     out->potential = 0.5 * (s.k_delta.v * delta * delta + p->k_beta * beta * beta) + links
-                     + strut_potential(mp.c, eta_ref, eta) + mp.F_z.v * L_beta * q.cos_phi.v;
+                     + strut + mp.F_z.v * L_beta * q.cos_phi.v;
     return isfinite(out->kinetic) && isfinite(out->potential) ? MLG_OK : MLG_NOT_FINITE;
 }

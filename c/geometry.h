@@ -36,6 +36,13 @@ static inline sidestay sidestay_geometry(const model_parameters *mp)
     return g;
 }
 
+/* psi_s = psi + beta sin p: the axle's twist about the strut (after eq. 6),
+ * which deflects the torque-link apex by y_tlk = r_tlk psi_s */
+static inline dual twist_angle(dual psi, dual beta, dual sin_p)
+{
+    return d_add(psi, d_mul(beta, sin_p));
+}
+
 /* Lengths that shorten with the compression eta (section II.A). */
 typedef struct {
     dual L_beta, L_delta, z_tlk;
@@ -78,7 +85,7 @@ static inline void pose_at(pose *q, const model_parameters *mp, const sidestay *
                            const strut_lengths *s, dual psi, dual delta, dual beta)
 {
     const mlg_constants *c = mp->c;
-    dual psi_s = d_add(psi, d_mul(beta, g->sin_p));               /* psi_s = psi + beta sin p */
+    dual psi_s = twist_angle(psi, beta, g->sin_p);
     dmat R_b, R_d, R_bd, R_p, R_bdp;
     m_rotation(&R_b, &g->u_beta, beta);
     m_rotation(&R_d, &g->u_delta0, delta);

@@ -7,12 +7,14 @@
 
 #include "mlg_model.h"
 
-int mlg_rhs_jacobian_generic(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX],
-                             double dfdu[MLG_NX * MLG_NX], double dfdp[MLG_NX * MLG_NPAR]);
+int mlg_rhs_jacobian_generic(const mlg_params *p, const int *modes, const double u[MLG_NX],
+                             double f[MLG_NX], double dfdu[MLG_NX * MLG_NX],
+                             double dfdp[MLG_NX * MLG_NPAR]);
 
 #ifdef MLG_HAVE_AVX2_VARIANT
-int mlg_rhs_jacobian_avx2(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX],
-                          double dfdu[MLG_NX * MLG_NX], double dfdp[MLG_NX * MLG_NPAR]);
+int mlg_rhs_jacobian_avx2(const mlg_params *p, const int *modes, const double u[MLG_NX],
+                          double f[MLG_NX], double dfdu[MLG_NX * MLG_NX],
+                          double dfdp[MLG_NX * MLG_NPAR]);
 #endif
 
 #endif

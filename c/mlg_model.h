@@ -144,11 +144,40 @@ int mlg_energy(const mlg_params *p, const double u[MLG_NX], double eta_ref,
 
 /* ---- freeplay, in plain doubles for plots and boundaries (vector_field_value.c; epsilon in parameters.c) ---- */
 double mlg_r_tlk(const mlg_params *p, double eta);                 /* m */
-/* Torque-link moment divided by r_tlk, i.e. force [N], for deflection y_tlk [m]:
- * eq. (15) if eps_m > 0, the non-smooth eq. (14) if eps_m == 0. */
-double mlg_torque_link_force(double k_tlk, double y_tlk, double yfp_m, double eps_m);
+/* Torque-link moment divided by r_tlk, i.e. force [N], for deflection y_tlk [m]
+ * under freeplay law `law` (freeplay_laws.h; 0 is eq. 15): its eps_m > 0
+ * form, or the non-smooth eq. (14) if eps_m == 0; NaN for an unknown law. */
+double mlg_torque_link_force(int law, double k_tlk, double y_tlk, double yfp_m, double eps_m);
 /* epsilon in metres for the parameters in force: (eps_abs + eps_rel y_fp) mm */
 double mlg_epsilon_m(const mlg_params *p);
+
+/* ---- freeplay laws by name (freeplay_laws.c) ---- */
+int mlg_freeplay_law_count(void);
+const char *mlg_freeplay_law_name(int law);       /* "atan", ...; NULL if out of range */
+int mlg_freeplay_law_index(const char *name);     /* or -1 */
+int mlg_freeplay_law_uses_eps(int law);           /* 1 if its shape has the width eps */
+
+/* ---- the non-smooth model in modes (vector_field_*.c) ---- */
+/* Discrete variables of the piecewise-smooth model: each takes a mode
+ * (MLG_MODE_BY_STATE: the mode the state lies in). */
+enum mlg_discrete { MLG_DISCRETE_FREEPLAY, MLG_NDISCRETE };
+/* The modes of the freeplay under eq. (14) */
+enum mlg_freeplay_mode {
+    MLG_MODE_BY_STATE = -1,
+    MLG_MODE_GAP = 0,            /* |y_tlk| < y_fp: no torque-link force */
+    MLG_MODE_CONTACT_POS = 1,    /* y_tlk >= y_fp: k_tlk (y_tlk - y_fp) */
+    MLG_MODE_CONTACT_NEG = 2     /* y_tlk <= -y_fp: k_tlk (y_tlk + y_fp) */
+};
+/* mlg_rhs and mlg_rhs_jacobian with each discrete variable held in the mode
+ * modes[MLG_DISCRETE_...] (modes == NULL: all by state).  A mode other than
+ * MLG_MODE_BY_STATE needs the law it belongs to (freeplay_law nonsmooth),
+ * else MLG_BAD_PARAMETER.  Each mode's field extends smoothly beyond its
+ * switching surfaces. */
+int mlg_rhs_in_modes(const mlg_params *p, const int *modes, const double u[MLG_NX],
+                     double f[MLG_NX]);
+int mlg_rhs_jacobian_in_modes(const mlg_params *p, const int *modes, const double u[MLG_NX],
+                              double f[MLG_NX], double dfdu[MLG_NX * MLG_NX],
+                              double dfdp[MLG_NX * MLG_NPAR]);
 
 /* ---- straight-rolling equilibrium (equilibrium.c) ---- */
 /* Newton on f(u) = 0 from psi = delta = lambda = rates = 0 and the axial

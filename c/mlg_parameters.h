@@ -14,8 +14,8 @@
  * under the paper's symbol, with its `table` value.
  * MLG_SWITCHES lists the model switches: discrete choices between variants
  * of the equations, never differentiated.  A switch with an AUTO slot
- * (par > 0) is read from PAR(par); par = 0 marks an option for tests only
- * (docs/model.md, section 8).
+ * (par > 0) is read from PAR(par); one with par = 0 only from the constants
+ * file (docs/model.md, sections 8 and 9).
  *
  * X(name, value, unit, description)
  */
@@ -45,7 +45,9 @@
     X(strut_variant, 14, 0.0, "-", "F_keta stage order: 0 monotone (swapped), 1 as "  \
                                   "printed")                                       \
     X(tyre_forces,  0, 1.0, "-",  "1: tyre forces act on the gear; 0 (tests): "     \
-                                  "ideal frictionless support under the axle")
+                                  "ideal frictionless support under the axle")    \
+    X(freeplay_law, 0, 0.0, "-",  "torque-link freeplay law: its index in "          \
+                                  "MLG_FREEPLAY_LAWS (c/freeplay_laws.h), 0 eq. (15)")
 
 /* PAR(15): which file of constant overrides FUNC reads (models/mlg.c):
  * k > 0 reads "mlg.constants.<k>" in the run directory, 0 reads none. */

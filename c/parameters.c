@@ -182,6 +182,11 @@ int mlg_params_unusable(const mlg_params *p, char *msg, size_t n)
     if (p->strut_variant != 0.0 && p->strut_variant != 1.0)
         return reject(msg, n, "parameter strut_variant = %g must be 0 (monotone) or 1 "
                       "(as printed)", p->strut_variant);
+    if (!(p->freeplay_law >= 0.0 && p->freeplay_law < mlg_freeplay_law_count() &&
+          p->freeplay_law == (int)p->freeplay_law))
+        return reject(msg, n, "parameter freeplay_law = %g must be the index of a law in "
+                      "c/freeplay_laws.h (0 to %d)", p->freeplay_law,
+                      mlg_freeplay_law_count() - 1);
     return 0;
 }
 
@@ -198,11 +203,13 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
         return reject(msg, n, "parameter eps_abs = %g mm: smoothing must be >= 0", p->eps_abs);
     if (p->eps_rel < 0.0)
         return reject(msg, n, "parameter eps_rel = %g: smoothing must be >= 0", p->eps_rel);
-    if (p->yfp > 0.0 && !(mlg_epsilon_m(p) > 0.0))
+    if (p->yfp > 0.0 && !(mlg_epsilon_m(p) > 0.0) &&
+        mlg_freeplay_law_uses_eps((int)p->freeplay_law))
         return reject(msg, n,
                       "parameter eps_abs/eps_rel: smoothing epsilon = %g mm must be > 0 "
-                      "when yfp = %g mm > 0 (eq. 15 needs epsilon > 0)",
-                      p->eps_abs + p->eps_rel * p->yfp, p->yfp);
+                      "when yfp = %g mm > 0 (freeplay law %s needs epsilon > 0)",
+                      p->eps_abs + p->eps_rel * p->yfp, p->yfp,
+                      mlg_freeplay_law_name((int)p->freeplay_law));
     if (p->c_psi < 0.0)
         return reject(msg, n, "parameter c_psi = %g N m s/rad: damping must be >= 0", p->c_psi);
     if (!(p->k_tlk > 0.0))

@@ -23,14 +23,27 @@ static inline void describe(const gear_state *x, dual F_dyn, dual F_keta, dual F
                             const dual M[3], mlg_diagnostics *d);
 static inline void describe_tyre(const tyre_contact *t, int i, dual F, mlg_diagnostics *d);
 
-/* u: the states, seeded by the caller; PAR(1) is derivative direction dir_par1
+/* The freeplay's mode: MLG_MODE_BY_STATE, or a mode of eq. (14) when that
+ * law is selected; -2 for a mode that cannot be used */
+static inline int freeplay_mode(const mlg_params *p, const int *modes)
+{
+    int mode = modes != NULL ? modes[MLG_DISCRETE_FREEPLAY] : MLG_MODE_BY_STATE;
+    if (mode == MLG_MODE_BY_STATE) return mode;
+    int known = mode >= MLG_MODE_GAP && mode <= MLG_MODE_CONTACT_NEG;
+    return known && (int)p->freeplay_law == MLG_FREEPLAY_nonsmooth ? mode : -2;
+}
+
+/* u: the states, seeded by the caller; modes: those of the discrete
+ * variables (NULL: by state); PAR(1) is derivative direction dir_par1
  * (model_parameters_seed) */
-static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], int dir_par1,
-                               dual f[MLG_NX], mlg_diagnostics *diag)
+static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], const int *modes,
+                               int dir_par1, dual f[MLG_NX], mlg_diagnostics *diag)
 {
     for (int i = 0; i < MLG_NX; i++) f[i] = d_const(0.0);
     int status = domain_status(p, u);
     if (status != MLG_OK) return status;
+    int mode = freeplay_mode(p, modes);
+    if (mode == -2) return MLG_BAD_PARAMETER;
     const dual psi = u[MLG_PSI], delta = u[MLG_DELTA], beta = u[MLG_BETA], eta = u[MLG_ETA];
     model_parameters mp = model_parameters_seed(p, dir_par1);
     gear_rates w = {.psi_dot = u[MLG_PSI_DOT], .delta_dot = u[MLG_DELTA_DOT],
@@ -39,7 +52,7 @@ static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], int di
 
     /* section II: side stay (Fig. 3), strut lengths and structure (II.A), pose */
     sidestay g = sidestay_geometry(&mp);
-    x.psi_s = d_add(psi, d_mul(beta, g.sin_p));                      /* after eq. (6) */
+    x.psi_s = twist_angle(psi, beta, g.sin_p);
     x.theta_a = d_add(x.psi_s, g.m);
     x.theta_a_dot = d_add(w.psi_dot, d_mul(w.beta_dot, g.sin_p));
     /* psi_s' = psi' + beta_twist is the axle's rate relative to the strut; as
@@ -56,7 +69,7 @@ static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], int di
 
     /* section III: torque links, eqs. (14)-(16) */
     x.r_tlk = torque_link_radius(mp.c, l.z_tlk);
-    x.M_kpsi = torsional_stiffness_moment(&mp, x.r_tlk, x.psi_s);
+    x.M_kpsi = torsional_stiffness_moment(&mp, x.r_tlk, x.psi_s, mode);
     x.M_cpsi = torsional_damping_moment(&mp, twist_rate);
 
     /* eq. (4): the strut's axial load and the tyres' share of it (II.B.1) */

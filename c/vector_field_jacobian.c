@@ -16,19 +16,20 @@
 _Static_assert(DUAL_N == MLG_NX, "one derivative direction per state");
 _Static_assert(MLG_NPAR <= DUAL_N, "a derivative direction for every PAR in the second pass");
 
-int MLG_JACOBIAN_VARIANT(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX],
-                         double dfdu[MLG_NX * MLG_NX], double dfdp[MLG_NX * MLG_NPAR])
+int MLG_JACOBIAN_VARIANT(const mlg_params *p, const int *modes, const double u[MLG_NX],
+                         double f[MLG_NX], double dfdu[MLG_NX * MLG_NX],
+                         double dfdp[MLG_NX * MLG_NPAR])
 {
     dual x[MLG_NX], fx[MLG_NX];
     for (int i = 0; i < MLG_NX; i++) x[i] = d_var(u[i], i);
-    int status = vector_field(p, x, MLG_PARS_PLAIN, fx, NULL);
+    int status = vector_field(p, x, modes, MLG_PARS_PLAIN, fx, NULL);
     for (int i = 0; i < MLG_NX; i++) {
         f[i] = fx[i].v;
         for (int j = 0; j < MLG_NX; j++) dfdu[i + MLG_NX * j] = d_slope(fx[i], j);
     }
     if (dfdp == NULL) return status;
     for (int i = 0; i < MLG_NX; i++) x[i] = d_const(u[i]);
-    status |= vector_field(p, x, 0, fx, NULL);   /* df/dp can overflow alone */
+    status |= vector_field(p, x, modes, 0, fx, NULL);   /* df/dp can overflow alone */
     for (int i = 0; i < MLG_NX; i++) {
         if (status != MLG_OK) f[i] = 0.0;
         for (int k = 0; k < MLG_NPAR; k++) dfdp[i + MLG_NX * k] = d_slope(fx[i], k);

@@ -7,20 +7,26 @@ static void load_state(const double u[MLG_NX], dual x[MLG_NX])
     for (int i = 0; i < MLG_NX; i++) x[i] = d_const(u[i]);
 }
 
-int mlg_rhs(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX])
+int mlg_rhs_in_modes(const mlg_params *p, const int *modes, const double u[MLG_NX],
+                     double f[MLG_NX])
 {
     dual x[MLG_NX], fx[MLG_NX];
     load_state(u, x);
-    int status = vector_field(p, x, MLG_PARS_PLAIN, fx, NULL);
+    int status = vector_field(p, x, modes, MLG_PARS_PLAIN, fx, NULL);
     for (int i = 0; i < MLG_NX; i++) f[i] = fx[i].v;
     return status;
+}
+
+int mlg_rhs(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX])
+{
+    return mlg_rhs_in_modes(p, NULL, u, f);
 }
 
 int mlg_diagnose(const mlg_params *p, const double u[MLG_NX], mlg_diagnostics *out)
 {
     dual x[MLG_NX], fx[MLG_NX];
     load_state(u, x);
-    return vector_field(p, x, MLG_PARS_PLAIN, fx, out);
+    return vector_field(p, x, NULL, MLG_PARS_PLAIN, fx, out);
 }
 
 double mlg_r_tlk(const mlg_params *p, double eta)
@@ -28,7 +34,9 @@ double mlg_r_tlk(const mlg_params *p, double eta)
     return torque_link_radius(&p->constants, d_const(p->z_tlk0 - eta)).v;
 }
 
-double mlg_torque_link_force(double k_tlk, double y_tlk, double yfp_m, double eps_m)
+double mlg_torque_link_force(int law, double k_tlk, double y_tlk, double yfp_m, double eps_m)
 {
-    return torque_link_force(d_const(k_tlk), d_const(y_tlk), d_const(yfp_m), d_const(eps_m)).v;
+    if (law < 0 || law >= MLG_FREEPLAY_NLAWS) return NAN;
+    return torque_link_force(law, MLG_MODE_BY_STATE, d_const(k_tlk), d_const(y_tlk),
+                             d_const(yfp_m), d_const(eps_m)).v;
 }

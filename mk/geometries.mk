@@ -13,7 +13,7 @@
 #   make -j2 design-map RHO=12 MU=7             the default grid, (10, 10) marked
 DESIGN_RHO ?= -20:20:10
 DESIGN_MU ?= -20:20:10
-DESIGN_GEAR := $(strip $(RHO)$(MU)$(EOM)$(SET))
+DESIGN_GEAR := $(strip $(RHO)$(MU)$(EOM)$(GEAR_SET))
 # `design-map` is the job grid `design_map` (a module name has no hyphen);
 # with a gear given it is that grid made again in the base tree, without
 # the gear, the user's angles as DESIGN_MARK

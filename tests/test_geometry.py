@@ -160,7 +160,7 @@ def test_y_tlk_at_rho_mu_10_as_in_the_model_notes():
     from mlgshimmy.shared import domain
     d = domain.diagnose(model, u)
     assert d["M_kpsi"] / d["r_tlk"] == pytest.approx(
-        mlgmodel.torque_link_force(model["k_tlk"], y, 1e-3, model.epsilon_m()), rel=1e-12)
+        mlgmodel.torque_link_force(0, model["k_tlk"], y, 1e-3, model.epsilon_m()), rel=1e-12)
     mirror = mlgmodel.Model("figures", Fstar=1.0, V=50.0, yfp=1.0, eps_rel=0.1,
                             **{**TEN, "rho": -TEN["rho"], "mu": -TEN["mu"]})
     assert geometry.y_tlk(mirror, mirror.equilibrium()) == pytest.approx(-y, rel=1e-9)

@@ -68,7 +68,7 @@ $(addprefix submit-,$(FIGURES_WITH_PARTS)): submit-%: $(SUBMIT_PREREQUISITES)
 # the submitting shell's environment)
 SUBMIT_GEAR = $(if $(GEAR_GIVEN),RHO=$(call shell_quote,$(MLG_RHO_DEG)) \
     MU=$(call shell_quote,$(MLG_MU_DEG)) EOM=$(call shell_quote,$(MLG_EOM)) \
-    SET=$(call shell_quote,$(SET)))
+    SET=$(call shell_quote,$(GEAR_SET)))
 $(addprefix submit-,$(SUBMIT_WHOLE)): submit-%: $(SUBMIT_PREREQUISITES)
 	set -eo pipefail; printf '%s\n' $(call shell_quote,$(SUBMIT_MAKE) $* $(SUBMIT_GEAR)$(if \
 	    $(SUBMIT_CARRY), $(SUBMIT_CARRY))) | \

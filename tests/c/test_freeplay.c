@@ -14,9 +14,9 @@ int main(void)
     for (int i = 0; i <= 400; i++) {
         double y = -3e-3 + 6e-3 * i / 400.0;
         if (fabs(fabs(y) - yfp) < gap) continue;
-        double exact = mlg_torque_link_force(k, y, yfp, 0.0);
-        worst_coarse = fmax(worst_coarse, fabs(mlg_torque_link_force(k, y, yfp, 1e-2 * yfp) - exact));
-        worst_fine = fmax(worst_fine, fabs(mlg_torque_link_force(k, y, yfp, 1e-4 * yfp) - exact));
+        double exact = mlg_torque_link_force(0, k, y, yfp, 0.0);
+        worst_coarse = fmax(worst_coarse, fabs(mlg_torque_link_force(0, k, y, yfp, 1e-2 * yfp) - exact));
+        worst_fine = fmax(worst_fine, fabs(mlg_torque_link_force(0, k, y, yfp, 1e-4 * yfp) - exact));
     }
     check(worst_fine <= k * 1e-4 * yfp, "eq15_to_eq14_fine",
           "max |eq15 - eq14| = %.3g N at eps = 1e-4 y_fp (bound k eps = %.3g N)", worst_fine,
@@ -25,19 +25,19 @@ int main(void)
           "error %.3g N at eps = 1e-2 y_fp, %.3g N at 1e-4 y_fp", worst_coarse, worst_fine);
 
     /* inside the freeplay eq. (14) gives zero force, and eq. (15) nearly zero */
-    check(fabs(mlg_torque_link_force(k, 0.3 * yfp, yfp, 0.0)) == 0.0, "eq14_zero_inside",
-          "force %.3g", mlg_torque_link_force(k, 0.3 * yfp, yfp, 0.0));
-    check(fabs(mlg_torque_link_force(k, 0.3 * yfp, yfp, 1e-3 * yfp)) < 1e-3 * k * yfp,
+    check(fabs(mlg_torque_link_force(0, k, 0.3 * yfp, yfp, 0.0)) == 0.0, "eq14_zero_inside",
+          "force %.3g", mlg_torque_link_force(0, k, 0.3 * yfp, yfp, 0.0));
+    check(fabs(mlg_torque_link_force(0, k, 0.3 * yfp, yfp, 1e-3 * yfp)) < 1e-3 * k * yfp,
           "eq15_small_inside", "force %.3g N",
-          mlg_torque_link_force(k, 0.3 * yfp, yfp, 1e-3 * yfp));
+          mlg_torque_link_force(0, k, 0.3 * yfp, yfp, 1e-3 * yfp));
 
     /* odd symmetry, and zero freeplay is linear for any epsilon */
     double odd = 0.0, lin = 0.0;
     for (int i = 1; i <= 50; i++) {
         double y = 4e-3 * i / 50.0;
-        odd = fmax(odd, fabs(mlg_torque_link_force(k, y, yfp, 1e-4) +
-                             mlg_torque_link_force(k, -y, yfp, 1e-4)));
-        lin = fmax(lin, fabs(mlg_torque_link_force(k, y, 0.0, 1e-4) - k * y) / (k * y));
+        odd = fmax(odd, fabs(mlg_torque_link_force(0, k, y, yfp, 1e-4) +
+                             mlg_torque_link_force(0, k, -y, yfp, 1e-4)));
+        lin = fmax(lin, fabs(mlg_torque_link_force(0, k, y, 0.0, 1e-4) - k * y) / (k * y));
     }
     check(odd <= 1e-9 * k * yfp, "eq15_odd", "max |F(y) + F(-y)| = %.3g N", odd);
     check(lin <= 1e-14, "zero_freeplay_linear", "max rel. deviation from k y = %.2e", lin);

@@ -6,7 +6,10 @@
  * J_ij s_j / max_k |J_ik s_k|, and the error of a sample is the largest
  * difference of scaled entries between analytic and finite-difference
  * Jacobians.  The difference quotient is Richardson-extrapolated from steps
- * h and h/2 (truncation error O(h^4)).  Tolerance 1e-6. */
+ * h and h/2 (truncation error O(h^4)).  Tolerance 1e-6.
+ * Every freeplay law is drawn in turn; with law (14), each mode of the
+ * freeplay too (mlg_rhs_jacobian_in_modes), a fixed mode also exactly on its
+ * switching surface, where that mode's field is smooth. */
 #include <string.h>
 
 #include "jacobian_variants.h"
@@ -18,6 +21,7 @@ typedef struct {
     mlg_params p;
     double u[MLG_NX];
     const char *region;   /* inside / edge / outside the freeplay, or "zero" */
+    int modes[MLG_NDISCRETE];
 } sample;
 
 /* Central difference of f in direction j (state j, or parameter j - MLG_NX). */
@@ -34,7 +38,7 @@ static void difference(const sample *s, int j, double h, double *df)
             par[j - MLG_NX] += sign * h;
             mlg_params_set_par(&t.p, par);
         }
-        mlg_rhs(&t.p, t.u, sign > 0 ? fp : fm);
+        mlg_rhs_in_modes(&t.p, t.modes, t.u, sign > 0 ? fp : fm);
     }
     for (int i = 0; i < MLG_NX; i++) df[i] = (fp[i] - fm[i]) / (2.0 * h);
 }
@@ -69,6 +73,9 @@ static sample draw(int n)
     s.p.strut_variant = (n / 7) % 2;
     s.p.eom_terms = (n / 3) % 3;              /* every level with and without side-stay angles */
     s.p.tyre_forces = n % 13 == 5 ? 0.0 : 1.0;
+    s.p.freeplay_law = (n / 11) % mlg_freeplay_law_count();
+    int nonsmooth = s.p.freeplay_law == mlg_freeplay_law_index("nonsmooth");
+    s.modes[MLG_DISCRETE_FREEPLAY] = nonsmooth ? (n / 2) % 4 - 1 : MLG_MODE_BY_STATE;
     mlg_equilibrium(&s.p, -1.0, s.u);
 
     /* place the torque-link deflection inside, at the edge of, or outside the freeplay */
@@ -81,6 +88,8 @@ static sample draw(int n)
     } else {
         double side = unit_uniform() < 0.5 ? -1.0 : 1.0;
         if (region == 0) y = unit_between(-0.9, 0.9) * yfp;
+        else if (region == 1 && s.modes[MLG_DISCRETE_FREEPLAY] != MLG_MODE_BY_STATE && n % 3 == 0)
+            y = side * yfp;                          /* on the switching surface */
         else if (region == 1) y = side * (yfp + unit_between(-2.0, 2.0) * eps);
         else y = side * (yfp + eps * unit_between(3.0, 30.0));
         s.region = regions[region];
@@ -127,6 +136,10 @@ int main(void)
     double worst_u = 0.0, worst_p = 0.0, worst_level[3] = {0.0, 0.0, 0.0};
     int outside_domain = 0, counted = 0, per_region[4] = {0, 0, 0, 0}, angled[3] = {0, 0, 0};
     int variants_compared = 0, variants_differ = 0;
+    enum { LAWS = 16, MODES = 4 };    /* at most; checked below */
+    double worst_law[LAWS] = {0.0}, worst_mode[MODES] = {0.0};
+    int per_law[LAWS] = {0}, per_mode[MODES] = {0};
+    check(mlg_freeplay_law_count() <= LAWS, "law_table_fits", "%d laws", mlg_freeplay_law_count());
     const char *worst_where = "";
     {   /* every continuation parameter has a df/dp scale, so its column is checked */
         sample s = draw(0);
@@ -145,19 +158,19 @@ int main(void)
         double f2[MLG_NX];
         /* a random perturbation at light load can lift a wheel: outside the
          * model's domain (the status is tested in test_parameters), skipped */
-        if (mlg_rhs_jacobian(&s.p, s.u, f, J, P) != MLG_OK) {
+        if (mlg_rhs_jacobian_in_modes(&s.p, s.modes, s.u, f, J, P) != MLG_OK) {
             outside_domain++;
             continue;
         }
         /* the state-only Jacobian is the same computation with fewer directions */
-        mlg_rhs_jacobian(&s.p, s.u, f2, Jx, NULL);
+        mlg_rhs_jacobian_in_modes(&s.p, s.modes, s.u, f2, Jx, NULL);
         if (memcmp(J, Jx, sizeof J) != 0 || memcmp(f, f2, sizeof f) != 0) worst_u = INFINITY;
 #ifdef MLG_HAVE_AVX2_VARIANT
         if (__builtin_cpu_supports("avx2")) {   /* the two builds round alike */
             double fg[MLG_NX], Jg[MLG_NX * MLG_NX], Pg[MLG_NX * MLG_NPAR];
             double fa[MLG_NX], Ja[MLG_NX * MLG_NX], Pa[MLG_NX * MLG_NPAR];
-            mlg_rhs_jacobian_generic(&s.p, s.u, fg, Jg, Pg);
-            mlg_rhs_jacobian_avx2(&s.p, s.u, fa, Ja, Pa);
+            mlg_rhs_jacobian_generic(&s.p, s.modes, s.u, fg, Jg, Pg);
+            mlg_rhs_jacobian_avx2(&s.p, s.modes, s.u, fa, Ja, Pa);
             variants_compared++;
             if (memcmp(fg, fa, sizeof fg) != 0 || memcmp(Jg, Ja, sizeof Jg) != 0 ||
                 memcmp(Pg, Pa, sizeof Pg) != 0)
@@ -168,6 +181,9 @@ int main(void)
         int level = (int)s.p.eom_terms;
         if (s.p.rho != 0.0) angled[level]++;
         per_region[s.region[0] == 'i' ? 0 : s.region[0] == 'e' ? 1 : s.region[0] == 'o' ? 2 : 3]++;
+        int law = (int)s.p.freeplay_law, mode = s.modes[MLG_DISCRETE_FREEPLAY] + 1;
+        per_law[law]++;
+        if (law == mlg_freeplay_law_index("nonsmooth")) per_mode[mode]++;
 
         double scale[MLG_NDIR], fd[MLG_NDIR][MLG_NX], row[MLG_NX];
         scales(&s, scale);
@@ -187,6 +203,9 @@ int main(void)
                 double an = j < MLG_NX ? J[i + MLG_NX * j] : P[i + MLG_NX * (j - MLG_NX)];
                 double err = fabs(an - fd[j][i]) * scale[j] / row[i];
                 if (s.p.rho != 0.0) worst_level[level] = fmax(worst_level[level], err);
+                worst_law[law] = fmax(worst_law[law], err);
+                if (law == mlg_freeplay_law_index("nonsmooth"))
+                    worst_mode[mode] = fmax(worst_mode[mode], err);
                 if (j < MLG_NX && err > worst_u) {
                     worst_u = err;
                     worst_where = s.region;
@@ -208,6 +227,22 @@ int main(void)
         check(angled[level] > 200 && worst_level[level] <= 1e-6, name,
               "eom_terms %d: %d samples with rho, mu != 0, max row-scaled error %.2e (df/du "
               "and df/dp)", level, angled[level], worst_level[level]);
+    }
+    for (int law = 0; law < mlg_freeplay_law_count(); law++) {
+        char name[64];
+        snprintf(name, sizeof name, "jacobian_freeplay_law_%s", mlg_freeplay_law_name(law));
+        check(per_law[law] >= 150 && worst_law[law] <= 1e-6, name,
+              "%d samples, max row-scaled error %.2e (df/du and df/dp)", per_law[law],
+              worst_law[law]);
+    }
+    static const char *const mode_names[MODES] = {"by_state", "gap", "contact_pos",
+                                                  "contact_neg"};
+    for (int mode = 0; mode < MODES; mode++) {
+        char name[64];
+        snprintf(name, sizeof name, "jacobian_eq14_mode_%s", mode_names[mode]);
+        check(per_mode[mode] >= 40 && worst_mode[mode] <= 1e-6, name,
+              "%d samples of law (14), max row-scaled error %.2e", per_mode[mode],
+              worst_mode[mode]);
     }
     check(worst_u <= 1e-6, "dfdu_matches_finite_differences",
           "max row-scaled error %.2e (worst sample: %s)", worst_u, worst_where);

@@ -53,6 +53,21 @@ int main(void)
     p.strut_variant = 0.5;
     expect_rejected("strut_variant_not_a_switch", p, "parameter strut_variant = 0.5");
     p = table;
+    p.freeplay_law = mlg_freeplay_law_count();
+    expect_rejected("freeplay_law_unknown", p, "parameter freeplay_law = 5");
+    p = table;
+    p.freeplay_law = 1.5;
+    expect_rejected("freeplay_law_not_an_index", p, "parameter freeplay_law = 1.5");
+    p = table;
+    p.yfp = 1.0;
+    p.eps_rel = 0.0;
+    expect_rejected("smoothed_law_needs_eps", p, "freeplay law atan needs epsilon > 0");
+    p.freeplay_law = mlg_freeplay_law_index("nonsmooth");
+    {
+        char msg[256];
+        check(mlg_params_check(&p, msg, sizeof msg) == 0, "law_14_needs_no_eps", "%s", msg);
+    }
+    p = table;
     p.eta_stage = -0.1;
     expect_rejected("eta_stage_outside_stroke", p, "parameter eta_stage = -0.1 m");
     p = table;

@@ -1,11 +1,12 @@
 """Fig. 6: torque-link force profiles M_kpsi / r_tlk against y_tlk, eq. (15)
-for epsilon = 2, 1, 0.5, 0.2, 0.1 y_fp and the non-smooth eq. (14) dashed;
-panel (b) zooms on one corner to show the smoothing region, whose half-width
-is about epsilon."""
+(or the gear's freeplay law, FREEPLAY=) for epsilon = 2, 1, 0.5, 0.2, 0.1
+y_fp and the non-smooth eq. (14) dashed; panel (b) zooms on one corner to
+show the smoothing region, whose half-width is about epsilon."""
 import matplotlib.pyplot as plt
 import numpy
 
 from mlgshimmy.shared import draw
+from mlgshimmy.shared import freeplay as fp
 from mlgshimmy.shared import mlgmodel
 
 # What make, make help, make submit and the report know of this figure
@@ -25,8 +26,7 @@ RATIOS = (2.0, 1.0, 0.5, 0.2, 0.1)      # epsilon / y_fp
 
 
 def profile(yfp_m, eps_m, y):
-    k_tlk = mlgmodel.Model("figures")["k_tlk"]
-    return numpy.array([mlgmodel.torque_link_force(k_tlk, v, yfp_m, eps_m) for v in y])
+    return fp.force(y, yfp_m, eps_m, mlgmodel.Model("figures")["k_tlk"])
 
 
 def main():
@@ -49,7 +49,7 @@ def main():
     zoom.annotate(r"$y_{fp} \pm \epsilon$ ($\epsilon$ = 0.1 $y_{fp}$)", (1.0, -3.2),
                   ha="center", va="center", fontsize=8)
     k_tlk = mlgmodel.Model("figures")["k_tlk"]
-    full.set_title(rf"(a) eq. (15), $y_{{fp}}$ = 1 mm, $k_{{tlk}}$ = {draw.sci(k_tlk)} N/m")
+    full.set_title(rf"(a) {fp.law_label()}, $y_{{fp}}$ = 1 mm, $k_{{tlk}}$ = {draw.sci(k_tlk)} N/m")
     zoom.set_title("(b) the smoothing region at the contact corner")
     full.legend(fontsize=8)
     draw.figure_title(fig, "Fig. 6: torque-link force profiles")

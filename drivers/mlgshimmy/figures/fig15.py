@@ -1,7 +1,8 @@
 """Fig. 15: the stiffness profiles of Figs. 13 and 14 rescaled,
 x* = y_tlk / y_fp and y* = M_kpsi / (r_tlk k_tlk y_fp): (a) eps = 0.1 y_fp,
-where all coincide, (b) eps = 0.1 mm, where they do not.  Eq. (15) only:
-no continuation, no AUTO import and nothing to cache (it draws in seconds)."""
+where all coincide, (b) eps = 0.1 mm, where they do not.  Eq. (15), or the
+gear's freeplay law (FREEPLAY=): no continuation, no AUTO import and
+nothing to cache (it draws in seconds)."""
 import matplotlib.pyplot as plt
 import numpy
 
@@ -55,7 +56,8 @@ def main():
             spread(scaling, freeplays, k_tlk)
     paper.report("fig15", ours)
     axes[0].set_ylabel(r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$")
-    draw.figure_title(fig, "Fig. 15: rescaled torque-link stiffness profiles")
+    draw.figure_title(fig, "Fig. 15: rescaled torque-link stiffness profiles, "
+                      + fp.law_label())
     fig.tight_layout()
     draw.save(fig, "fig15")
 

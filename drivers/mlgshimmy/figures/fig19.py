@@ -8,8 +8,8 @@ import matplotlib.pyplot as plt
 import numpy
 
 from mlgshimmy.shared import draw
+from mlgshimmy.shared import freeplay as fp
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 
 # What make, make help, make submit and the report know of this figure
@@ -35,8 +35,7 @@ def rescaled(kappa, x):
     (no freeplay allowed) is its eps -> infinity limit y* = x*."""
     if kappa == 0:
         return numpy.array(x, dtype=float)
-    return numpy.array([mlgmodel.torque_link_force(1.0, 1e-3 * v, 1e-3, 1e-3 / kappa) / 1e-3
-                        for v in x])
+    return fp.force(1e-3 * numpy.asarray(x), 1e-3, 1e-3 / kappa) / 1e-3
 
 
 def read_kappa(name):

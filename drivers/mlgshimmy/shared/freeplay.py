@@ -1,13 +1,14 @@
-"""The torque-link stiffness profile of eq. (15) under the two ways of
-varying the freeplay y_fp (section III), with no AUTO import: Fig. 15 draws
-from it alone, the magnitude figures (shared.magnitude) run AUTO on it.
+"""The torque-link stiffness profile of eq. (15), or of the gear's freeplay
+law (shared.gear: FREEPLAY=), under the two ways of varying the freeplay
+y_fp (section III), with no AUTO import: Fig. 15 draws from it alone, the
+magnitude figures (shared.magnitude) run AUTO on it.
 
 Scalings: "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1, eps_abs = 0),
 "fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).
 """
 import numpy
 
-from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import gear, mlgmodel, overlay
 
 SCALINGS = {"ratio": {"eps_abs": 0.0, "eps_rel": 0.1},
             "fixed": {"eps_abs": 0.1, "eps_rel": 0.0}}
@@ -24,9 +25,21 @@ def epsilon(case):
     return case["eps_abs"] + case["eps_rel"] * case["yfp"]
 
 
+def law_label() -> str:
+    """The gear's freeplay law, as a legend or title names it."""
+    law = gear.current().law()
+    return "eq. (15)" if law == 0 else f"the {overlay.law_name(law)} law"
+
+
+def force(y_m, yfp_m, eps_m, k_tlk=1.0):
+    """The gear's freeplay law: force [N] at the deflections y_m [m]
+    (eq. (14) at eps_m = 0)."""
+    law = gear.current().law()
+    return numpy.array([mlgmodel.torque_link_force(law, k_tlk, v, yfp_m, eps_m) for v in y_m])
+
+
 def profile(yfp, scaling, k_tlk, span=3.0, n=801):
-    """Eq. (15): (y_tlk [mm], M_kpsi/r_tlk [N]) over |y_tlk| <= span*y_fp."""
+    """The gear's law: (y_tlk [mm], M_kpsi/r_tlk [N]) over |y_tlk| <= span*y_fp."""
     eps = epsilon({**SCALINGS[scaling], "yfp": yfp})
     y = numpy.linspace(-span * yfp, span * yfp, n)
-    force = [mlgmodel.torque_link_force(k_tlk, 1e-3 * v, 1e-3 * yfp, 1e-3 * eps) for v in y]
-    return y, numpy.array(force)
+    return y, force(1e-3 * y, 1e-3 * yfp, 1e-3 * eps, k_tlk)

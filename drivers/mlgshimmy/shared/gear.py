@@ -1,6 +1,7 @@
 """The gear every figure and study of a process is made for: the paper's
 gear, changed by a side-stay geometry (shared.geometry: RHO, MU, EOM) and
-by an overlay of any other constant or parameter (shared.overlay: SET).
+by an overlay of any other constant or parameter, the freeplay law among
+them (shared.overlay: SET, FREEPLAY).
 
     make fig10 RHO=10 MU=10 SET='k_tlk=3.51e7'      # mk/gear.mk sets
     MLG_RHO_DEG=10 MLG_MU_DEG=10 MLG_SET='k_tlk=3.51e7' python3 -m mlgshimmy.figures.fig10
@@ -69,12 +70,16 @@ class Gear:
         if self.baseline:
             return "baseline"
         words = [] if self.geometry.baseline else [self.geometry.tag]
-        words += [f"{name}_{overlay.value_text(value)}" for name, value in self.overlay]
+        words += [overlay.tag_word(name, value) for name, value in self.overlay]
         return "+".join(words)
 
     def parameters(self) -> Dict[str, float]:
         """The model parameters it sets ({} at the baseline)."""
         return {**self.geometry.parameters(), **dict(self.overlay)}
+
+    def law(self) -> int:
+        """The freeplay law's index (c/freeplay_laws.h; 0: eq. 15)."""
+        return int(dict(self.overlay).get(overlay.LAW, 0))
 
     def simulator_params(self) -> Dict[str, str]:
         """--param NAME=VALUE of the simulator (shared.simulator.run's params)."""
@@ -196,7 +201,7 @@ def check() -> None:
         try:
             mlgmodel.Model(parameter_set, **model.parameters())
         except ValueError as exc:
-            given = " ".join(f"{n}={overlay.value_text(v)}" for n, v in model.overlay)
+            given = overlay.text(model.overlay, overlay.value_text)
             raise ValueError(f"SET='{given}': {exc}" if model.overlay else str(exc)) from None
 
 

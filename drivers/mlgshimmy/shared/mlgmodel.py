@@ -68,7 +68,8 @@ def library():
     lib.mlg_epsilon_m.restype = ctypes.c_double
     lib.mlg_epsilon_m.argtypes = [P]
     lib.mlg_torque_link_force.restype = ctypes.c_double
-    lib.mlg_torque_link_force.argtypes = [ctypes.c_double] * 4
+    lib.mlg_torque_link_force.argtypes = [ctypes.c_int] + [ctypes.c_double] * 4
+    lib.mlg_freeplay_law_name.restype = ctypes.c_char_p
     lib.mlg_energy.argtypes = [P, D, ctypes.c_double, ctypes.POINTER(_Energy)]
     _lib = lib
     return lib
@@ -97,15 +98,16 @@ def _table(key: str):
             MEASURES=_names(lib.mlg_measure_name),  # PAR(21) onwards, written by PVLS
             FIELDS=_names(lib.mlg_constant_name),   # every parameter, constant and switch
             UNAMES=_names(lib.mlg_state_name),      # UNAMES[i] is U(i+1)
+            LAWS=_names(lib.mlg_freeplay_law_name),  # LAWS[k]: freeplay law k
             C_PSI_FIGURES=ctypes.c_double.in_dll(lib, "MLG_C_PSI_FIGURES").value)
         _tables["NX"] = len(_tables["UNAMES"])
     return _tables[key]
 
 
 def __getattr__(name: str):
-    """PARNAMES, MEASURES, FIELDS, UNAMES, NX, C_PSI_FIGURES: read from the
-    library when first asked for, so importing this module needs no build."""
-    if name in ("PARNAMES", "MEASURES", "FIELDS", "UNAMES", "NX", "C_PSI_FIGURES"):
+    """PARNAMES, MEASURES, FIELDS, UNAMES, LAWS, NX, C_PSI_FIGURES: read from
+    the library when first asked for, so importing this module needs no build."""
+    if name in ("PARNAMES", "MEASURES", "FIELDS", "UNAMES", "LAWS", "NX", "C_PSI_FIGURES"):
         return _table(name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
@@ -280,6 +282,8 @@ def write_constants_files(rundir: str) -> None:
                    f"{text}")
 
 
-def torque_link_force(k_tlk: float, y_tlk: float, yfp_m: float, eps_m: float) -> float:
-    """Eq. (15) (eps_m > 0) or eq. (14) (eps_m == 0): force [N] at y_tlk [m]."""
-    return library().mlg_torque_link_force(k_tlk, y_tlk, yfp_m, eps_m)
+def torque_link_force(law: int, k_tlk: float, y_tlk: float, yfp_m: float,
+                      eps_m: float) -> float:
+    """Freeplay law `law` (index in LAWS; 0: eq. 15) at eps_m > 0, or eq.
+    (14) at eps_m == 0: force [N] at y_tlk [m]."""
+    return library().mlg_torque_link_force(law, k_tlk, y_tlk, yfp_m, eps_m)

@@ -10,6 +10,11 @@ own check (mlg_params_check), which shared.gear.check() runs before a
 driver starts.  What a figure sets itself (its speed, load, freeplay and
 smoothing, the strut's stage order) and the side-stay geometry (RHO, MU,
 EOM, in degrees) cannot be overlaid: the message says what to use instead.
+
+The freeplay law is overlaid by its name, `SET='freeplay_law=tanh'` (make's
+FREEPLAY=tanh adds that entry): a name of the table MLG_FREEPLAY_LAWS of
+c/freeplay_laws.h, read as text too, held as its index there (the switch
+freeplay_law); the paper's law (15), atan, is no overlay.
 """
 import difflib
 import math
@@ -21,6 +26,8 @@ from mlgshimmy.shared import number_text
 
 ENV_SET = "MLG_SET"
 HEADER = os.path.join(os.path.dirname(__file__), "..", "..", "..", "c", "mlg_parameters.h")
+LAWS_HEADER = os.path.join(os.path.dirname(HEADER), "freeplay_laws.h")
+LAW = "freeplay_law"
 TABLES = ("MLG_CONTINUATION_PARAMETERS", "MLG_SWITCHES", "MLG_CONSTANTS")
 NOT_OVERLAID = {
     **{name: "each figure sets it (its speed, load, freeplay and smoothing)"
@@ -61,6 +68,28 @@ def known() -> Dict[str, str]:
     return names
 
 
+def laws() -> Tuple[str, ...]:
+    """The freeplay laws' names, in the order of their indices."""
+    with open(LAWS_HEADER) as f:
+        text = re.sub(r"/\*.*?\*/", "", f.read(), flags=re.S)
+    return tuple(m.group(1) for m in
+                 re.finditer(r"X\(\s*(\w+)\s*,", _table_text(text, "MLG_FREEPLAY_LAWS")))
+
+
+def law_name(index: float) -> str:
+    return laws()[int(index)]
+
+
+def _law(entry: str, text: str) -> float:
+    names = laws()
+    if text not in names:
+        close = difflib.get_close_matches(text, names, n=1)
+        raise OverlayError(f"SET: {entry!r}: no freeplay law named {text!r}"
+                           + (f"; did you mean {close[0]}?" if close else "")
+                           + f" (the laws: {', '.join(names)})")
+    return float(names.index(text))
+
+
 def _number(entry: str, text: str) -> float:
     value = number_text.parse(text)
     if value is None:
@@ -88,7 +117,9 @@ def parse(text: str) -> Tuple[Tuple[str, float], ...]:
             raise OverlayError(f"SET: no parameter or constant named {name!r}{hint}")
         if name in values:
             raise OverlayError(f"SET: {name} is given twice")
-        values[name] = _number(entry, value)
+        values[name] = _law(entry, value) if name == LAW else _number(entry, value)
+    if values.get(LAW) == 0.0:
+        del values[LAW]       # the paper's law: the paper's gear
     return tuple(sorted(values.items()))
 
 
@@ -101,9 +132,22 @@ def value_text(value: float) -> str:
     return f"{value:.12g}"
 
 
+def text(items, number=repr) -> str:
+    """SET's text of (name, value) pairs, the law by its name: with the
+    default number=repr, parse(text(items)) == items; value_text for messages."""
+    return " ".join(f"{name}={law_name(value) if name == LAW else number(value)}"
+                    for name, value in items)
+
+
+def tag_word(name: str, value: float) -> str:
+    """An entry in a gear's tag: 'k_tlk_35100000', 'freeplay_tanh'."""
+    return f"freeplay_{law_name(value)}" if name == LAW else f"{name}_{value_text(value)}"
+
+
 def describe(items, units=None) -> str:
-    """'k_tlk = 3.51e+07 N/m, I_psi = 160 kg m^2' ('' for none)."""
+    """'k_tlk = 3.51e+07 N/m, I_psi = 160 kg m^2, freeplay law tanh' ('' for none)."""
     units = units if units is not None else known()
-    return ", ".join(f"{name} = {value_text(value)}"
+    return ", ".join(f"freeplay law {law_name(value)}" if name == LAW else
+                     f"{name} = {value_text(value)}"
                      + (f" {units[name]}" if units.get(name, "-") != "-" else "")
                      for name, value in items)

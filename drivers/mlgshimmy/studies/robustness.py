@@ -120,7 +120,7 @@ def make_target(target, model, log):
     """`make <target>` for the gear `model` (its output appended to log):
     (exit status, seconds)."""
     g = model.geometry
-    args = [f"SET={' '.join(f'{n}={v!r}' for n, v in model.overlay)}"] if model.overlay else []
+    args = [f"SET={overlay.text(model.overlay)}"] if model.overlay else []
     if not g.baseline:
         args += [f"RHO={g.rho_deg!r}", f"MU={g.mu_deg!r}", f"EOM={g.eom_terms}"]
     env = {k: v for k, v in os.environ.items()
