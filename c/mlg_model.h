@@ -157,7 +157,7 @@ const char *mlg_freeplay_law_name(int law);       /* "atan", ...; NULL if out of
 int mlg_freeplay_law_index(const char *name);     /* or -1 */
 int mlg_freeplay_law_uses_eps(int law);           /* 1 if its shape has the width eps */
 
-/* ---- the non-smooth model in modes (vector_field_*.c) ---- */
+/* ---- the non-smooth model in modes (vector_field_*.c, switching.c) ---- */
 /* Discrete variables of the piecewise-smooth model: each takes a mode
  * (MLG_MODE_BY_STATE: the mode the state lies in). */
 enum mlg_discrete { MLG_DISCRETE_FREEPLAY, MLG_NDISCRETE };
@@ -178,6 +178,33 @@ int mlg_rhs_in_modes(const mlg_params *p, const int *modes, const double u[MLG_N
 int mlg_rhs_jacobian_in_modes(const mlg_params *p, const int *modes, const double u[MLG_NX],
                               double f[MLG_NX], double dfdu[MLG_NX * MLG_NX],
                               double dfdp[MLG_NX * MLG_NPAR]);
+
+/* The switching functions, one table (switching.c): X(name, discrete
+ * variable, mode below, mode above): crossing the surface h = 0 upwards puts
+ * the variable in `mode above`, downwards in `mode below`.
+ * h+- = r_tlk(eta) psi_s -+ y_fp (section III), psi_s = psi + beta sin p. */
+#define MLG_SWITCHING_FUNCTIONS(X)                                                    \
+    X(freeplay_upper, MLG_DISCRETE_FREEPLAY, MLG_MODE_GAP, MLG_MODE_CONTACT_POS)     \
+    X(freeplay_lower, MLG_DISCRETE_FREEPLAY, MLG_MODE_CONTACT_NEG, MLG_MODE_GAP)
+enum mlg_switching_index {
+#define X(name, variable, below, above) MLG_SWITCH_##name,
+    MLG_SWITCHING_FUNCTIONS(X)
+#undef X
+    MLG_NSWITCH
+};
+const char *mlg_switching_name(int k);             /* NULL if out of range */
+int mlg_switching_variable(int k);                 /* enum mlg_discrete, or -1 */
+/* The mode after crossing h_k = 0 in direction +1 (upwards) or -1 */
+int mlg_switching_mode_after(int k, int direction);
+/* 1 if the parameters make switching function k part of the model (the law
+ * it belongs to is selected, with nonzero freeplay), else 0 */
+int mlg_switching_applies(const mlg_params *p, int k);
+/* h[k] and, if dh != NULL, its gradient dh[k * MLG_NX + j] = dh_k/du_j,
+ * exact (forward mode), for every k; returns an mlg_status. */
+int mlg_switching(const mlg_params *p, const double u[MLG_NX], double h[MLG_NSWITCH],
+                  double dh[MLG_NSWITCH * MLG_NX]);
+/* The modes of the discrete variables at the state u (modes[MLG_NDISCRETE]). */
+int mlg_modes_at(const mlg_params *p, const double u[MLG_NX], int modes[MLG_NDISCRETE]);
 
 /* ---- straight-rolling equilibrium (equilibrium.c) ---- */
 /* Newton on f(u) = 0 from psi = delta = lambda = rates = 0 and the axial

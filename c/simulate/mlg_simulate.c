@@ -7,6 +7,11 @@
  * the exact Jacobian mlg_rhs_jacobian.  Writes the samples as CSV and prints
  * solver statistics and the settled oscillation over the last second.
  *
+ * With the non-smooth freeplay law (14) (--param freeplay_law=1), CVODE's
+ * root finding locates every crossing of the switching surfaces h+- = 0
+ * (events.h) and the integration restarts there in the new mode; the
+ * summary counts the crossings.
+ *
  * Any evaluation outside the model's domain (nonzero mlg_status) stops the
  * run with an error message and exit status 1.
  *
@@ -31,6 +36,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "events.h"
 #include "mlg_model.h"
 
 static const char *const STATE_NAMES[MLG_NX] = {
@@ -48,9 +54,11 @@ typedef struct {
     const char *out;
 } options;
 
-/* Data passed to the CVODE callbacks: the parameters and the first failure. */
+/* Data passed to the CVODE callbacks: the parameters, the modes and the
+ * first failure. */
 typedef struct {
     const mlg_params *p;
+    events switching;           /* the modes and the switching functions that apply */
     int status;                 /* first nonzero mlg_status met, else 0 */
     double u_bad[MLG_NX];       /* the state where it was met */
 } model;
@@ -332,7 +340,22 @@ static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *data)
     (void)t;
     model *m = data;
     const double *u = N_VGetArrayPointer(y);
-    int status = mlg_rhs(m->p, u, N_VGetArrayPointer(ydot));
+    int status = mlg_rhs_in_modes(m->p, m->switching.modes, u, N_VGetArrayPointer(ydot));
+    if (status != MLG_OK) {
+        m->status = status;
+        memcpy(m->u_bad, u, sizeof m->u_bad);
+        return -1;
+    }
+    return 0;
+}
+
+/* CVODE root functions: the switching functions that apply */
+static int roots(sunrealtype t, N_Vector y, sunrealtype *g, void *data)
+{
+    (void)t;
+    model *m = data;
+    const double *u = N_VGetArrayPointer(y);
+    int status = events_values(&m->switching, u, g);
     if (status != MLG_OK) {
         m->status = status;
         memcpy(m->u_bad, u, sizeof m->u_bad);
@@ -349,7 +372,7 @@ static int jacobian(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *d
     model *m = data;
     const double *u = N_VGetArrayPointer(y);
     double f[MLG_NX], dfdu[MLG_NX * MLG_NX];
-    int status = mlg_rhs_jacobian(m->p, u, f, dfdu, NULL);
+    int status = mlg_rhs_jacobian_in_modes(m->p, m->switching.modes, u, f, dfdu, NULL);
     if (status != MLG_OK) {
         m->status = status;
         memcpy(m->u_bad, u, sizeof m->u_bad);
@@ -442,6 +465,23 @@ static double tail_frequency(const tail *s, double psi_mean)
     return crossings >= 2 ? (crossings - 1) / (last - first) : 0.0;
 }
 
+/* CVODE's counters, summed over the restarts at switches */
+typedef struct {
+    long steps, rhs_evals, jac_evals, ls_rhs_evals, setups, err_fails, conv_fails;
+} statistics;
+
+static void add_statistics(void *cvode, statistics *s)
+{
+    long n;
+    CVodeGetNumSteps(cvode, &n), s->steps += n;
+    CVodeGetNumRhsEvals(cvode, &n), s->rhs_evals += n;
+    CVodeGetNumJacEvals(cvode, &n), s->jac_evals += n;
+    CVodeGetNumLinRhsEvals(cvode, &n), s->ls_rhs_evals += n;
+    CVodeGetNumLinSolvSetups(cvode, &n), s->setups += n;
+    CVodeGetNumErrTestFails(cvode, &n), s->err_fails += n;
+    CVodeGetNumNonlinSolvConvFails(cvode, &n), s->conv_fails += n;
+}
+
 static double seconds_now(void)
 {
     struct timespec ts;
@@ -493,6 +533,10 @@ int main(int argc, char **argv)
     }
 
     model m = {.p = &o.p, .status = MLG_OK};
+    if (events_init(&m.switching, &o.p, u0) != MLG_OK) {
+        fprintf(stderr, "mlg_simulate: the initial state lies outside the model's domain\n");
+        return 1;
+    }
     SUNContext ctx;
     if (SUNContext_Create(NULL, &ctx) != 0) {
         fprintf(stderr, "mlg_simulate: SUNContext_Create failed\n");
@@ -514,7 +558,10 @@ int main(int argc, char **argv)
     check_flag(CVodeSetJacFn(cvode, jacobian), "CVodeSetJacFn");
     check_flag(CVodeSetMaxNumSteps(cvode, 1000000), "CVodeSetMaxNumSteps");
     check_flag(CVodeSetStopTime(cvode, o.t_end), "CVodeSetStopTime");
+    if (m.switching.count > 0)
+        check_flag(CVodeRootInit(cvode, m.switching.count, roots), "CVodeRootInit");
 
+    statistics stats = {0};
     tail settled = {0};
     tail_reserve(&settled, (size_t)tail_samples(o.t_end, o.dt_out));
     double t_tail = fmax(0.0, o.t_end - 1.0);
@@ -526,6 +573,14 @@ int main(int argc, char **argv)
     for (long k = 1; k <= n_out; k++) {
         double t_want = fmin(k * o.dt_out, o.t_end), t;
         int flag = CVode(cvode, t_want, y, &t, CV_NORMAL);
+        while (flag == CV_ROOT_RETURN) {   /* a switch: on in the new mode */
+            int found[MLG_NSWITCH];
+            check_flag(CVodeGetRootInfo(cvode, found), "CVodeGetRootInfo");
+            events_cross(&m.switching, found);
+            add_statistics(cvode, &stats);     /* CVodeReInit zeroes CVODE's own */
+            check_flag(CVodeReInit(cvode, t, y), "CVodeReInit");
+            flag = CVode(cvode, t_want, y, &t, CV_NORMAL);
+        }
         if (flag < 0) {
             if (m.status != MLG_OK) {
                 fprintf(stderr, "mlg_simulate: model evaluation failed near t = %.6g s: %s\n",
@@ -554,14 +609,7 @@ int main(int argc, char **argv)
         return 1;
     }
 
-    long steps, rhs_evals, jac_evals, ls_rhs_evals, setups, err_fails, conv_fails;
-    CVodeGetNumSteps(cvode, &steps);
-    CVodeGetNumRhsEvals(cvode, &rhs_evals);
-    CVodeGetNumJacEvals(cvode, &jac_evals);
-    CVodeGetNumLinRhsEvals(cvode, &ls_rhs_evals);
-    CVodeGetNumLinSolvSetups(cvode, &setups);
-    CVodeGetNumErrTestFails(cvode, &err_fails);
-    CVodeGetNumNonlinSolvConvFails(cvode, &conv_fails);
+    add_statistics(cvode, &stats);
 
     oscillation osc[MLG_ETA + 1];
     for (int i = MLG_PSI; i <= MLG_ETA; i++)
@@ -572,9 +620,9 @@ int main(int argc, char **argv)
     printf("epsilon_mm %.10g\n", 1e3 * mlg_epsilon_m(&o.p));
     printf("t_end %.10g\n", o.t_end);
     printf("steps %ld\nrhs_evals %ld\njac_evals %ld\nfd_rhs_evals %ld\n",
-           steps, rhs_evals, jac_evals, ls_rhs_evals);
+           stats.steps, stats.rhs_evals, stats.jac_evals, stats.ls_rhs_evals);
     printf("lin_setups %ld\nerr_test_fails %ld\nnonlin_conv_fails %ld\n",
-           setups, err_fails, conv_fails);
+           stats.setups, stats.err_fails, stats.conv_fails);
     printf("wall_time_s %.6f\n", wall);
     printf("window_start_s %.10g\nwindow_samples %zu\n", t_tail, settled.n);
     for (int i = MLG_PSI; i <= MLG_ETA; i++) {
@@ -583,6 +631,10 @@ int main(int argc, char **argv)
         printf("%s_amplitude_%s %.10e\n", STATE_NAMES[i], unit, osc[i].amplitude);
     }
     printf("frequency_hz %.8f\n", tail_frequency(&settled, osc[MLG_PSI].mean));
+    for (int i = 0; i < m.switching.count; i++) {
+        int k = m.switching.index[i];
+        printf("crossings_%s %ld\n", mlg_switching_name(k), m.switching.crossings[k]);
+    }
 
     free(settled.t);
     free(settled.u);

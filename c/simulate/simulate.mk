@@ -5,9 +5,9 @@ SIM_LIBS := -lsundials_cvode -lsundials_nvecserial -lsundials_sunlinsoldense \
             -lsundials_sunmatrixdense -lm
 MLG_SIMULATE := build/bin/mlg_simulate
 
-$(MLG_SIMULATE): c/simulate/mlg_simulate.c $(MLG_HEADERS) $(MLG_LIB) | $(PACKAGES_STAMP)
+$(MLG_SIMULATE): c/simulate/mlg_simulate.c c/simulate/events.c c/simulate/events.h $(MLG_HEADERS) $(MLG_LIB) | $(PACKAGES_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(SIM_CFLAGS) $< $(MLG_LIB) $(SIM_LIBS) -o $@
+	$(CC) $(SIM_CFLAGS) $< c/simulate/events.c $(MLG_LIB) $(SIM_LIBS) -o $@
 
 TEST_DEPS += $(MLG_SIMULATE)
 BENCH_PROGRAMS += tests/bench/bench_fig08.py
