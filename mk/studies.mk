@@ -118,3 +118,16 @@ report: | $(MLG_SHARED)
 	    && echo "report: wrote $(REPORT_DIR)/report.pdf" \
 	    || echo "report: no PDF (chromium failed: $(REPORT_DIR)/chromium.log)"; \
 	else echo "report: no PDF (install chromium for one)"; fi
+
+# The smoothing error of eq. (15) (or FREEPLAY=<law>) against the non-smooth
+# eq. (14) by eps / y_fp, with fitted orders (studies.smoothing): H1-H3 by
+# eigenvalue scans, the stable orbit by simulation with every switch located;
+# about 3 min; the table in $(RUN_ROOT)/tables/smoothing.txt.
+$(eval $(call py_deps,smoothing,studies.smoothing))
+$(call result,smoothing): $(PYDEPS_smoothing) $(MODEL_INPUTS) $(MLG_SIMULATE) | auto
+	$(PYTHON) -m mlgshimmy.studies.smoothing --compute
+.PHONY: smoothing smoothing-plot
+smoothing: $(call result,smoothing)
+	$(PYTHON) -m mlgshimmy.studies.smoothing --plot
+smoothing-plot:
+	$(PYTHON) -m mlgshimmy.studies.smoothing --plot

@@ -25,7 +25,7 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy
 
-from mlgshimmy.shared import lyapunov, mlgmodel
+from mlgshimmy.shared import lyapunov, mlgmodel, spectrum
 
 HIGH_HZ = 8.0   # Hz: between the paper's low (1.7-3.3 Hz) and high (13 Hz) pairs
 DEGREES_OF_FREEDOM = {"psi": "torsional", "delta": "lateral", "beta": "longitudinal"}
@@ -140,3 +140,12 @@ def named_points(hopf, orbits, parameter_set: str, parameter: str, state=None,
                     "branch_criticality": branch, "about": describe(m, branch)})
     return out
 
+
+
+def scanned(parameter_set: str, parameter: str, grid, **values: float) -> Dict[str, float]:
+    """{name: value} of the Hopf points of straight rolling along `grid` of
+    `parameter`, found by the eigenvalue scan (spectrum.hopf_scan, no AUTO)
+    and named by their mode."""
+    hopf = spectrum.hopf_scan(parameter_set, parameter, grid, **values)
+    modes = [mode(parameter_set, parameter, v, **values) for v, _ in hopf]
+    return {name: v for (v, _), name in zip(hopf, names(modes))}
