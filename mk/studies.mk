@@ -131,3 +131,14 @@ smoothing: $(call result,smoothing)
 	$(PYTHON) -m mlgshimmy.studies.smoothing --plot
 smoothing-plot:
 	$(PYTHON) -m mlgshimmy.studies.smoothing --plot
+
+# Eq. (17)'s kappa* for every freeplay law of c/freeplay_laws.h (studies.laws,
+# eigenvalue scans): under a minute; the table in $(RUN_ROOT)/tables/laws.txt.
+$(eval $(call py_deps,laws,studies.laws))
+$(call result,laws): $(PYDEPS_laws) $(MODEL_INPUTS) | auto
+	$(PYTHON) -m mlgshimmy.studies.laws --compute
+.PHONY: laws laws-plot
+laws: $(call result,laws)
+	$(PYTHON) -m mlgshimmy.studies.laws --plot
+laws-plot:
+	$(PYTHON) -m mlgshimmy.studies.laws --plot
