@@ -121,8 +121,8 @@ report: | $(MLG_SHARED)
 
 # The smoothing error of eq. (15) (or FREEPLAY=<law>) against the non-smooth
 # eq. (14) by eps / y_fp, with fitted orders (studies.smoothing): H1-H3 by
-# eigenvalue scans, the stable orbit by simulation with every switch located;
-# about 3 min; the table in $(RUN_ROOT)/tables/smoothing.txt.
+# eigenvalue scans, the stable orbit and its fold S by simulation with every
+# switch located; about 6 min; the table in $(RUN_ROOT)/tables/smoothing.txt.
 $(eval $(call py_deps,smoothing,studies.smoothing))
 $(call result,smoothing): $(PYDEPS_smoothing) $(MODEL_INPUTS) $(MLG_SIMULATE) | auto
 	$(PYTHON) -m mlgshimmy.studies.smoothing --compute

@@ -7,8 +7,11 @@ Python: the one place that runs it and reads its summary.
 """
 import os
 import subprocess
+import tempfile
 
-from mlgshimmy.shared import children, mlgmodel
+import numpy
+
+from mlgshimmy.shared import children, mlgmodel, spectrum
 from mlgshimmy.shared import paths
 
 SIMULATOR = os.path.join(paths.BUILD, "bin", "mlg_simulate")
@@ -69,3 +72,34 @@ def simulate(csv, *args, params=None):
         raise SimulationError(f"mlg_simulate failed (exit status {proc.returncode}): "
                               f"{proc.stderr.strip()}")
     return summary(proc.stdout)
+
+
+# fold_speed: the orbit settles for FOLD_SETTLE s at the upper speed, then each
+# trial runs FOLD_TRIAL s from its last state; an orbit whose psi amplitude
+# falls below FOLD_GONE of the settled one has ceased
+FOLD_SETTLE, FOLD_TRIAL, FOLD_GONE = 20.0, 80.0, 0.1
+
+
+def fold_speed(lo, hi, tol, params):
+    """The speed S in (lo, hi) below which the stable orbit reached at hi
+    (from psi = 0.01 rad) ceases to exist: bisected (spectrum.bisect) on
+    whether it survives FOLD_TRIAL s started from its state at hi, to tol.
+    A run just below S lingers on the ghost of the orbit for a time ~ (S -
+    V)^-1/2, so S comes out low by about what FOLD_TRIAL resolves (1e-3 m/s
+    at Fig. 10's S).  None if the orbit survives at lo or is absent at hi."""
+    base = ["--Fstar", params.get("Fstar", 1.0), "--dt-out", 1e-3]
+    extra = {k: v for k, v in params.items() if k != "Fstar"}
+    with tempfile.TemporaryDirectory() as tmp:
+        csv = os.path.join(tmp, "orbit.csv")
+        settled = simulate(csv, "--V", hi, "--t-end", FOLD_SETTLE, "--psi0", 0.01, *base,
+                           params=extra)["psi_amplitude_rad"]
+        start = numpy.loadtxt(csv, delimiter=",", skiprows=1)[-1, 1:]
+    u0 = ",".join(repr(x) for x in start)
+
+    def gone(V):
+        amp = simulate(None, "--V", V, "--t-end", FOLD_TRIAL, "--u0", u0, *base,
+                       params=extra)["psi_amplitude_rad"]
+        return amp < FOLD_GONE * settled
+    if settled < 1e-4 or not gone(lo):
+        return None
+    return spectrum.bisect(gone, lo, hi, tol=tol)

@@ -13,8 +13,12 @@ the predicted one (docs/model.md 9.3).  Fig. 10's case, F* = 1, y_fp = 1 mm.
   Predicted order 2 where the force error (at most ~k_tlk eps) is confined
   to a band of width ~eps that the orbit crosses transversally; 1 for
   hertz, whose ramp shifts the whole contact line by k_tlk eps / 3.
+- The fold S of those orbits, by simulation (simulator.fold_speed: whether
+  the orbit survives 80 s, bisected in V to 1e-3 m/s; low by about 1e-3
+  m/s, the slow passage past the fold).  The orbit there still crosses the
+  corners transversally: the same orders as the orbits.
 
-    make smoothing          # compute (about 3 min) and write the table
+    make smoothing          # compute (about 6 min) and write the table
     make smoothing-plot     # redraw from the cache
 """
 from typing import Dict, Optional
@@ -25,13 +29,13 @@ from mlgshimmy.shared import simulator
 
 DECLARED = {
     "smoothing": {
-        "help": "eq. (15) (or FREEPLAY=) against eq. (14): H1-H3, orbits, fitted orders",
-        "time": "3 min",
+        "help": "eq. (15) (or FREEPLAY=) against eq. (14): H1-H3, orbits, S, fitted orders",
+        "time": "5 min",
         "report": {
             "command": "make smoothing",
             "text": ("The smoothing error of eq. (15) against the non-smooth eq. (14) by "
-                     "eps / y_fp: H1-H3 and the stable orbit's amplitude and frequency, "
-                     "with fitted orders."),
+                     "eps / y_fp: H1-H3, the stable orbit's amplitude and frequency and "
+                     "the fold S, with fitted orders."),
             "tables": ["tables/smoothing.txt"],
             "figures": ["figures/smoothing.png"],
         },
@@ -47,9 +51,12 @@ SPEEDS = (60.0, 100.0, 140.0)      # m/s, between S and H3: the stable high-freq
 SIMULATION = ("--t-end", 16, "--dt-out", 1e-5, "--psi0", 0.01, "--rtol", 1e-10,
               "--atol", 1e-12)
 # below these relative errors a difference is noise (round-off; the sampling)
-FLOOR = {"hopf": 1e-10, "orbit": 1e-6}
-PREDICTED = {"atan": {"hopf": "3", "orbit": "2"}, "tanh": {"hopf": "exp.", "orbit": "2"},
-             "cubic": {"hopf": "exact", "orbit": "2"}, "hertz": {"hopf": "exact", "orbit": "1"}}
+FLOOR = {"hopf": 1e-10, "orbit": 1e-6, "fold": 1e-4}
+PREDICTED = {"atan": {"hopf": "3", "orbit": "2", "fold": "2"},
+             "tanh": {"hopf": "exp.", "orbit": "2", "fold": "2"},
+             "cubic": {"hopf": "exact", "orbit": "2", "fold": "2"},
+             "hertz": {"hopf": "exact", "orbit": "1", "fold": "1"}}
+FOLD_BRACKET, FOLD_TOL = (30.0, 45.0), 1e-3     # m/s: S of Fig. 10 is 41.5
 
 
 def law() -> int:
@@ -80,11 +87,14 @@ def answers(ratio: Optional[float]) -> Dict[str, Optional[float]]:
         print(f"smoothing: eps/y_fp = {ratio if ratio else 0:g}, V = {speed:g} m/s: "
               f"psi amplitude {orbit['psi_amplitude_rad']:.10e} rad, "
               f"{orbit['frequency_hz']:.8f} Hz")
+    out["S [m/s]"] = simulator.fold_speed(*FOLD_BRACKET, FOLD_TOL, model)
+    print(f"smoothing: eps/y_fp = {ratio if ratio else 0:g}: S = {out['S [m/s]']} m/s")
     return out
 
 
 def kind(quantity: str) -> str:
-    return "hopf" if quantity.startswith("H") else "orbit"
+    return "hopf" if quantity.startswith("H") else "fold" if quantity.startswith("S ") \
+        else "orbit"
 
 
 def compute():
