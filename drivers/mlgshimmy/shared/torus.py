@@ -118,6 +118,10 @@ def tr_point(rundir, name, bd, v, slope, between=None):
         back = ct.run(rundir, f"{name}_back{factor}", "periodic", data=end,
                       ICP=["V", 11] + mlgmodel.MEASURES, DS=-1.0, DSMAX=5.0,
                       UZSTOP={"V": v + 3 * h})
+        if not back("UZ"):   # a rung of the retry ladder that ran out of steps first
+            last = back()[-1]
+            raise autoglue.RunError(f"run {name}_back{factor}: ends ({last['TY name']}) at "
+                                    f"V = {last['V']:.6g}, short of V = {v + 3 * h:.6g}")
         cross = ct.run(rundir, f"{name}_cross{factor}", "periodic", data=back("UZ")[-1],
                        ICP=["V", 11] + mlgmodel.MEASURES, DS=-2 * h, DSMIN=1e-4, DSMAX=2 * h,
                        IADS=0, NMX=4)
