@@ -119,3 +119,17 @@ def test_a_solution_knows_its_constants_file():
     k = mlgmodel.register_constants(model)
     assert mlgmodel.registered_constants(k) == {"I_psi": 160.0, "k_relax": 0.75}
     assert mlgmodel.registered_constants(0) == {}
+
+
+def test_a_branch_that_uses_its_step_budget_is_reported_not_silent(tmp_path, capsys):
+    """With allow_mx=Ends(...), a run whose branch ends at NMX (cut short, not
+    at a stop) is kept and says so; one that reaches its stop does not."""
+    start = continuation.Start("figures", Fstar=1.0, V=5.0)
+    keep = continuation.Ends(lambda point, parameter: True, "", keep=True)
+    continuation.equilibria(str(tmp_path / "a"), "eq", start, stop={"V": 50.0}, DS=1.0,
+                            DSMAX=1.0, NMX=4, allow_mx=keep)
+    out = capsys.readouterr().out
+    assert "REPORTED: run eq in" in out and "step budget (NMX = 4) at V = 9;" in out, out
+    continuation.equilibria(str(tmp_path / "b"), "eq", start, stop={"V": 7.5}, DS=1.0,
+                            DSMAX=1.0, NMX=40, allow_mx=keep)
+    assert "REPORTED" not in capsys.readouterr().out

@@ -113,6 +113,15 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
                 f"{stops[0][kw['ICP'][0]]:.6g}, {ends.unexplained}", kind=autoglue.MX)
             error.diagram = bd
             raise error
+        if ends:
+            nmx = kw.get("NMX", autoglue.read_constants(files)["NMX"])
+            for branch in bd:
+                if len(branch) >= nmx and branch[-1]["TY name"] == "EP":
+                    print(f"REPORTED: run {name} in {rundir} stops at its step budget (NMX = "
+                          f"{nmx}) at " + ", ".join(f"{p} = {branch[-1][p]:.6g}"
+                                                     for p in kw["ICP"]
+                                                     if p in mlgmodel.PARNAMES)
+                          + "; kept up to there", flush=True)
         return bd
     return with_ladder(attempt, own, f"run {name}", keep_mx=kw.get("allow_mx") is True,
                        keep_last=ends is not None and ends.keep)
