@@ -12,27 +12,36 @@
 /* dir_par1 that seeds no parameter (df/du alone, or plain doubles) */
 #define MLG_PARS_PLAIN (-(1 << 20))
 
+/* Every continuation parameter, seeded, in PAR units: generated from
+ * MLG_CONTINUATION_PARAMETERS, so a new one is read as mp->par.<name>. */
+typedef struct {
+#define X(name, value, unit, doc) dual name;
+    MLG_CONTINUATION_PARAMETERS(X)
+#undef X
+} par_duals;
+
 typedef struct {
     const mlg_constants *c;  /* every constant and switch, plain */
-    dual V, F_z, yfp, eps, c_psi, rho, mu, k_tlk;   /* SI: yfp and eps in metres */
+    par_duals par;
+    /* the paper's quantities in SI units, derived from par: yfp and eps in metres */
+    dual V, F_z, yfp, eps, c_psi, rho, mu, k_tlk;
 } model_parameters;
-
-/* PAR(k+1) as an independent variable, in PAR units */
-#define PAR_VAR(p, name) d_var((p)->name, dir_par1 + MLG_PAR_##name)
 
 static inline model_parameters model_parameters_seed(const mlg_params *p, int dir_par1)
 {
     model_parameters mp;
     mp.c = &p->constants;
-    mp.V = PAR_VAR(p, V);
-    mp.F_z = d_mulc(PAR_VAR(p, Fstar), p->g_0 * p->m_0);     /* II.A */
-    dual yfp = PAR_VAR(p, yfp);
-    mp.yfp = d_mulc(yfp, 1e-3);
-    mp.eps = d_mulc(d_add(PAR_VAR(p, eps_abs), d_mul(PAR_VAR(p, eps_rel), yfp)), 1e-3);
-    mp.c_psi = PAR_VAR(p, c_psi);
-    mp.rho = PAR_VAR(p, rho);
-    mp.mu = PAR_VAR(p, mu);
-    mp.k_tlk = PAR_VAR(p, k_tlk);
+#define X(name, value, unit, doc) mp.par.name = d_var(p->name, dir_par1 + MLG_PAR_##name);
+    MLG_CONTINUATION_PARAMETERS(X)
+#undef X
+    mp.V = mp.par.V;
+    mp.F_z = d_mulc(mp.par.Fstar, p->g_0 * p->m_0);     /* II.A */
+    mp.yfp = d_mulc(mp.par.yfp, 1e-3);
+    mp.eps = d_mulc(d_add(mp.par.eps_abs, d_mul(mp.par.eps_rel, mp.par.yfp)), 1e-3);
+    mp.c_psi = mp.par.c_psi;
+    mp.rho = mp.par.rho;
+    mp.mu = mp.par.mu;
+    mp.k_tlk = mp.par.k_tlk;
     return mp;
 }
 
