@@ -121,15 +121,27 @@ int mlg_rhs(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX]);
 int mlg_rhs_jacobian(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX],
                      double dfdu[MLG_NX * MLG_NX], double dfdp[MLG_NX * MLG_NPAR]);
 
-/* Intermediate quantities of one evaluation, for tests and reports. */
+/* Intermediate quantities of one evaluation, for tests and reports, in SI
+ * units.  X(name, n): one double (n = 1) or a tyre pair [0] = L, [1] = R
+ * (n = 2).  The struct is generated from this table, and the drivers read
+ * the layout through mlg_diagnostic_name / _size. */
+#define MLG_DIAGNOSTICS(X)                                                         \
+    X(F_z, 1) X(F_dyn, 1) X(cos_phi, 1) X(F_keta, 1) X(F_ceta, 1)                  \
+    X(L_beta, 1) X(L_delta, 1) X(I_a, 1) X(I_beta, 1) X(I_delta, 1)                \
+    X(k_delta, 1) X(c_delta, 1) X(r_tlk, 1)                                        \
+    X(F, 2) X(d, 2) X(h, 2) X(L, 2) X(r_eff, 2) X(alpha, 2) X(F_y, 2) X(M_z, 2)    \
+    X(M_kpsi, 1) X(M_cpsi, 1) X(M_psi, 1) X(M_delta, 1) X(M_beta, 1)               \
+    X(m, 1) X(p, 1)                          /* side-stay angles (Fig. 3) */
+#define MLG_DIAGNOSTIC_FIELD_1(name) double name;
+#define MLG_DIAGNOSTIC_FIELD_2(name) double name[2];
 typedef struct {
-    double F_z, F_dyn, cos_phi, F_keta, F_ceta;
-    double L_beta, L_delta, I_a, I_beta, I_delta, k_delta, c_delta, r_tlk;
-    double F[2], d[2], h[2], L[2], r_eff[2], alpha[2], F_y[2], M_z[2];  /* [0]=L, [1]=R */
-    double M_kpsi, M_cpsi, M_psi, M_delta, M_beta;
-    double m, p;                                   /* side-stay angles (Fig. 3) */
+#define X(name, n) MLG_DIAGNOSTIC_FIELD_##n(name)
+    MLG_DIAGNOSTICS(X)
+#undef X
 } mlg_diagnostics;
 int mlg_diagnose(const mlg_params *p, const double u[MLG_NX], mlg_diagnostics *out);
+const char *mlg_diagnostic_name(int index);   /* MLG_DIAGNOSTICS, in order; NULL after */
+int mlg_diagnostic_size(int index);           /* its doubles, 1 or 2; 0 after */
 
 /* ---- mechanical energy of the model's Lagrangian (energy.c; docs/model.md 8) ---- */
 /* T and V of the reduced model; V's strut part is the integral of F_keta from

@@ -29,6 +29,32 @@ int mlg_diagnose(const mlg_params *p, const double u[MLG_NX], mlg_diagnostics *o
     return vector_field(p, x, NULL, MLG_PARS_PLAIN, fx, out);
 }
 
+/* the drivers read mlg_diagnostics as a flat array of doubles */
+#define X(name, n) + (n)
+_Static_assert(sizeof(mlg_diagnostics) == (0 MLG_DIAGNOSTICS(X)) * sizeof(double),
+               "mlg_diagnostics is not a packed array of doubles");
+#undef X
+
+const char *mlg_diagnostic_name(int index)
+{
+    static const char *const names[] = {
+#define X(name, n) #name,
+        MLG_DIAGNOSTICS(X)
+#undef X
+    };
+    return index >= 0 && index < (int)(sizeof names / sizeof names[0]) ? names[index] : NULL;
+}
+
+int mlg_diagnostic_size(int index)
+{
+    static const int sizes[] = {
+#define X(name, n) n,
+        MLG_DIAGNOSTICS(X)
+#undef X
+    };
+    return index >= 0 && index < (int)(sizeof sizes / sizeof sizes[0]) ? sizes[index] : 0;
+}
+
 double mlg_r_tlk(const mlg_params *p, double eta)
 {
     return torque_link_radius(&p->constants, d_const(p->z_tlk0 - eta)).v;

@@ -12,12 +12,6 @@ from typing import Dict
 
 from mlgshimmy.shared import mlgmodel
 
-# mlg_diagnostics (c/mlg_model.h), in order: (name, number of doubles)
-_FIELDS = (("F_z", 1), ("F_dyn", 1), ("cos_phi", 1), ("F_keta", 1), ("F_ceta", 1),
-           ("L_beta", 1), ("L_delta", 1), ("I_a", 1), ("I_beta", 1), ("I_delta", 1),
-           ("k_delta", 1), ("c_delta", 1), ("r_tlk", 1), ("F", 2), ("d", 2), ("h", 2),
-           ("L", 2), ("r_eff", 2), ("alpha", 2), ("F_y", 2), ("M_z", 2), ("M_kpsi", 1),
-           ("M_cpsi", 1), ("M_psi", 1), ("M_delta", 1), ("M_beta", 1), ("m", 1), ("p", 1))
 LIFT_OFF_LOAD = 1e-4         # of the static tyre load: "zero" at an MX stop
 
 
@@ -32,7 +26,8 @@ def diagnose(model: mlgmodel.Model, u: Dict[str, float]) -> Dict[str, object]:
     """mlg_diagnose at the state u ({name: value}): {field: value, or a
     (left, right) pair}; RuntimeError if u is outside the model's domain."""
     lib = mlgmodel.library()
-    count = sum(n for _, n in _FIELDS)
+    fields = mlgmodel.DIAGNOSTICS          # the layout of mlg_diagnostics, from the library
+    count = sum(n for _, n in fields)
 
     class Out(ctypes.Structure):
         _fields_ = [("values", ctypes.c_double * count)]
@@ -40,7 +35,7 @@ def diagnose(model: mlgmodel.Model, u: Dict[str, float]) -> Dict[str, object]:
     out = Out()
     status = lib.mlg_diagnose(ctypes.byref(model._p), x, ctypes.byref(out))
     values, k, found = list(out.values), 0, {}
-    for name, n in _FIELDS:
+    for name, n in fields:
         found[name] = values[k] if n == 1 else tuple(values[k:k + n])
         k += n
     found["status"] = status

@@ -58,6 +58,7 @@ def library():
     lib.mlg_par_name.restype = ctypes.c_char_p
     lib.mlg_constant_name.restype = ctypes.c_char_p
     lib.mlg_measure_name.restype = ctypes.c_char_p
+    lib.mlg_diagnostic_name.restype = ctypes.c_char_p
     lib.mlg_state_name.restype = ctypes.c_char_p
     lib.mlg_params_check.argtypes = [P, ctypes.c_char_p, ctypes.c_size_t]
     lib.mlg_status_text.restype = ctypes.c_char_p
@@ -99,15 +100,20 @@ def _table(key: str):
             FIELDS=_names(lib.mlg_constant_name),   # every parameter, constant and switch
             UNAMES=_names(lib.mlg_state_name),      # UNAMES[i] is U(i+1)
             LAWS=_names(lib.mlg_freeplay_law_name),  # LAWS[k]: freeplay law k
+            # mlg_diagnostics, in order: (field, its doubles: 1, or 2 for a tyre pair)
+            DIAGNOSTICS=[(name, lib.mlg_diagnostic_size(k))
+                         for k, name in enumerate(_names(lib.mlg_diagnostic_name))],
             C_PSI_FIGURES=ctypes.c_double.in_dll(lib, "MLG_C_PSI_FIGURES").value)
         _tables["NX"] = len(_tables["UNAMES"])
     return _tables[key]
 
 
 def __getattr__(name: str):
-    """PARNAMES, MEASURES, FIELDS, UNAMES, LAWS, NX, C_PSI_FIGURES: read from
-    the library when first asked for, so importing this module needs no build."""
-    if name in ("PARNAMES", "MEASURES", "FIELDS", "UNAMES", "LAWS", "NX", "C_PSI_FIGURES"):
+    """PARNAMES, MEASURES, FIELDS, UNAMES, LAWS, DIAGNOSTICS, NX, C_PSI_FIGURES:
+    read from the library when first asked for, so importing this module
+    needs no build."""
+    if name in ("PARNAMES", "MEASURES", "FIELDS", "UNAMES", "LAWS", "DIAGNOSTICS", "NX",
+                "C_PSI_FIGURES"):
         return _table(name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
