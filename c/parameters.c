@@ -193,16 +193,16 @@ int mlg_params_unusable(const mlg_params *p, char *msg, size_t n)
 int mlg_params_check(const mlg_params *p, char *msg, size_t n)
 {
     if (mlg_params_unusable(p, msg, n)) return 1;
-    if (p->V < 0.0)
-        return reject(msg, n, "parameter V = %g m/s: forward velocity must be >= 0", p->V);
-    if (p->Fstar < 0.0)
-        return reject(msg, n, "parameter Fstar = %g: the load F* must be >= 0", p->Fstar);
-    if (p->yfp < 0.0)
-        return reject(msg, n, "parameter yfp = %g mm: freeplay must be >= 0", p->yfp);
-    if (p->eps_abs < 0.0)
-        return reject(msg, n, "parameter eps_abs = %g mm: smoothing must be >= 0", p->eps_abs);
-    if (p->eps_rel < 0.0)
-        return reject(msg, n, "parameter eps_rel = %g: smoothing must be >= 0", p->eps_rel);
+    if (!(p->k_tlk > 0.0))
+        return reject(msg, n, "parameter k_tlk = %g N/m: stiffness must be > 0", p->k_tlk);
+    /* every continuation parameter but an angle is a size, speed, load or
+     * coefficient: >= 0 (the table's unit and description make the message) */
+#define X(name, value, unit, doc)                                                   \
+    if (strcmp(unit, "rad") != 0 && p->name < 0.0)                                  \
+        return reject(msg, n, "parameter %s = %g%s%s: %s must be >= 0", #name, p->name, \
+                      strcmp(unit, "-") != 0 ? " " : "", strcmp(unit, "-") != 0 ? unit : "", doc);
+    MLG_CONTINUATION_PARAMETERS(X)
+#undef X
     if (p->yfp > 0.0 && !(mlg_epsilon_m(p) > 0.0) &&
         mlg_freeplay_law_uses_eps((int)p->freeplay_law))
         return reject(msg, n,
@@ -210,10 +210,6 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
                       "when yfp = %g mm > 0 (freeplay law %s needs epsilon > 0)",
                       p->eps_abs + p->eps_rel * p->yfp, p->yfp,
                       mlg_freeplay_law_name((int)p->freeplay_law));
-    if (p->c_psi < 0.0)
-        return reject(msg, n, "parameter c_psi = %g N m s/rad: damping must be >= 0", p->c_psi);
-    if (!(p->k_tlk > 0.0))
-        return reject(msg, n, "parameter k_tlk = %g N/m: stiffness must be > 0", p->k_tlk);
     if (fabs(p->rho) >= 0.5 * MLG_PI)
         return reject(msg, n, "parameter rho = %g rad: side-stay inclination must lie in "
                       "(-pi/2, pi/2)", p->rho);
