@@ -2,7 +2,7 @@
  *
  * AUTO's PAR array (docs/model.md, section 2.1):
  *   PAR(1-10)   MLG_CONTINUATION_PARAMETERS, in this order (PAR(1) = V, ...):
- *               only quantities AUTO can continue in; PAR(10) is free.
+ *               only quantities AUTO can continue in; all ten are taken.
  *   PAR(11)     the period of periodic orbits (AUTO's).
  *   PAR(12)     AUTO's (torus angle); never ours.
  *   PAR(13-20)  MLG_SWITCHES with an AUTO slot, and MLG_PAR_CONSTANTS_FILE.
@@ -33,7 +33,8 @@
     X(c_psi,    410.0,  "N m s/rad","torsional damping (Table 1; eq. 16)")       \
     X(rho,      0.0,    "rad",      "side-stay attachment inclination")          \
     X(mu,       0.0,    "rad",      "side-stay horizontal orientation")          \
-    X(k_tlk,    3.90e7, "N/m",      "torque-link lateral stiffness")
+    X(k_tlk,    3.90e7, "N/m",      "torque-link lateral stiffness")             \
+    X(M_fric,   0.0,    "N m",      "oleo seal Coulomb friction moment about the strut axis")
 
 /* PAR(11) is AUTO's period: the list above must fit in PAR(1-10). */
 #define MLG_PAR_PERIOD 11
@@ -148,6 +149,10 @@
     X(a5_M,     -3.1e-11, "1/N^2",  "a5_Mkalpha")                                \
     X(a6_M,     2.34e-5, "1/N",     "a6_Mkalpha")                                \
     X(E0_M,     0.95,    "-",       "constant of E_Mkalpha")                     \
-    X(k_M_exp,  1.0e-6,  "1/N",     "exponent scale in B_Mkalpha")
+    X(k_M_exp,  1.0e-6,  "1/N",     "exponent scale in B_Mkalpha")              \
+    /* beyond the paper: oleo seal friction, regularised (docs/model.md 9) */       \
+    X(F_fric,   0.0,     "N",       "oleo seal Coulomb friction force along the strut") \
+    X(v_fric,   1.0e-3,  "m/s",     "seal friction regularisation speed")        \
+    X(r_seal,   0.1,     "m",       "seal radius: torsional slip speed = r_seal * twist rate")
 
 #endif

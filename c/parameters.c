@@ -224,6 +224,8 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
                           "rad makes the gear geometry degenerate (cos p ~ 0)",
                           p->rho, p->mu, asin(fmax(-1.0, fmin(1.0, sp))));
     }
+    if (p->F_fric < 0.0)
+        return reject(msg, n, "parameter F_fric = %g N must be >= 0", p->F_fric);
     if (p->F_tyre_min < 0.0)
         return reject(msg, n, "parameter F_tyre_min = %g N must be >= 0", p->F_tyre_min);
     if (!(p->eta_stage >= 0.0 && p->eta_stage < p->z_tlk0))   /* a position in the stroke */
@@ -233,6 +235,7 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
     if (!(p->name > 0.0)) return reject(msg, n, "parameter %s = %g must be > 0", #name, p->name);
     POSITIVE(a) POSITIVE(l_tlk) POSITIVE(r) POSITIVE(M) POSITIVE(I_psi) POSITIVE(I)
     POSITIVE(k_beta) POSITIVE(g_0) POSITIVE(m_0) POSITIVE(a_d) POSITIVE(b_d)
+    POSITIVE(v_fric) POSITIVE(r_seal)
 #undef POSITIVE
     if (!(p->phi0 > -0.5 * MLG_PI && p->phi0 < 0.5 * MLG_PI))
         return reject(msg, n, "parameter phi0 = %g rad: rake angle must lie in (-pi/2, pi/2)",

@@ -30,4 +30,26 @@ static inline dual strut_damper_force(const mlg_constants *c, dual eta, dual eta
     return d_add(d_mul(coef, signed_square), d_mulc(eta_dot, c->c_eta1));
 }
 
+/* Coulomb friction of the piston's seal in the strut, regularised for
+ * continuation: size * tanh(slip / v_fric), slip the sliding speed at the
+ * seal; a constant normal force (docs/model.md 9). */
+static inline dual seal_friction(dual size, dual slip, const mlg_constants *c)
+{
+    dual x = d_mulc(slip, 1.0 / c->v_fric);
+    double t = tanh(x.v);
+    return d_mul(size, d_chain(x, t, 1.0 - t * t));
+}
+
+/* the moment against the twist of piston in strut, acting as M_cpsi does */
+static inline dual seal_friction_moment(const model_parameters *mp, dual twist_rate)
+{
+    return seal_friction(mp->par.M_fric, d_mulc(twist_rate, mp->c->r_seal), mp->c);
+}
+
+/* the axial force against the compression rate, acting as F_ceta does */
+static inline dual seal_friction_force(const model_parameters *mp, dual eta_dot)
+{
+    return seal_friction(d_const(mp->c->F_fric), eta_dot, mp->c);
+}
+
 #endif

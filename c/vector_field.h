@@ -70,10 +70,13 @@ static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], const 
     /* section III: torque links, eqs. (14)-(16) */
     x.r_tlk = torque_link_radius(mp.c, l.z_tlk);
     x.M_kpsi = torsional_stiffness_moment(&mp, x.r_tlk, x.psi_s, mode);
-    x.M_cpsi = torsional_damping_moment(&mp, twist_rate);
+    x.M_cpsi = d_add(torsional_damping_moment(&mp, twist_rate),
+                     seal_friction_moment(&mp, twist_rate));
 
     /* eq. (4): the strut's axial load and the tyres' share of it (II.B.1) */
-    dual F_keta = strut_spring_force(mp.c, eta), F_ceta = strut_damper_force(mp.c, eta, w.eta_dot);
+    dual F_keta = strut_spring_force(mp.c, eta);
+    dual F_ceta = d_add(strut_damper_force(mp.c, eta, w.eta_dot),
+                        seal_friction_force(&mp, w.eta_dot));
     dual F_dyn = dynamic_load(&x, F_keta, F_ceta), F[2];
     status |= tyre_load_split(mp.c, F_dyn, q.u_a.c[2], F);
 

@@ -22,6 +22,7 @@ typedef struct {
     double u[MLG_NX];
     const char *region;   /* inside / edge / outside the freeplay, or "zero" */
     int modes[MLG_NDISCRETE];
+    int stick;            /* seal friction on, every rate near stick */
 } sample;
 
 /* Central difference of f in direction j (state j, or parameter j - MLG_NX). */
@@ -106,6 +107,22 @@ static sample draw(int n)
     s.u[MLG_ETA_DOT] = unit_between(-0.1, 0.1);
     s.u[MLG_LAMBDA_L] = unit_between(-0.02, 0.02);
     s.u[MLG_LAMBDA_R] = unit_between(-0.02, 0.02);
+
+    /* seal friction in half the samples; in half of those every rate is within
+     * 3 v_fric of stick, where tanh turns */
+    s.stick = 0;
+    if (n % 2 == 1) {
+        s.p.M_fric = unit_between(0.0, 3000.0);
+        s.p.F_fric = unit_between(0.0, 3e4);
+        s.p.v_fric = pow(10.0, unit_between(-4.0, -2.0));
+        if (n % 4 == 1) {
+            double twist = s.p.v_fric / s.p.r_seal;
+            s.u[MLG_PSI_DOT] = unit_between(-3.0, 3.0) * twist;
+            s.u[MLG_BETA_DOT] = unit_between(-3.0, 3.0) * twist;
+            s.u[MLG_ETA_DOT] = unit_between(-3.0, 3.0) * s.p.v_fric;
+            s.stick = 1;
+        }
+    }
     return s;
 }
 
@@ -118,6 +135,13 @@ static void scales(const sample *s, double *scale)
     const double base[MLG_NX] = {torsion, 1e-3, 1e-3, 1e-3, 1e-2, 1e-2, 1e-2, 1e-2, 1e-4, 1e-4};
     memcpy(scale, base, sizeof base);
     if (s->p.rho != 0.0 || s->p.mu != 0.0) scale[MLG_BETA] = fmin(scale[MLG_BETA], torsion);
+    if (s->p.M_fric > 0.0 || s->p.F_fric > 0.0) {
+        /* resolve the seal friction's tanh near stick: rates on the scale of v_fric */
+        double twist_rate = s->p.v_fric / s->p.r_seal;
+        scale[MLG_PSI_DOT] = fmin(scale[MLG_PSI_DOT], twist_rate);
+        scale[MLG_BETA_DOT] = fmin(scale[MLG_BETA_DOT], twist_rate);
+        scale[MLG_ETA_DOT] = fmin(scale[MLG_ETA_DOT], s->p.v_fric);
+    }
     double *ps = scale + MLG_NX;
     for (int k = 0; k < MLG_NPAR; k++) ps[k] = NAN;   /* a parameter left out fails below */
     ps[MLG_PAR_V] = 1.0;
@@ -129,17 +153,19 @@ static void scales(const sample *s, double *scale)
     ps[MLG_PAR_rho] = torsion;
     ps[MLG_PAR_mu] = torsion;
     ps[MLG_PAR_k_tlk] = 1e4;
+    ps[MLG_PAR_M_fric] = 1.0;
 }
 
 int main(void)
 {
     double worst_u = 0.0, worst_p = 0.0, worst_level[3] = {0.0, 0.0, 0.0};
     int outside_domain = 0, counted = 0, per_region[4] = {0, 0, 0, 0}, angled[3] = {0, 0, 0};
-    int variants_compared = 0, variants_differ = 0;
     enum { LAWS = 16, MODES = 4 };    /* at most; checked below */
     double worst_law[LAWS] = {0.0}, worst_mode[MODES] = {0.0};
     int per_law[LAWS] = {0}, per_mode[MODES] = {0};
     check(mlg_freeplay_law_count() <= LAWS, "law_table_fits", "%d laws", mlg_freeplay_law_count());
+    int variants_compared = 0, variants_differ = 0, stick = 0;
+    double worst_stick = 0.0;
     const char *worst_where = "";
     {   /* every continuation parameter has a df/dp scale, so its column is checked */
         sample s = draw(0);
@@ -180,6 +206,7 @@ int main(void)
         counted++;
         int level = (int)s.p.eom_terms;
         if (s.p.rho != 0.0) angled[level]++;
+        stick += s.stick;
         per_region[s.region[0] == 'i' ? 0 : s.region[0] == 'e' ? 1 : s.region[0] == 'o' ? 2 : 3]++;
         int law = (int)s.p.freeplay_law, mode = s.modes[MLG_DISCRETE_FREEPLAY] + 1;
         per_law[law]++;
@@ -206,6 +233,7 @@ int main(void)
                 worst_law[law] = fmax(worst_law[law], err);
                 if (law == mlg_freeplay_law_index("nonsmooth"))
                     worst_mode[mode] = fmax(worst_mode[mode], err);
+                if (s.stick) worst_stick = fmax(worst_stick, err);
                 if (j < MLG_NX && err > worst_u) {
                     worst_u = err;
                     worst_where = s.region;
@@ -244,6 +272,9 @@ int main(void)
               "%d samples of law (14), max row-scaled error %.2e", per_mode[mode],
               worst_mode[mode]);
     }
+    check(stick > 200 && worst_stick <= 1e-6, "jacobian_near_seal_friction_stick",
+          "%d samples with every rate within 3 v_fric of stick, max row-scaled error %.2e (df/du "
+          "and df/dp)", stick, worst_stick);
     check(worst_u <= 1e-6, "dfdu_matches_finite_differences",
           "max row-scaled error %.2e (worst sample: %s)", worst_u, worst_where);
     check(worst_p <= 1e-6, "dfdp_matches_finite_differences", "max row-scaled error %.2e",
