@@ -78,6 +78,18 @@ criterion: $(CRITERION_GROUPS:%=$(CRITERION_DIR)/%.json) $(CRITERION_DIR)/auto.j
 criterion-plot:
 	$(PYTHON) -m mlgshimmy.studies.criterion report
 
+# Oleo seal friction against the low-speed shimmy (studies.friction): the
+# critical friction moment of Fig. 10's low-frequency orbits, its v_fric
+# ladder and its freeplays; cached in $(RUN_ROOT)/friction/result.json.
+$(eval $(call py_deps,friction,studies.friction))
+$(call result,friction): $(PYDEPS_friction) $(MODEL_INPUTS) | auto
+	$(PYTHON) -m mlgshimmy.studies.friction --compute
+.PHONY: friction friction-plot
+friction: $(call result,friction)
+	$(PYTHON) -m mlgshimmy.studies.friction --plot
+friction-plot:
+	$(PYTHON) -m mlgshimmy.studies.friction --plot
+
 # Attractor atlas over (V, F*) by time simulation (studies.atlas); axes
 # "a,b,c" or "start:stop:step", one job per cell:
 #   make -j2 atlas                       the default grid (atlas DEFAULT_*)

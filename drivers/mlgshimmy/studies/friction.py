@@ -1,0 +1,247 @@
+"""Oleo seal friction against the low-speed shimmy (docs/model.md 9): the
+critical friction moment M_f* above which Fig. 10's low-frequency orbits
+(the shimmy between H1 and H2) no longer exist, and how it depends on the
+regularisation speed v_fric and on the freeplay.
+
+Straight rolling cannot answer it: at zero slip the regularised law is a
+viscous damper M_fric r_seal / v_fric, so its Hopf points do not converge
+as v_fric -> 0.  The orbits can.  For each case (a v_fric of LADDER at
+Fig. 10's y_fp = 1 mm, and each y_fp of FREEPLAYS at v_fric = FREEPLAY_V):
+  1. the low-frequency orbits from H1 at zero friction, continued in V up
+     to V_END (V0 labelled);
+  2. the orbit at V0 continued in M_fric up to its fold (LP);
+  3. that fold continued in (V, M_fric) both ways, to where it meets
+     straight rolling's Hopf curve (the orbits' amplitude goes to zero):
+     above the fold curve there is no low-frequency orbit at that V.
+M_f* is the fold curve's largest M_fric, with the speed where it lies.
+Below the fold curve's ends the orbits shrink onto straight rolling at its
+Hopf curve instead; that curve's largest M_fric (linear_threshold, from the
+eigenvalues alone) must lie below M_f*, or the case is refused.  Its equivalent damping ratio is that of the viscous
+damper dissipating as much per cycle on the zero-friction orbit there,
+4 M / (pi omega A), relative to the torsional critical damping
+2 sqrt(k_tlk r_tlk^2 I_psi) (links engaged).
+
+    make friction              # compute (cached) and plot: build/figures/friction.png
+"""
+import math
+
+import numpy
+
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import draw
+from mlgshimmy.shared import gear
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import naming
+from mlgshimmy.shared import paper
+from mlgshimmy.shared import paths
+from mlgshimmy.shared import spectrum
+
+DECLARED = {
+    "friction": {
+        "help": "oleo seal friction: the critical M_fric of the low-speed shimmy, v_fric ladder",
+        "time": "8 min",
+        "report": {
+            "command": "make friction",
+            "text": ("Beyond the paper: the oleo seal friction moment above which Fig. 10's "
+                     "low-frequency orbits no longer exist, against the regularisation speed "
+                     "and the freeplay (docs/friction.md)."),
+            "tables": ["tables/friction.txt"],
+            "figures": ["figures/friction.png"],
+        },
+    },
+}
+
+CONDITIONS = {"Fstar": 1.0, "eps_abs": 0.0, "eps_rel": 0.1}   # Fig. 10's, y_fp apart
+LADDER = (3e-3, 1e-3, 3e-4, 1e-4)       # m/s: v_fric, coarse to fine
+FREEPLAYS = (0.5, 1.0, 2.0)             # mm
+FREEPLAY_V = 3e-4                       # m/s: converged to 0.1 % at y_fp = 1 mm (the ladder)
+V0 = 10.0              # m/s: where the orbit is continued in M_fric (inside H1-H2)
+H_GRID = numpy.linspace(0.5, 80.0, 400)  # the scan for H1, H2 (m/s)
+M_STOP = 1000.0        # N m: beyond any fold found
+COLLAPSED_END = 0.05   # a fold curve's end below this part of its largest amplitude meets
+                       # the Hopf curve; at this part of the fold's M_fric at V0 it
+                       # stops, on its way to zero friction; any other end is a
+                       # truncated curve: an error
+FOLD_DSMAX = 0.2       # the fold curve's steps (AUTO units), short near M_fric = 0
+STEPS = {"DS": 0.05, "DSMAX": 0.5}
+# the fold in M_fric is sharp at small v_fric: AUTO turns it only with DSMIN
+# 1e-9 (1e-5 stops there, MX); the fold curve ends on the Hopf curve, where
+# 1e-6 stops it once the amplitude is near zero
+
+
+def low_frequency_pairs(values):
+    """The low-frequency Hopf points of straight rolling on H_GRID (V, Hz)."""
+    return [(v, f) for v, f in spectrum.hopf_scan("figures", "V", H_GRID, **values)
+            if f < naming.HIGH_HZ]
+
+
+def low_frequency_hopf(values):
+    """H1 and H2 of straight rolling at zero friction (V, Hz): the first two
+    low-frequency Hopf points of the eigenvalue scan."""
+    low = low_frequency_pairs(values)
+    if len(low) < 2:
+        raise RuntimeError(f"friction: no low-frequency Hopf pair H1, H2 below "
+                           f"{H_GRID[-1]} m/s at {values}")
+    return low[:2]
+
+
+def linear_threshold(values):
+    """The least M_fric at which straight rolling has no low-frequency Hopf
+    point on H_GRID (its linearisation: a damper M_fric r_seal / v_fric on
+    the twist), to 1e-6 relative: the Hopf curve's largest M_fric."""
+    def has_pair(moment):
+        return bool(low_frequency_pairs({**values, "M_fric": moment}))
+    hi = 1.0
+    while has_pair(hi):
+        hi *= 2.0
+    return spectrum.bisect(has_pair, 0.0, hi, tol=1e-6 * hi)
+
+
+def orbit_at_v0(rundir, tag, values):
+    """Step 1: H1, H2 and the zero-friction low-frequency orbits from H1 in
+    V up to 0.95 H2, with the orbit at V0 (an AUTO solution)."""
+    (h1, _), (h2, _) = low_frequency_hopf(values)
+    hopf = ct.hopf_points(rundir, "hb", "figures", "V", numpy.linspace(0.5, h1 + 1.0, 20),
+                          limit=1, **values)[0]
+    orbits = ct.periodic_from(rundir, "po", hopf, "V", stop={"V": [0.95 * h2]},
+                              UZR={"V": [V0]}, DS=0.05, DSMAX=0.5)
+    at_v0 = [p for p in orbits("UZ") if abs(p["V"] - V0) < 1e-6]
+    if not at_v0:
+        raise RuntimeError(f"friction {tag}: the low-frequency orbits from H1 = {h1:.4g} m/s "
+                           f"do not reach V0 = {V0} m/s")
+    return h1, h2, orbits, at_v0[0]
+
+
+def fold_in_friction(rundir, tag, orbit):
+    """Step 2: the orbit continued in M_fric to its fold (the LP solution).
+    Past the fold the orbits shrink onto straight rolling, where AUTO may stop
+    (MX): only the fold is used."""
+    run = ct.periodic_from(rundir, "mf", orbit, "M_fric", stop={"M_fric": [M_STOP]},
+                           NMX=3000, allow_mx=True, DSMIN=1e-9, **STEPS)
+    if not run("LP"):
+        raise RuntimeError(f"friction {tag}: the orbit at V0 = {V0} m/s has no fold in M_fric "
+                           "(its branch shrinks onto straight rolling: v_fric too large)")
+    return run("LP")[0]
+
+
+def fold_in_speed_and_friction(rundir, tag, fold):
+    """Step 3: the fold continued in (V, M_fric) both ways, up to the Hopf
+    curve, or zero friction, at each end: {V, M_fric, psi_amp, freq} along it."""
+    # a step past M_fric = 0 leaves the domain, and AUTO's fold system turns
+    # that into NaN, not a shorter step: the curve stops at a small M_fric
+    floor = COLLAPSED_END * fold["M_fric"]
+    halves = ct.fold_curve(rundir, "fold", fold, parameters=("V", "M_fric"),
+                           stop={"V": [0.5, H_GRID[-1]], "M_fric": [floor]}, both_ways=True,
+                           NMX=400, allow_mx=True, DSMIN=1e-6,
+                           **{**STEPS, "DSMAX": FOLD_DSMAX})
+    curve = {k: numpy.concatenate([halves[1][0][k][::-1], halves[0][0][k]])
+             for k in ("V", "M_fric", "psi_amp", "freq")}
+    largest = numpy.max(curve["psi_amp"])
+    for end in (0, -1):
+        frictionless = curve["M_fric"][end] <= floor * (1.0 + 1e-6)
+        if curve["psi_amp"][end] > COLLAPSED_END * largest and not frictionless:
+            raise RuntimeError(f"friction {tag}: the fold curve stops at V = "
+                               f"{curve['V'][end]:.4g} m/s with the orbits' amplitude "
+                               f"{curve['psi_amp'][end]:.3g} rad: truncated, not at the Hopf curve")
+    return curve
+
+
+def case(tag, yfp, v_fric):
+    """Steps 1-3 for one case: the fold curve, M_f* and the orbit it is
+    measured against."""
+    values = {**CONDITIONS, "yfp": yfp, "v_fric": v_fric, **gear.parameters()}
+    rundir = paths.rundir(f"friction/{tag}")
+    h1, h2, orbits, orbit = orbit_at_v0(rundir, tag, values)
+    fold = fold_in_friction(rundir, tag, orbit)
+    curve = fold_in_speed_and_friction(rundir, tag, fold)
+    k = int(numpy.argmax(curve["M_fric"]))
+    if k in (0, len(curve["V"]) - 1):
+        raise RuntimeError(f"friction {tag}: the largest M_fric lies at an end of the fold curve")
+    branch = {name: numpy.asarray(orbits[0][name]) for name in ("V", "psi_amp", "freq")}
+    order = numpy.argsort(branch["V"])
+    V_star = float(curve["V"][k])
+    if not min(branch["V"]) <= V_star <= max(branch["V"]):
+        raise RuntimeError(f"friction {tag}: M_f* lies at V = {V_star:.4g} m/s, outside the "
+                           f"zero-friction orbits ({min(branch['V']):.4g}-{max(branch['V']):.4g})")
+    amp = float(numpy.interp(V_star, branch["V"][order], branch["psi_amp"][order]))
+    freq = float(numpy.interp(V_star, branch["V"][order], branch["freq"][order]))
+    linear = linear_threshold(values)
+    if linear >= curve["M_fric"][k]:
+        raise RuntimeError(f"friction {tag}: straight rolling keeps a low-frequency Hopf point "
+                           f"up to M_fric = {linear:.4g} N m, above the fold curve's "
+                           f"{curve['M_fric'][k]:.4g}: v_fric too large for the orbits to decide")
+    return {"tag": tag, "yfp": yfp, "v_fric": v_fric, "H1": h1, "H2": h2,
+            "fold_at_V0": float(fold["M_fric"]), "linear": linear,
+            "critical": float(curve["M_fric"][k]), "at_V": V_star,
+            "orbit": {"psi_amp": amp, "freq": freq},
+            "zeta": equivalent_damping_ratio(values, float(curve["M_fric"][k]), amp, freq),
+            "curve": {key: value.tolist() for key, value in curve.items()}}
+
+
+def equivalent_damping_ratio(values, moment, amplitude, freq):
+    """The viscous damping dissipating as much per cycle as a Coulomb moment
+    on a harmonic twist of this amplitude and frequency, 4 M / (pi omega A),
+    relative to 2 sqrt(k_tlk r_tlk^2 I_psi)."""
+    model = mlgmodel.Model("figures", V=V0, **values)
+    r = model.r_tlk(model.equilibrium()["eta"])
+    critical = 2.0 * math.sqrt(model["k_tlk"] * r * r * model["I_psi"])
+    omega = 2.0 * math.pi * freq
+    return 4.0 * moment / (math.pi * omega * amplitude) / critical
+
+
+def cases():
+    """(tag, y_fp, v_fric) of the ladder and of the freeplays (shared ones once)."""
+    out = {f"yfp1_v{v:g}": (1.0, v) for v in LADDER}
+    out.update({f"yfp{y:g}_v{FREEPLAY_V:g}": (y, FREEPLAY_V) for y in FREEPLAYS})
+    return out
+
+
+def compute():
+    print("friction: critical seal friction of the low-frequency shimmy, Fig. 10's conditions"
+          + gear.suffix())
+    return {"cases": [case(tag, *args) for tag, args in cases().items()]}
+
+
+def numbers(result):
+    """{quantity: value}: M_f* of every case, where it lies, and its damping ratio."""
+    out = {}
+    for c in result["cases"]:
+        at = f"y_fp = {c['yfp']:g} mm, v_fric = {c['v_fric']:g} m/s"
+        out[f"M_f* [N m], {at}"] = c["critical"]
+        out[f"V at M_f* [m/s], {at}"] = c["at_V"]
+        out[f"M_f* as damping ratio [%], {at}"] = 100.0 * c["zeta"]
+        out[f"linear threshold (Hopf curve's largest M_fric) [N m], {at}"] = c["linear"]
+    return out
+
+
+def plot(result):
+    import matplotlib.pyplot as plt
+    ladder = [c for c in result["cases"] if c["yfp"] == 1.0]
+    ladder.sort(key=lambda c: -c["v_fric"])
+    steps = [abs(b["critical"] - a["critical"]) for a, b in zip(ladder, ladder[1:])]
+    notes = [f"ladder: M_f* changes by {s:.3g} N m from v_fric = {a['v_fric']:g} to "
+             f"{b['v_fric']:g} m/s" for s, a, b in zip(steps, ladder, ladder[1:])]
+    paper.report("friction", numbers(result), notes=notes)
+    fig, (curves, trend) = plt.subplots(1, 2, figsize=(11, 4.6))
+    for c in sorted(result["cases"], key=lambda c: (c["yfp"], -c["v_fric"])):
+        label = rf"$y_{{fp}}$ = {c['yfp']:g} mm, $v_\varepsilon$ = {c['v_fric']:g} m/s"
+        line, = curves.plot(c["curve"]["V"], c["curve"]["M_fric"], label=label)
+        curves.plot(c["at_V"], c["critical"], "o", color=line.get_color())
+    curves.set_xlabel("V [m/s]")
+    curves.set_ylabel(r"$M_f$ [N m]")
+    curves.set_title("(a) fold of the low-frequency orbits: none above")
+    curves.legend(fontsize=7)
+    trend.semilogx([c["v_fric"] for c in ladder], [c["critical"] for c in ladder], "o-",
+                   color=draw.STABLE)
+    trend.set_xlabel(r"regularisation speed $v_\varepsilon$ [m/s]")
+    trend.set_ylabel(r"$M_f^*$ [N m]")
+    trend.set_title(r"(b) $M_f^*$ at $y_{fp}$ = 1 mm against $v_\varepsilon$")
+    draw.figure_title(fig, r"Seal friction: critical $M_f^*$ of the low-speed shimmy, "
+                      r"$F^*$ = 1, $\epsilon = 0.1\,y_{fp}$" + gear.suffix())
+    fig.tight_layout()
+    draw.save(fig, "friction")
+
+
+if __name__ == "__main__":
+    jobs.run_figure("friction", compute, plot, module="mlgshimmy.studies.friction")
