@@ -11,9 +11,15 @@
  * registers: a wider vector is split through memory (twice the cost).
  * Every operation is one call of the chain rule d_lin1, d_lin2 or d_lin2_over.
  * vector_field_value.c and vector_field_jacobian.c compile the same model
- * with the two settings. */
+ * with the two settings.  With DUAL_TAYLOR defined instead, `dual` carries
+ * three derivatives along one direction (dual_taylor.h,
+ * vector_field_taylor.c). */
 #ifndef MLG_DUAL_H
 #define MLG_DUAL_H
+
+#ifdef DUAL_TAYLOR
+#include "dual_taylor.h"
+#else
 
 #ifndef DUAL_N
 #error "define DUAL_N (number of derivative directions) before including dual.h"
@@ -146,6 +152,7 @@ DUAL_INLINE dual d_sin(dual a) { return d_chain(a, sin(a.v), cos(a.v)); }
 DUAL_INLINE dual d_cos(dual a) { return d_chain(a, cos(a.v), -sin(a.v)); }
 DUAL_INLINE dual d_exp(dual a) { double e = exp(a.v); return d_chain(a, e, e); }
 DUAL_INLINE dual d_atan(dual a) { return d_chain(a, atan(a.v), 1.0 / (1.0 + a.v * a.v)); }
+DUAL_INLINE dual d_tanh(dual a) { double t = tanh(a.v); return d_chain(a, t, 1.0 - t * t); }
 DUAL_INLINE dual d_abs(dual a) { return d_chain(a, fabs(a.v), a.v < 0.0 ? -1.0 : 1.0); }
 
 DUAL_INLINE dual d_sqrt(dual a)
@@ -164,5 +171,7 @@ DUAL_INLINE dual d_atan2(dual y, dual x)
     double den = x.v * x.v + y.v * y.v;
     return d_lin2_over(atan2(y.v, x.v), y, x.v, x, -y.v, den);
 }
+
+#endif /* DUAL_TAYLOR */
 
 #endif

@@ -61,12 +61,6 @@ static inline dual freeplay_atan(dual k_tlk, dual y, dual yfp, dual eps)
     return d_mulc(d_mul(k_tlk, d_add(t1, t2)), 1.0 / MLG_PI);
 }
 
-static inline dual d_tanh(dual a)
-{
-    double t = tanh(a.v);
-    return d_chain(a, t, 1.0 - t * t);
-}
-
 /* k/2 [(y - y_fp)(1 + tanh((y - y_fp)/eps)) + (y + y_fp)(1 - tanh((y + y_fp)/eps))] */
 static inline dual freeplay_tanh(dual k_tlk, dual y, dual yfp, dual eps)
 {

@@ -121,6 +121,20 @@ int mlg_rhs(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX]);
 int mlg_rhs_jacobian(const mlg_params *p, const double u[MLG_NX], double f[MLG_NX],
                      double dfdu[MLG_NX * MLG_NX], double dfdp[MLG_NX * MLG_NPAR]);
 
+/* ---- higher derivatives, exact to rounding (vector_field_taylor.c) ---- */
+/* f[i + MLG_NX*k] = d^k/dt^k f_i(u + t d) at t = 0, k = 0..3: f, J d,
+ * D^2 f[d, d] and D^3 f[d, d, d], by Taylor arithmetic along d. */
+int mlg_rhs_taylor(const mlg_params *p, const double u[MLG_NX], const double d[MLG_NX],
+                   double f[4 * MLG_NX]);
+/* The second and third multilinear forms of f at u for real arguments:
+ * B_i = sum_jk d2f_i/du_j du_k x_j y_k and C_i likewise (Kuznetsov's B, C),
+ * from 2 and 4 calls of mlg_rhs_taylor.  Complex arguments by linearity:
+ * B(q, q), B(q, conj q), C(q, q, conj q) from the real and imaginary parts. */
+int mlg_second_form(const mlg_params *p, const double u[MLG_NX], const double x[MLG_NX],
+                    const double y[MLG_NX], double B[MLG_NX]);
+int mlg_third_form(const mlg_params *p, const double u[MLG_NX], const double x[MLG_NX],
+                   const double y[MLG_NX], const double z[MLG_NX], double C[MLG_NX]);
+
 /* Intermediate quantities of one evaluation, for tests and reports, in SI
  * units.  X(name, n): one double (n = 1) or a tyre pair [0] = L, [1] = R
  * (n = 2).  The struct is generated from this table, and the drivers read

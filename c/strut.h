@@ -35,9 +35,7 @@ static inline dual strut_damper_force(const mlg_constants *c, dual eta, dual eta
  * seal; a constant normal force (docs/model.md 9). */
 static inline dual seal_friction(dual size, dual slip, const mlg_constants *c)
 {
-    dual x = d_mulc(slip, 1.0 / c->v_fric);
-    double t = tanh(x.v);
-    return d_mul(size, d_chain(x, t, 1.0 - t * t));
+    return d_mul(size, d_tanh(d_mulc(slip, 1.0 / c->v_fric)));
 }
 
 /* the moment against the twist of piston in strut, acting as M_cpsi does */

@@ -1,5 +1,7 @@
-/* Benchmark (not a test): CPU time of one evaluation of f, of f + df/du, and
- * of f + df/du + df/dp, at representative states; ratios from the same run. */
+/* Benchmark (not a test): CPU time of one evaluation of f, of f + df/du, of
+ * f + df/du + df/dp, of f and three derivatives along a direction (Taylor),
+ * and of the forms B(x, y) and C(x, y, z), at representative states; ratios
+ * from the same run. */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdio.h>
@@ -17,19 +19,26 @@ static double now(void)
 enum { NSTATES = 16 };
 static mlg_params params;
 static double states[NSTATES][MLG_NX];
+static double directions[3][MLG_NX];
 static volatile double sink;
+
+enum { F, JACOBIAN, JACOBIAN_P, TAYLOR, SECOND_FORM, THIRD_FORM, NKINDS };
 
 /* Seconds per call of one kind over about 0.05 s */
 static double time_per_call(int kind)
 {
-    double f[MLG_NX], J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
+    double f[4 * MLG_NX], J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
+    const double *x = directions[0], *y = directions[1], *z = directions[2];
     long calls = 0;
     double start = now(), elapsed;
     do {
         for (int r = 0; r < 256; r++, calls++) {
             const double *u = states[calls % NSTATES];
-            if (kind == 0) mlg_rhs(&params, u, f);
-            else mlg_rhs_jacobian(&params, u, f, J, kind == 2 ? P : NULL);
+            if (kind == F) mlg_rhs(&params, u, f);
+            else if (kind == TAYLOR) mlg_rhs_taylor(&params, u, x, f);
+            else if (kind == SECOND_FORM) mlg_second_form(&params, u, x, y, f);
+            else if (kind == THIRD_FORM) mlg_third_form(&params, u, x, y, z, f);
+            else mlg_rhs_jacobian(&params, u, f, J, kind == JACOBIAN_P ? P : NULL);
             sink += f[MLG_PSI_DOT];
         }
         elapsed = now() - start;
@@ -37,14 +46,14 @@ static double time_per_call(int kind)
     return elapsed / calls;
 }
 
-/* The three kinds in turn, ROUNDS times; the fastest round of each, so that
+/* The kinds in turn, ROUNDS times; the fastest round of each, so that
  * what load from other processes still costs (caches) drops out of the ratios. */
 enum { ROUNDS = 20 };
-static void time_all(double best[3])
+static void time_all(double best[NKINDS])
 {
-    for (int kind = 0; kind < 3; kind++) best[kind] = INFINITY;
+    for (int kind = 0; kind < NKINDS; kind++) best[kind] = INFINITY;
     for (int round = 0; round < ROUNDS; round++)
-        for (int kind = 0; kind < 3; kind++) best[kind] = fmin(best[kind], time_per_call(kind));
+        for (int kind = 0; kind < NKINDS; kind++) best[kind] = fmin(best[kind], time_per_call(kind));
 }
 
 int main(void)
@@ -63,13 +72,21 @@ int main(void)
         states[k][MLG_LAMBDA_L] = 1e-3 * (k % 4 - 1.5);
         states[k][MLG_LAMBDA_R] = -1e-3 * (k % 4 - 1.5);
     }
-    double best[3];
+    for (int k = 0; k < 3; k++)   /* unit directions of mixed sign, as a Hopf eigenvector's parts */
+        for (int i = 0; i < MLG_NX; i++) directions[k][i] = cos(1.0 + 2.0 * i + 3.0 * k);
+    double best[NKINDS];
     time_all(best);
-    double t_f = best[0], t_fj = best[1], t_fjp = best[2];
+    double t_f = best[F], t_fj = best[JACOBIAN], t_fjp = best[JACOBIAN_P];
     printf("bench_vector_field: F* = 1, V = 100 m/s, y_fp = 1 mm, %d states\n", NSTATES);
     printf("  f                  %8.3f us\n", 1e6 * t_f);
     printf("  f + df/du          %8.3f us   (%.1f x f)\n", 1e6 * t_fj, t_fj / t_f);
     printf("  f + df/du + df/dp  %8.3f us   (%.1f x f)\n", 1e6 * t_fjp, t_fjp / t_f);
+    printf("  f, D^1..3 f along d %7.3f us   (%.1f x f)\n", 1e6 * best[TAYLOR],
+           best[TAYLOR] / t_f);
+    printf("  B(x, y), exact     %8.3f us   (%.1f x f)\n", 1e6 * best[SECOND_FORM],
+           best[SECOND_FORM] / t_f);
+    printf("  C(x, y, z), exact  %8.3f us   (%.1f x f)\n", 1e6 * best[THIRD_FORM],
+           best[THIRD_FORM] / t_f);
     printf("  finite-difference df/du would cost %d f-evaluations (%.1f x f with one-sided steps)\n",
            MLG_NX + 1, (double)(MLG_NX + 1));
     return 0;
