@@ -5,30 +5,32 @@ equilibrium alone (numpy and the c/ library, no AUTO).
 
     model = Model("figures", Fstar=1.0, yfp=1.0, eps_rel=0.1, V=144.26969033)
     hopf = first_lyapunov(model, model.equilibrium())   # H3
-    hopf.l1, hopf.omega, hopf.spread   # 0.0338 (> 0: subcritical), 82.2 rad/s, 4e-8
+    hopf.l1, hopf.omega    # 0.0338 (> 0: subcritical), 82.2 rad/s
 
 Kuznetsov, Elements of Applied Bifurcation Theory (3rd ed.), section 3.5,
-eq. (3.20): coefficient(A, B, C).  The second and third derivatives B and
-C of f come from central differences of the exact Jacobian (second_form,
-third_form); exact forms can take their place in coefficient().
+eq. (3.20): coefficient(A, B, C).  first_lyapunov takes the forms B and C
+exact to rounding from the c/ library (Model.second_form, .third_form:
+Taylor arithmetic, c/vector_field_taylor.c); by_differences takes them
+from central differences of the exact Jacobian, for a model that has only
+.jacobian(u) and as the independent check of the exact forms.
 
-`model` is anything with .jacobian(u) -> df/du (an mlgmodel.Model).
 f need only be smooth along q: the oleo's quadratic damping |eta'| eta'
 is not at eta' = 0, but the critical modes of straight rolling have no axial
-part (q_eta = q_eta' = 0), so J is differentiated only where f is smooth.
+part (q_eta = q_eta' = 0), so f is differentiated only where it is smooth.
 """
+import itertools
 from typing import Callable, NamedTuple
 
 import numpy
 
 from mlgshimmy.shared import mlgmodel
 
-# Steps tried, along directions scaled to max-norm 1 in the state's units
+# by_differences: steps tried, along directions scaled to max-norm 1 in the state's units
 # (rad, m, rad/s, m/s).  No one step serves every Hopf point: with freeplay
 # the link law (15) changes its curvature over psi ~ eps / r_tlk ~ 2e-4 rad,
 # so the truncation error (falling as h^2) needs psi steps of a few 1e-7 rad,
 # while at zero freeplay l1 is 1e5 times smaller and the rounding of J
-# divided by h^2 needs h near 1e-3.  first_lyapunov takes the step where
+# divided by h^2 needs h near 1e-3.  by_differences takes the step where
 # three successive halvings agree best, where truncation meets rounding.
 # The last step, 7.6e-8, stops where a field varying on unit scales keeps
 # two digits in C (rounding eps |J| / h^2 ~ 1e-2 |J|); below it the
@@ -42,8 +44,8 @@ class Hopf(NamedTuple):
     q: numpy.ndarray       # A q = i omega q, <q, q> = 1
     p: numpy.ndarray       # A^T p = -i omega p, <p, q> = 1
     real_part: float       # Re of the pair used (0 at an exact Hopf point)
-    h: float = numpy.nan   # the step of B and C (first_lyapunov)
-    spread: float = numpy.nan  # max - min of l1 over the steps 2h, h, h/2
+    h: float = numpy.nan   # by_differences: the step of B and C
+    spread: float = numpy.nan  # by_differences: max - min of l1 over the steps 2h, h, h/2
 
 
 def _directional(model, u, x, h):
@@ -68,31 +70,36 @@ def _mixed(model, u, x, y, h):
     return (J(u + a + b) - J(u + a - b) - J(u - a + b) + J(u - a - b)) * (sx * sy / (4 * h * h))
 
 
-def second_form(model, u, h: float) -> Callable:
-    """B(x, y) = sum_jk d2f/du_j du_k x_j y_k at u, for complex x and y by
-    linearity: B(x, y) = [d/ds J(u + s Re x) + i d/ds J(u + s Im x)] y."""
-    u = numpy.asarray(u, dtype=float)
-
-    def B(x, y):
-        x = numpy.asarray(x, dtype=complex)
-        return (_directional(model, u, x.real, h) @ y
-                + 1j * (_directional(model, u, x.imag, h) @ y))
-    return B
-
-
-def third_form(model, u, h: float) -> Callable:
-    """C(x, y, z) = sum_jkl d3f/du_j du_k du_l x_j y_k z_l at u, complex x
-    and y split into their real and imaginary parts (C is trilinear)."""
-    u = numpy.asarray(u, dtype=float)
-
-    def C(x, y, z):
-        x, y = numpy.asarray(x, dtype=complex), numpy.asarray(y, dtype=complex)
-        out = numpy.zeros(len(u), dtype=complex)
-        for cx, xr in ((1.0, x.real), (1j, x.imag)):
-            for cy, yr in ((1.0, y.real), (1j, y.imag)):
-                out += cx * cy * (_mixed(model, u, xr, yr, h) @ z)
+def complex_form(real_form: Callable) -> Callable:
+    """A multilinear form of complex vectors from its values at real ones:
+    each argument split into its real and imaginary parts,
+    F(x, y, ...) = sum over the parts of i^(number of imaginary parts) F(parts)."""
+    def form(*vectors):
+        vectors = [numpy.asarray(v, dtype=complex) for v in vectors]
+        out = numpy.zeros(len(vectors[0]), dtype=complex)
+        for parts in itertools.product((0, 1), repeat=len(vectors)):
+            real = [v.imag if part else v.real for v, part in zip(vectors, parts)]
+            if all(numpy.any(r) for r in real):   # a zero part adds nothing
+                out += 1j ** sum(parts) * numpy.asarray(real_form(*real))
         return out
-    return C
+    return form
+
+
+def exact_forms(model, u):
+    """(B, C) at u for complex arguments, exact to rounding: the c/ library's
+    real forms (Model.second_form, Model.third_form)."""
+    u = numpy.asarray(u, dtype=float)
+    return (complex_form(lambda x, y: model.second_form(u, x, y)),
+            complex_form(lambda x, y, z: model.third_form(u, x, y, z)))
+
+
+def difference_forms(model, u, h: float):
+    """(B, C) at u for complex arguments from central differences of the
+    exact Jacobian, step h: B(x, y) = d/ds J(u + s x) y, C(x, y, z) =
+    d2/ds dt J(u + s x + t y) z."""
+    u = numpy.asarray(u, dtype=float)
+    return (complex_form(lambda x, y: _directional(model, u, x, h) @ y),
+            complex_form(lambda x, y, z: _mixed(model, u, x, y, h) @ z))
 
 
 def critical_pair(A: numpy.ndarray):
@@ -125,17 +132,28 @@ def coefficient(A: numpy.ndarray, B: Callable, C: Callable) -> Hopf:
     return Hopf(bracket.real / (2 * omega), omega, q, p, real_part)
 
 
-def at_step(model, u, h: float) -> Hopf:
-    """coefficient() with B and C by central differences of step h; u a
-    sequence or {state name: value}."""
+def _state(u) -> numpy.ndarray:
+    """u as an array, from a sequence or {state name: value}."""
     if isinstance(u, dict):
         u = [u[name] for name in mlgmodel.UNAMES]
-    u = numpy.asarray(u, dtype=float)
-    hopf = coefficient(model.jacobian(u), second_form(model, u, h), third_form(model, u, h))
+    return numpy.asarray(u, dtype=float)
+
+
+def first_lyapunov(model, u) -> Hopf:
+    """l1 at the equilibrium u (a sequence or {state name: value}) of a
+    model with exact forms (an mlgmodel.Model)."""
+    u = _state(u)
+    return coefficient(model.jacobian(u), *exact_forms(model, u))
+
+
+def at_step(model, u, h: float) -> Hopf:
+    """coefficient() with B and C by central differences of step h."""
+    u = _state(u)
+    hopf = coefficient(model.jacobian(u), *difference_forms(model, u, h))
     return hopf._replace(h=h)
 
 
-def first_lyapunov(model, u, steps=STEPS) -> Hopf:
+def by_differences(model, u, steps=STEPS) -> Hopf:
     """l1 at the equilibrium u (at_step) for each of `steps` (decreasing by
     halves), kept at the step whose value and its two neighbours' differ
     least relative to their size: their spread is the error estimate.

@@ -64,6 +64,8 @@ def library():
     lib.mlg_status_text.restype = ctypes.c_char_p
     lib.mlg_equilibrium.argtypes = [P, ctypes.c_double, D]
     lib.mlg_rhs_jacobian.argtypes = [P, D, D, D, D]
+    lib.mlg_second_form.argtypes = [P, D, D, D, D]
+    lib.mlg_third_form.argtypes = [P, D, D, D, D, D]
     lib.mlg_r_tlk.restype = ctypes.c_double
     lib.mlg_r_tlk.argtypes = [P, ctypes.c_double]
     lib.mlg_epsilon_m.restype = ctypes.c_double
@@ -241,6 +243,30 @@ class Model:
         if status != 0:
             raise RuntimeError(f"jacobian: {library().mlg_status_text(status).decode()}")
         return numpy.array(J, dtype=float).reshape(nx, nx).T
+
+    def second_form(self, u, x, y) -> numpy.ndarray:
+        """B(x, y) = sum_jk d2f/du_j du_k x_j y_k at the state u (a sequence in
+        UNAMES order) for real x and y, exact to rounding (c/vector_field_taylor.c)."""
+        return self._form(library().mlg_second_form, u=u, x=x, y=y)
+
+    def third_form(self, u, x, y, z) -> numpy.ndarray:
+        """C(x, y, z) = sum_jkl d3f/du_j du_k du_l x_j y_k z_l at u, real
+        arguments, exact to rounding."""
+        return self._form(library().mlg_third_form, u=u, x=x, y=y, z=z)
+
+    def _form(self, function, **arguments) -> numpy.ndarray:
+        nx = _table("NX")
+        vectors = []
+        for name, v in arguments.items():
+            v = numpy.asarray(v, dtype=float)
+            if v.shape != (nx,):
+                raise ValueError(f"{function.__name__}: {name} has shape {v.shape}, not ({nx},)")
+            vectors.append((ctypes.c_double * nx)(*v))
+        out = (ctypes.c_double * nx)()
+        status = function(ctypes.byref(self._p), *vectors, out)
+        if status != 0:
+            raise RuntimeError(f"{function.__name__}: {library().mlg_status_text(status).decode()}")
+        return numpy.array(out, dtype=float)
 
     def energy(self, u: Sequence[float], eta_ref: float):
         """(kinetic, potential) of the model's Lagrangian at the state u (a
