@@ -10,6 +10,7 @@ import numpy
 import pytest
 
 from mlgshimmy.shared import continuation, naming, spectrum
+from mlgshimmy.shared.jobs import cache
 
 FREEPLAY = {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1}
 
@@ -65,16 +66,63 @@ class Run(list):
     pass
 
 
-def branch(V, amp):
-    return {"V": numpy.asarray(V, float), "psi_amp": numpy.asarray(amp, float)}
+def branch(V, amp, stable):
+    """A stored orbit branch (jobs.cache.Branch), stable or not throughout."""
+    return cache.Branch({"columns": {"V": V, "psi_amp": amp}, "stable": [stable] * len(V),
+                         "labels": []})
 
 
-def test_criticality_is_the_side_of_the_orbits():
-    up = Run([branch([10.0, 10.4, 11.0], [0.0, 1e-3, 2e-3])])     # born at 10, grows in V
-    down = Run([branch([10.0, 9.6, 9.0], [0.0, 1e-3, 2e-3])])
+def test_criticality_is_the_side_and_stability_of_the_orbits():
+    up = Run([branch([10.0, 10.4, 11.0], [0.0, 1e-3, 2e-3], True)])     # born at 10, grows in V
+    down = Run([branch([10.0, 9.6, 9.0], [0.0, 1e-3, 2e-3], False)])
     assert naming.criticality(10.0, True, [up]) == "supercritical"
     assert naming.criticality(10.0, True, [down]) == "subcritical"
-    assert naming.criticality(10.0, False, [down]) == "supercritical"
-    ending = Run([branch([2.0, 9.0, 9.99], [0.0, 1e-2, 1e-4])])   # collapses onto 10 from below
+    assert naming.criticality(10.0, False, [up]) == "inconsistent"   # stable, on the stable side
+    stable_down = Run([branch([10.0, 9.6, 9.0], [0.0, 1e-3, 2e-3], True)])
+    assert naming.criticality(10.0, False, [stable_down]) == "supercritical"
+    ending = Run([branch([2.0, 9.0, 9.99], [0.0, 1e-2, 1e-4], True)])   # collapses onto 10 from below
     assert naming.criticality(10.0, False, [ending]) == "supercritical"
     assert naming.criticality(50.0, True, [up]) is None
+
+
+@pytest.mark.parametrize("V, verdict, decay", [
+    (1.4581594746679292, "supercritical", (0.0, 1e-4)),
+    (28.306722207961514, "supercritical", (0.0, 1e-4)),
+    (144.26969033434705, "subcritical", (0.8, 1.0)),
+])
+def test_simulations_on_each_side_say_what_l1_says(V, verdict, decay):
+    """At H1-H3 of the paper's gear: from a push of 1e-6 rad on the unstable
+    side the motion grows (to 9.6e-4, 2.0e-3, 5.3e-3 rad); started with that
+    amplitude on the stable side it decays to 2.9e-6 and 6.2e-6 of it at H1
+    and H2 (no orbit there) and keeps 0.88 of it at H3 (the orbits from H3
+    fold back at S into stable ones)."""
+    m = naming.mode("figures", "V", V, **FREEPLAY)
+    said = naming.simulated("figures", "V", V, m, **FREEPLAY)
+    assert said["verdict"] == verdict == naming.by_l1(m["l1"])
+    assert decay[0] < said["decay"] < decay[1]
+    assert said["amplitude"] > naming.GREW * naming.PSI0
+
+
+def test_weak_l1_is_where_the_normal_form_leaves_the_freeplay():
+    """The normal form's orbit at real part 0.01 omega: 0.44 freeplay angles
+    at H1 (not weak), 2.2 at H2, 4.0 at H3 (weak: simulated)."""
+    weak = [naming.mode("figures", "V", V, **FREEPLAY)["weak"]
+            for V in (1.4581594746679292, 28.306722207961514, 144.26969033434705)]
+    assert weak == [False, True, True]
+
+
+def test_the_three_checks_are_counted_and_said():
+    m = {"band": "high", "dof": "lateral", "loses": True, "l1": 0.0338, "weak": True}
+    sub = {"verdict": "subcritical", "distance": 12.9, "amplitude": 5.3e-3, "decay": 0.88}
+    sup = {**sub, "verdict": "supercritical"}
+    assert naming.verdicts(m, "subcritical", sub)["agree"]
+    assert not naming.verdicts(m, "subcritical", sup)["agree"]
+    assert not naming.verdicts(m, None, None)["agree"]          # nothing checked it
+    assert "simulation agrees (at 12.9 either side" in naming.describe(m, "subcritical", sub)
+    assert "DISAGREES with simulation, which is supercritical" in \
+        naming.describe(m, "subcritical", sup)
+    assert naming.needs_simulation(m, "subcritical")            # weak
+    assert naming.needs_simulation({**m, "weak": False}, "supercritical")   # disagrees
+    assert not naming.needs_simulation({**m, "weak": False}, "subcritical")
+    points = [{"agree": True}, {"agree": False}, {"agree": True}]
+    assert naming.agreement(points).startswith("criticality: 2 of 3 Hopf points agree")

@@ -15,22 +15,45 @@ so a point that no longer exists at a changed gear is reported as
 vanished instead of lending its name to another.
 
 Criticality from the sign of the first Lyapunov coefficient l1
-(shared.lyapunov: supercritical where l1 < 0), checked against the orbit
-branch at the point: supercritical where the orbits lie on the side where
-the crossing mode is unstable, subcritical on the other (the paper's H3:
-its orbits run down in V towards the fold S, while straight rolling is
-stable below H3).  Where the two disagree, the description says so.
+(shared.lyapunov: supercritical where l1 < 0), checked three ways
+(verdicts): against the orbit branch at the point (criticality:
+supercritical where the orbits lie on the side where the crossing mode
+is unstable and are stable there, subcritical where they lie on the other
+side and are unstable; the paper's H3: its orbits run down in V towards
+the fold S, while straight rolling is stable below H3), and, where the
+two disagree, no branch tells or |l1| is small (weak), against short
+simulations on each side (simulated).  Where they disagree, the
+description says so.
 """
 from typing import Dict, List, Optional, Sequence
 
 import numpy
 
-from mlgshimmy.shared import lyapunov, mlgmodel, spectrum
+from mlgshimmy.shared import branches, lyapunov, mlgmodel, simulator, spectrum
 
 HIGH_HZ = 8.0   # Hz: between the paper's low (1.7-3.3 Hz) and high (13 Hz) pairs
 DEGREES_OF_FREEDOM = {"psi": "torsional", "delta": "lateral", "beta": "longitudinal"}
 NEAR = 0.05     # relative: orbit points this close to a Hopf value tell its side
 ZERO_AMPLITUDE = 1e-8   # rad: below, an "orbit" is straight rolling (continuation.COLLAPSED)
+# Simulations (simulated): at the distance d from the Hopf point where the
+# pair's real part is RATE omega (at most SPAN of the value), on each side,
+# each run lasting SETTLE / |real part|.  On the unstable side from
+# straight rolling moved by PSI0 in psi: the motion grows (to GREW PSI0 at
+# least) onto the attractor there; on the stable side from straight
+# rolling moved by that attractor's amplitude: it decays (below DECAYED of
+# it) if no orbit surrounds straight rolling there (supercritical), and
+# persists (above PERSISTS) on the orbits that do (subcritical: the
+# unstable ones born at the point fold back into stable ones).
+RATE = 0.02
+SPAN = 0.1
+SETTLE = 12.0
+PSI0 = 1e-6            # rad: below every orbit of the figures near their Hopf points
+GREW = 10.0
+DECAYED, PERSISTS = 0.1, 0.5
+# |l1| is weak where the normal form's orbit at real part 0.01 omega,
+# 2 |q_psi| sqrt(0.01 / |l1|), exceeds the angle over which the field stays
+# cubic: the freeplay angle y_fp / r_tlk, or WEAK_ZERO_FREEPLAY without freeplay.
+WEAK_ZERO_FREEPLAY = 0.05   # rad: simulator.STARTS["shimmy"], a large swing
 
 
 def mode(parameter_set: str, parameter: str, value: float, state=None,
@@ -39,13 +62,15 @@ def mode(parameter_set: str, parameter: str, value: float, state=None,
     {"freq_hz", "band" ("low"/"high"), "dof" (DEGREES_OF_FREEDOM's word for
     the largest angle of its eigenvector), "loses" (True where straight
     rolling loses stability in that pair as the parameter grows), "l1" (the
-    first Lyapunov coefficient, shared.lyapunov)}."""
+    first Lyapunov coefficient, shared.lyapunov), "mu_slope" (d Re lambda /
+    d parameter), "weak" (|l1| small: weak())}."""
     def spectrum_at(at):
         model = mlgmodel.Model(parameter_set, **{**values, parameter: at})
         u = state(at) if state else model.equilibrium()
         return numpy.linalg.eig(numpy.array(model.jacobian(u)))
     here = mlgmodel.Model(parameter_set, **{**values, parameter: value})
-    l1 = lyapunov.first_lyapunov(here, state(value) if state else here.equilibrium()).l1
+    u = state(value) if state else here.equilibrium()
+    hopf = lyapunov.first_lyapunov(here, u)
     lam, vec = spectrum_at(value)
     k = int(numpy.argmin(numpy.abs(lam.real) + (numpy.abs(lam.imag) < 1e-6) * 1e9))
     lam, vec = lam[k], vec[:, k]
@@ -60,7 +85,9 @@ def mode(parameter_set: str, parameter: str, value: float, state=None,
     freq = abs(lam.imag) / (2 * numpy.pi)
     return {"freq_hz": float(freq), "band": "high" if freq >= HIGH_HZ else "low",
             "dof": DEGREES_OF_FREEDOM[max(size, key=size.get)],
-            "loses": bool(after.real > before.real), "l1": float(l1)}
+            "loses": bool(after.real > before.real), "l1": float(hopf.l1),
+            "mu_slope": float((after.real - before.real) / (2 * step)),
+            "weak": bool(weak(here, u, hopf))}
 
 
 def names(modes: Sequence[Dict[str, object]]) -> List[str]:
@@ -85,11 +112,23 @@ def names(modes: Sequence[Dict[str, object]]) -> List[str]:
     return out
 
 
+def weak(model: mlgmodel.Model, u, hopf: lyapunov.Hopf) -> bool:
+    """|l1| small: the normal form's orbit where the pair's real part is
+    0.01 omega would reach beyond the angle over which the field is cubic
+    (module constants)."""
+    u = [u[name] for name in mlgmodel.UNAMES] if isinstance(u, dict) else u
+    angle = (1e-3 * model["yfp"] / model.r_tlk(u[mlgmodel.UNAMES.index("eta")])
+             if model["yfp"] > 0 else WEAK_ZERO_FREEPLAY)
+    return 2 * abs(hopf.q[0]) * numpy.sqrt(0.01 / abs(hopf.l1)) > angle
+
+
 def criticality(value: float, loses: bool, orbits, parameter: str = "V") -> Optional[str]:
-    """"supercritical" or "subcritical" from the side of `value` on which
-    the orbit branches `orbits` (runs of AUTO diagrams, or stored branches)
-    come nearest to straight rolling there; None if no branch comes within
-    NEAR of it."""
+    """"supercritical" or "subcritical" from the orbit branches `orbits`
+    (runs of AUTO diagrams, or stored branches) where they come nearest to
+    straight rolling at `value`: their side (the side where the crossing
+    mode is unstable: supercritical) and their stability there (stable:
+    supercritical); "inconsistent" where side and stability disagree; None
+    if no branch comes within NEAR of it."""
     best = None
     for run in orbits:
         for branch in run:
@@ -99,13 +138,15 @@ def criticality(value: float, loses: bool, orbits, parameter: str = "V") -> Opti
             # a branch born at the point: its first step tells the side, however long
             near[1:2] |= len(v) > 1 and abs(v[0] - value) <= 1e-6 * max(1.0, abs(value))
             near = numpy.flatnonzero(near & (amp > ZERO_AMPLITUDE) & (v != value))
+            stable = branches.stable_mask(branch)
             for i in near:
                 if best is None or amp[i] < best[0]:
-                    best = (amp[i], v[i] - value)
+                    best = (amp[i], v[i] - value, bool(stable[i]))
     if best is None:
         return None
     unstable_side = 1.0 if loses else -1.0
-    return "supercritical" if best[1] * unstable_side > 0 else "subcritical"
+    side = "supercritical" if best[1] * unstable_side > 0 else "subcritical"
+    return side if best[2] == (side == "supercritical") else "inconsistent"
 
 
 def by_l1(l1: float) -> str:
@@ -113,33 +154,110 @@ def by_l1(l1: float) -> str:
     return "supercritical" if l1 < 0 else "subcritical"
 
 
-def describe(m: Dict[str, object], branch: Optional[str]) -> str:
-    """'high-frequency lateral, loses stability, subcritical (l1 = +0.0338;
-    the orbit branch agrees)': the verdict of l1, checked against the side
-    of the orbit branch (criticality); a disagreement is said, never hidden."""
+def _amplitude(parameter_set, parameter, value, psi0, t_end, state, values):
+    """psi amplitude [rad] over the last second of a simulation at
+    `value`, from straight rolling with psi moved by psi0; inf where the
+    model leaves its domain (the motion went far from straight rolling)."""
+    model = mlgmodel.Model(parameter_set, **{**values, parameter: value})
+    u = dict(state(value) if state else model.equilibrium())
+    u["psi"] += psi0
+    params = {name: repr(float(v)) for name, v in {**values, parameter: value}.items()}
+    proc = simulator.run(None, "--set", parameter_set, "--t-end", t_end,
+                         *simulator.state_args(u), params=params)
+    if simulator.left_domain(proc):
+        return numpy.inf
+    if proc.returncode != 0:
+        raise simulator.SimulationError(f"naming: mlg_simulate failed at {parameter} = "
+                                        f"{value:.6g}: {proc.stderr.strip()}")
+    return simulator.summary(proc.stdout)["psi_amplitude_rad"]
+
+
+def simulated(parameter_set: str, parameter: str, value: float, m: Dict[str, object],
+              state=None, **values: float) -> Dict[str, object]:
+    """The criticality short simulations on each side give (module
+    constants): {"verdict": "supercritical", "subcritical" or "unsettled"
+    (the motion did not grow on the unstable side, or neither decayed nor
+    persisted on the stable one), "distance" d, "amplitude" [rad] on the
+    unstable side, "decay" (the stable side's end amplitude over its start)}."""
+    d = min(RATE * 2 * numpy.pi * m["freq_hz"] / abs(m["mu_slope"]), SPAN * abs(value))
+    unstable = 1.0 if m["mu_slope"] > 0 else -1.0
+    t_end = SETTLE / (abs(m["mu_slope"]) * d)
+
+    def amplitude(at, psi0):
+        return _amplitude(parameter_set, parameter, at, psi0, t_end, state, values)
+    grown = amplitude(value + unstable * d, PSI0)
+    start = min(grown, WEAK_ZERO_FREEPLAY)
+    decay = amplitude(value - unstable * d, start) / start
+    verdict = ("unsettled" if grown < GREW * PSI0 else
+               "supercritical" if decay < DECAYED else
+               "subcritical" if decay > PERSISTS else "unsettled")
+    return {"verdict": verdict, "distance": float(d), "amplitude": float(grown),
+            "decay": float(decay)}
+
+
+def verdicts(m: Dict[str, object], branch: Optional[str],
+             simulation: Optional[Dict[str, object]]) -> Dict[str, object]:
+    """The three checks side by side: {"criticality" (by l1), "branch",
+    "simulation" (a verdict or None where not simulated), "agree" (True
+    where every check made says what l1 says, and one was made)}."""
     verdict = by_l1(m["l1"])
-    check = ("no orbit branch near it to check" if branch is None else
-             "the orbit branch agrees" if branch == verdict else
-             f"DISAGREES with the orbit branch, which is {branch}")
+    simulation = simulation["verdict"] if simulation else None
+    made = [c for c in (branch, simulation) if c is not None]
+    return {"criticality": verdict, "branch": branch, "simulation": simulation,
+            "agree": bool(made) and all(c == verdict for c in made)}
+
+
+def needs_simulation(m: Dict[str, object], branch: Optional[str]) -> bool:
+    """Where the branch check does not settle l1's verdict, or |l1| is small."""
+    return branch != by_l1(m["l1"]) or m.get("weak", False)
+
+
+def describe(m: Dict[str, object], branch: Optional[str],
+             simulation: Optional[Dict[str, object]] = None) -> str:
+    """'high-frequency lateral, loses stability, subcritical (l1 = +0.0338;
+    the orbit branch agrees; simulation agrees)': the verdict of l1,
+    checked against the orbit branch (criticality) and the simulations
+    (simulated); a disagreement is said, never hidden."""
+    verdict = by_l1(m["l1"])
+    checks = ["no orbit branch near it to check" if branch is None else
+              "the orbit branch agrees" if branch == verdict else
+              f"DISAGREES with the orbit branch, which is {branch}"]
+    if simulation is not None:
+        said = simulation["verdict"]
+        checks.append(("simulation agrees" if said == verdict else
+                       f"DISAGREES with simulation, which is {said}")
+                      + f" (at {simulation['distance']:.3g} either side: amplitude "
+                        f"{simulation['amplitude']:.3g} rad, then decay to "
+                        f"{simulation['decay']:.2g} of it)")
     return (f"{m['band']}-frequency {m['dof']}, "
             f"{'loses' if m['loses'] else 'regains'} stability, {verdict} "
-            f"(l1 = {m['l1']:+.4g}; {check})")
+            f"(l1 = {m['l1']:+.4g}{', weak' if m.get('weak') else ''}; {'; '.join(checks)})")
+
+
+def agreement(points: Sequence[Dict[str, object]]) -> str:
+    """'criticality: 3 of 3 Hopf points agree three ways' (named_points)."""
+    agree = sum(bool(p["agree"]) for p in points)
+    return f"criticality: {agree} of {len(points)} Hopf points agree (l1, branch, simulation)"
 
 
 def named_points(hopf, orbits, parameter_set: str, parameter: str, state=None,
                  **values: float) -> List[Dict[str, object]]:
     """[{"name", <parameter>, "freq_hz", "band", "dof", "loses", "l1",
-    "criticality" (by l1), "branch_criticality" (the side of the orbit
-    branches `orbits`: the check), "about"}] of the Hopf points hopf =
+    "mu_slope", "weak", "criticality" (by l1), "branch_criticality" (the
+    orbit branches `orbits`), "simulated" (simulated(), where
+    needs_simulation), "agree", "about"}] of the Hopf points hopf =
     [(value, Hz)] of straight rolling along `parameter`, named by their mode."""
     modes = [mode(parameter_set, parameter, v, state=state, **values) for v, _ in hopf]
     out = []
     for (v, _), m, name in zip(hopf, modes, names(modes)):
         branch = criticality(v, m["loses"], orbits, parameter)
-        out.append({"name": name, parameter: v, **m, "criticality": by_l1(m["l1"]),
-                    "branch_criticality": branch, "about": describe(m, branch)})
+        simulation = (simulated(parameter_set, parameter, v, m, state=state, **values)
+                      if needs_simulation(m, branch) else None)
+        checked = verdicts(m, branch, simulation)
+        out.append({"name": name, parameter: v, **m, "criticality": checked["criticality"],
+                    "branch_criticality": branch, "simulated": simulation,
+                    "agree": checked["agree"], "about": describe(m, branch, simulation)})
     return out
-
 
 
 def scanned(parameter_set: str, parameter: str, grid, **values: float) -> Dict[str, float]:
