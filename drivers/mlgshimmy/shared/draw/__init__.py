@@ -65,6 +65,12 @@ POINTS = {
            "legend": "period doubling"},
     "change": {"name": "", "marker": "o", "mfc": "white", "ms": 4.5,
                "legend": "stability change AUTO did not label"},
+    # codimension-two points on curves of Hopf points (shared.codim2)
+    "GH": {"name": "GH", "marker": "*", "mfc": "k", "ms": 8.0,
+           "legend": "generalised Hopf point (l1 = 0)"},
+    "BT": {"name": "BT", "marker": "P", "mfc": "k", "ms": 6.0, "legend": "Bogdanov-Takens point"},
+    "ZH": {"name": "ZH", "marker": "X", "mfc": "k", "ms": 6.0, "legend": "zero-Hopf point"},
+    "HH": {"name": "HH", "marker": "h", "mfc": "k", "ms": 6.0, "legend": "Hopf-Hopf point"},
 }
 SPECIAL = ("LP", "BP", "TR")
 START_ZONE = 1e-3   # relative distance from a branch's start inside which changes are noise   # the labelled points mark_specials marks on branches

@@ -1,0 +1,102 @@
+"""Tests of shared/codim2.py: codimension-two points located on Hopf
+curves of systems where they are known in closed form, then on Fig. 9's
+zero-freeplay Hopf curve of the paper's gear, which has none."""
+import numpy as np
+import pytest
+
+from mlgshimmy.shared import codim2, continuation, mlgmodel, spectrum
+
+
+class Cubic:
+    """x' = a x - y + b x r^2, y' = x + a y + b y r^2 (r^2 = x^2 + y^2),
+    w' = (b - 0.6) w, p' = (b - 0.3) p - 3.3 q, q' = 3.3 p + (b - 0.3) q, at
+    its equilibrium 0: on the Hopf curve a = 0, l1 = 2 b (GH at b = 0), a
+    second pair reaches the axis at b = 0.3 (HH) and a real eigenvalue
+    crosses 0 at b = 0.6 (ZH)."""
+
+    def __init__(self, a, b):
+        self.a, self.b = a, b
+
+    def jacobian(self, u):
+        a, b = self.a, self.b
+        J = np.zeros((5, 5))
+        J[:2, :2] = [[a, -1.0], [1.0, a]]
+        J[2, 2] = b - 0.6
+        J[3:, 3:] = [[b - 0.3, -3.3], [3.3, b - 0.3]]
+        return J
+
+    def second_form(self, u, x, y):
+        return np.zeros(5)
+
+    def third_form(self, u, x, y, z):
+        """D^3 of b (x^3 + x y^2) and b (y^3 + y x^2)."""
+        def mixed(i, j):   # D^3 of v_i v_j^2 in the directions x, y, z
+            return 2 * (x[i] * y[j] * z[j] + x[j] * y[i] * z[j] + x[j] * y[j] * z[i])
+        return self.b * np.array([6 * x[0] * y[0] * z[0] + mixed(0, 1),
+                                  6 * x[1] * y[1] * z[1] + mixed(1, 0), 0.0, 0.0, 0.0])
+
+
+class Nilpotent:
+    """x' = y, y' = -b x + a y + x^2 (a double-zero linear part at a = b =
+    0): at 0 the Hopf curve a = 0 has omega^2 = b for b > 0 and becomes
+    the neutral saddles +-sqrt(-b) for b < 0: BT at (0, 0)."""
+
+    def __init__(self, a, b):
+        self.a, self.b = a, b
+
+    def jacobian(self, u):
+        return np.array([[0.0, 1.0], [-self.b + 2 * u[0], self.a]])
+
+    def second_form(self, u, x, y):
+        return np.array([0.0, 2 * x[0] * y[0]])
+
+    def third_form(self, u, x, y, z):
+        return np.zeros(2)
+
+
+def cubic_at(a, b):
+    return Cubic(a, b), np.zeros(5)
+
+
+def nilpotent_at(a, b):
+    return Nilpotent(a, b), np.zeros(2)
+
+
+def test_gh_hh_zh_located_on_a_hopf_curve():
+    """Stored points b = -0.95, -0.85, ... (none at a zero); each point
+    located to 1e-8 of the curve's extent, l1 = 2 b along it."""
+    b = np.linspace(-0.95, 0.95, 20)
+    found = codim2.along_hopf_curve([(0.0, v) for v in b], cubic_at)
+    assert np.array(found["l1"]) == pytest.approx(2 * b, rel=1e-12)
+    assert [p["type"] for p in found["points"]] == ["GH", "HH", "ZH"]
+    for point, b_there in zip(found["points"], (0.0, 0.3, 0.6)):
+        assert point["b"] == pytest.approx(b_there, abs=2e-8)
+        assert point["a"] == pytest.approx(0.0, abs=2e-8)
+        assert point["omega"] == pytest.approx(1.0, rel=1e-9)
+    assert found["points"][0]["l1"] == pytest.approx(0.0, abs=1e-7)
+
+
+def test_bt_located_where_the_hopf_curve_meets_the_neutral_saddles():
+    b = np.linspace(0.9, -0.8, 12)
+    found = codim2.along_hopf_curve([(0.0, v) for v in b], nilpotent_at)
+    assert [p["type"] for p in found["points"]] == ["BT"]
+    bt = found["points"][0]
+    assert (bt["a"], bt["b"]) == pytest.approx((0.0, 0.0), abs=2e-8)
+    assert np.isnan(found["l1"][-1]) and found["omega"][-1] == 0.0   # saddles have no l1
+    assert found["omega"][0] == pytest.approx(np.sqrt(0.9), rel=1e-12)
+
+
+def test_fig09_hopf_curve_is_supercritical_throughout():
+    """The zero-freeplay Hopf curve of Fig. 9, sampled by the eigenvalue
+    scan at F* = 0.1 ... 3.5: l1 < 0 at every point (-1.2e-4 at F* = 0.1,
+    -1.26e-6 at 3.5), no codimension-two point between them."""
+    def at(V, F):
+        model = mlgmodel.Model("figures", V=V, Fstar=F)
+        return model, model.equilibrium()
+    loads = (0.1, 0.3, 1.0, 2.0, 3.5)
+    points = [(spectrum.hopf_scan("figures", "V", continuation.SPEED_SCAN, Fstar=F,
+                                  yfp=0.0)[0][0], F) for F in loads]
+    found = codim2.along_hopf_curve(points, at)
+    assert max(found["l1"]) < 0 and found["points"] == []
+    assert found["l1"][0] == pytest.approx(-1.2e-4, rel=0.05)
+    assert found["l1"][-1] == pytest.approx(-1.26e-6, rel=0.05)
