@@ -58,6 +58,11 @@ class Page(html.parser.HTMLParser):
             self._in_score = False
 
 
+# a figure's named points, under its table (e.g. fig10.plot's)
+NOTES = {"fig10": ["H3: high-frequency lateral, loses stability, subcritical (l1 = +0.03378; "
+                   "the orbit branch agrees)", "criticality: 3 of 3 Hopf points agree"]}
+
+
 @pytest.fixture
 def run_root(tmp_path, monkeypatch):
     """fig07, fig10 and fig12 made (result, table, PNG); the rest not."""
@@ -70,7 +75,7 @@ def run_root(tmp_path, monkeypatch):
             "figure": figure, "part": None, "data": {"numbers": ours},
             "provenance": {"parameter_set": "figures", "git_commit": "abc123",
                            "auto_version": "0.9.2", "written": "2026-01-01T00:00:00+00:00"}}))
-        paper.report(figure, ours)
+        paper.report(figure, ours, notes=NOTES.get(figure, ()))
         fig, ax = plt.subplots(figsize=(3, 2))
         ax.plot([0, 1], [0, 1])
         fig.savefig(root / "figures" / f"{figure}.png")
@@ -112,6 +117,9 @@ def test_the_page_from_cached_results(run_root, capsys):
     # the studies: one run (its table and figure shown), the others named as not run
     assert "study-criterion" in page.ids and "criterion: kappa* table" in text
     assert "Not run: <code>make -j2 atlas</code>" in text
+    # the lines under a table: the named points with their criticality
+    assert "<li>H3: high-frequency lateral, loses stability, subcritical (l1 = +0.03378; " \
+           "the orbit branch agrees)</li>" in text
 
 
 def test_chromium_renders_the_page(run_root, tmp_path):

@@ -10,6 +10,7 @@ from mlgshimmy.shared import domain
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import naming
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 
@@ -34,7 +35,8 @@ COLUMNS = ("V", "psi_amp", "delta_amp")
 
 
 def compute(parameter_set="figures", where="fig07"):
-    """{"F<F*>": {"eq", "po": stored branches, "hopf_V", "end_V", "end_psi_amp"}}."""
+    """{"F<F*>": {"eq", "po": stored branches, "hopf_V", "end_V", "end_psi_amp",
+    "hopf": the Hopf point named by its mode, criticality checked (shared.naming)}}."""
     rundir = paths.rundir(where)
     result = {}
     for Fstar in LOADS:
@@ -53,9 +55,11 @@ def compute(parameter_set="figures", where="fig07"):
         # any MX is kept, as the reference runs at a geometry were made
         po = ct.periodic_from(rundir, f"po_{tag}", hopf, stop={"V": 600.0},
                               allow_mx=ct.EDGE if gear.current().geometry.baseline else True)
+        named, = naming.named_points([(hopf["V"], None)], [po], parameter_set, "V",
+                                     Fstar=Fstar, **gear.parameters())
         result[tag] = {"eq": jobs.stored(eq, COLUMNS), "po": jobs.stored(po, COLUMNS),
                        "hopf_V": hopf["V"], "end_V": po[0]["V"][-1],
-                       "end_psi_amp": po[0]["psi_amp"][-1]}
+                       "end_psi_amp": po[0]["psi_amp"][-1], "hopf": named}
         for point in po("MX"):
             result[tag]["stop"] = domain.stop_reason(point)
             print(f"fig07: F* = {Fstar:g}: the orbits stop at V = {point['V']:.2f} m/s: "
@@ -85,8 +89,16 @@ def numbers(result):
     return out
 
 
+def about(result):
+    """The table's lines on the Hopf points: mode and criticality, checked."""
+    named = [(Fstar, result[f"F{Fstar:g}"].get("hopf")) for Fstar in LOADS]
+    named = [(Fstar, p) for Fstar, p in named if p]
+    return ([f"H, F* = {Fstar:g}: {p['about']}" for Fstar, p in named]
+            + ([naming.agreement([p for _, p in named])] if named else []))
+
+
 def plot(result):
-    paper.report("fig07", numbers(result))
+    paper.report("fig07", numbers(result), notes=about(result))
     fig, axes = plt.subplots(2, 2, figsize=(9, 6.4), sharex=True)
     for col, Fstar in enumerate(LOADS):
         load = result[f"F{Fstar:g}"]

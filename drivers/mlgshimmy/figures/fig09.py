@@ -1,12 +1,17 @@
 """Fig. 9: the zero-freeplay Hopf curve in the (V, F*) plane, F* in [0, 3.5],
-continued from the Hopf point of straight rolling at F* = 1."""
+continued from the Hopf point of straight rolling at F* = 1; l1 along it,
+its codimension-two points (shared.codim2) and the criticality of its
+ends checked (shared.naming)."""
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 
+from mlgshimmy.shared import codim2
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import naming
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 
@@ -26,7 +31,9 @@ FSTAR_RANGE = (0.1, 3.5)   # below F* ~ 0.1 the curve leaves V <= 600 m/s steepl
 
 
 def compute(parameter_set="figures", where="fig09"):
-    """{"curves": stored Hopf-curve branches, "ends": [(F*, V)] of their UZ ends}."""
+    """{"curves": stored Hopf-curve branches, "ends": [(F*, V)] of their UZ
+    ends, "tests": codim2.along_hopf_curve of each branch, "named": the ends
+    as Hopf points in V, named with their criticality checked}."""
     rundir = paths.rundir(where)
     start = ct.Start(parameter_set, Fstar=1.0, V=gear.start_speed(), **gear.parameters())
     eq = ct.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
@@ -38,13 +45,39 @@ def compute(parameter_set="figures", where="fig09"):
                                     stop={"Fstar": list(FSTAR_RANGE),
                                           "V": [ct.V_MIN, ct.V_MAX]},
                                     expect=["UZ"]))
-    return {"curves": [jobs.stored(c, ("V", "Fstar")) for c in curves],
-            "ends": [(p["Fstar"], p["V"]) for c in curves for p in c("UZ")]}
+    ends = [(p["Fstar"], p["V"]) for c in curves for p in c("UZ")]
+
+    def at(V, Fstar):
+        model = mlgmodel.Model(parameter_set, V=V, Fstar=Fstar, **gear.parameters())
+        return model, model.equilibrium()
+    tests = [codim2.along_hopf_curve(list(zip(b["V"], b["Fstar"])), at)
+             for c in curves for b in c]
+    named = [naming.named_points([(V, None)], [], parameter_set, "V", Fstar=Fstar,
+                                 **gear.parameters())[0] for Fstar, V in ends]
+    return {"curves": [jobs.stored(c, ("V", "Fstar")) for c in curves], "ends": ends,
+            "tests": tests, "named": named}
+
+
+def about(result):
+    """The table's lines: l1 along the curve, its codimension-two points,
+    the ends' criticality checked."""
+    l1 = [v for t in result["tests"] for v in t["l1"]]
+    found = [p for t in result["tests"] for p in t["points"]]
+    sign = ("negative throughout: supercritical" if max(l1) < 0 else
+            "positive throughout: subcritical" if min(l1) > 0 else "changes sign")
+    lines = [f"l1 along the Hopf curve ({len(l1)} points): {min(l1):+.4g} to {max(l1):+.4g}, "
+             f"{sign}",
+             "codimension-two points on it (codim2): " + (", ".join(
+                 f"{p['type']} at V = {p['a']:.6g} m/s, F* = {p['b']:.6g} (omega "
+                 f"{p['omega']:.4g} rad/s, l1 {p['l1']:+.4g})" for p in found) or "none")]
+    lines += [f"end at F* = {Fstar:.3g}: {p['about']}"
+              for (Fstar, _), p in zip(result["ends"], result["named"])]
+    return lines + [naming.agreement(result["named"])]
 
 
 def plot(result):
     paper.report("fig09", {f"Hopf curve at F* = {Fstar:.3g}: V [m/s]": V
-                           for Fstar, V in result["ends"]})
+                           for Fstar, V in result["ends"]}, notes=about(result))
     fig, ax = plt.subplots(figsize=(6, 4.5))
     span = (600.0, 3.5)
     for curve in result["curves"]:
@@ -55,6 +88,8 @@ def plot(result):
             ax.plot(*draw.smooth(branch["V"], branch["Fstar"], span), lw=1.6,
                     color=draw.HOPF_CURVE["color"])
     ax.text(495, 2.2, "H", color=draw.HOPF_CURVE["color"])
+    for point in (p for t in result["tests"] for p in t["points"]):
+        draw.mark(ax, point["a"], point["b"], point["type"])
     ax.axvline(80.0, color="k", ls="--", lw=1)
     ax.text(40, 3.3, "operating\nregion", ha="center", fontsize=8)
     ax.text(450, 0.4, "torsional shimmy", ha="center", fontsize=8)

@@ -106,7 +106,7 @@ def compute():
     crit = {"V_crit (zero freeplay) [m/s]": zero.hopf[0][0]} if zero.hopf else {}
     return {"freeplay": stored(eq, freeplay), "zero": stored(zero_eq, zero),
             "numbers": {**numbers(freeplay, points), **crit}, "numbers_table": table,
-            "hopf_points": points}
+            "hopf_points": points, "zero_hopf_points": zero.named[:1]}
 
 
 def closure(orbits, hopf, column, scale=1.0):
@@ -137,8 +137,11 @@ def fold_name(numbers, V):
 
 def plot(result):
     points = result["hopf_points"]
+    crit = result.get("zero_hopf_points", [])
     paper.report("fig10", result["numbers"], result["numbers_table"],
-                 notes=[f"{p['name']}: {p['about']}" for p in points])
+                 notes=[f"{p['name']}: {p['about']}" for p in points]
+                 + [f"V_crit (zero freeplay): {p['about']}" for p in crit]
+                 + ([naming.agreement(points + crit)] if points + crit else []))
     freeplay, zero = result["freeplay"], result["zero"]
     parts = [(point, jobs.loaded(part["orbits"])) for part in freeplay["parts"]
              for point in [part["hopf"]]]

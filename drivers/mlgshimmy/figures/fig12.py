@@ -18,6 +18,7 @@ from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import naming
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import stationary
@@ -172,6 +173,7 @@ def compute(name="fig12", variant=0, parameter_set="figures"):
     out = numbers(found, hopf, orbits)
     return {"name": name, "variant": variant, "numbers": out,
             "about": ([f"{p['name']}: {p['about']}" for p in hopf]
+                      + ([naming.agreement(hopf)] if hopf else [])
                       + (bounds_meaning(found, loads_of(hopf), out) if hopf else [])),
             "hopf_names": [p["name"] for p in hopf],
             "eq": jobs.stored(found.straight, COLUMNS),

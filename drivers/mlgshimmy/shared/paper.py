@@ -155,7 +155,8 @@ def report(figure, ours, ours_table=None, notes=()):
     text = text_of(figure, table) + "".join(f"  {line}\n" for line in notes)
     write_text(table_path(figure), text)
     write_text(table_path(figure, "json"),
-               json.dumps({"figure": figure, "rows": table}, indent=1) + "\n")
+               json.dumps({"figure": figure, "rows": table, "notes": list(notes)}, indent=1)
+               + "\n")
     print(text, end="")
     return text
 

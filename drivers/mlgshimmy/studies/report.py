@@ -79,6 +79,16 @@ def read_rows(figure, root):
         return None
 
 
+def read_notes(figure, root):
+    """The lines under a figure's table (tables/<fig>.json: the named points,
+    their criticality checked), or []."""
+    try:
+        with open(os.path.join(root, "tables", f"{figure}.json")) as source:
+            return list(json.load(source).get("notes", []))
+    except (OSError, ValueError, AttributeError):
+        return []
+
+
 def read_summary(figure, root):
     """Rows of a simulation summary (<fig>/summary.txt: "name value"
     lines, Fig. 8), or None."""
@@ -163,7 +173,8 @@ def collect(root):
         rows = read_rows(figure, root) or read_summary(figure, root)
         entry = {"figure": figure, "command": command, "shows": shows,
                  "provenance": provenance, "cached": data is not None,
-                 "png": png if os.path.exists(png) else None, "rows": rows}
+                 "png": png if os.path.exists(png) else None, "rows": rows,
+                 "notes": read_notes(figure, root)}
         result = os.path.join(root, figure, "result.json")
         entry["stale"] = bool(entry["png"] and os.path.exists(result)
                               and os.path.getmtime(entry["png"]) < os.path.getmtime(result))
@@ -283,6 +294,9 @@ def _figure(entry, image):
     elif image:
         parts.append("<p>No table: the paper prints no number for this figure and the "
                      "driver writes none.</p>")
+    if entry.get("notes"):
+        parts.append("<ul>" + "".join(f"<li>{html.escape(line)}</li>" for line in entry["notes"])
+                     + "</ul>")
     parts.append("</section>")
     return "\n".join(parts)
 
