@@ -132,8 +132,13 @@ DUAL_INLINE dual d_acos(dual a)
     return d_chain3(a, acos(a.v), -s, -a.v * s * w, -(1.0 + 2.0 * a.v * a.v) * s * w * w);
 }
 
-/* the branch in force; no higher derivative */
-DUAL_INLINE dual d_abs(dual a) { return d_mulc(a, a.v < 0.0 ? -1.0 : 1.0); }
+/* |a(t)| for t -> 0+: the sign of a's first nonzero coefficient (at a kink,
+ * a.v = 0, the one-sided expansion along +d; elsewhere the branch in force) */
+DUAL_INLINE dual d_abs(dual a)
+{
+    double lead = a.v != 0.0 ? a.v : a.t[0] != 0.0 ? a.t[0] : a.t[1] != 0.0 ? a.t[1] : a.t[2];
+    return d_mulc(a, lead < 0.0 ? -1.0 : 1.0);
+}
 
 /* atan2(y, x) = its value plus the integral of (x y' - y x') / (x^2 + y^2) */
 DUAL_INLINE dual d_atan2(dual y, dual x)

@@ -172,14 +172,15 @@ def test_summary_writes_the_table_from_the_grids_records(tmp_path, monkeypatch):
     provenance): one row per geometry, "-" where kappa* = 0 leaves no
     freeplay for y_tlk/y_fp at kappa* (None), "vanished" for a Hopf point
     that does not exist, a kappa* on the stage switch flagged with the
-    value off it, the criticality by l1 where stored, and the user's geometry (10, 3) marked at the nearest
+    value off it, the criticality by the normal form where stored, and the user's geometry (10, 3) marked at the nearest
     grid point (10, 0), in the table and on the map."""
     from mlgshimmy.shared import draw
     monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
     saved, save = {}, draw.save
     monkeypatch.setattr(draw, "save", lambda fig, name: (saved.update(fig=fig), save(fig, name)))
     records = [record(0.0, 0.0, kappa=0.3651, kappa_yfp=0.03651, kappa_Fstar=0.295,
-                      hopf_l1=[-413.7, -4.09, 0.0338]),
+                      hopf_l1=[-413.7, -4.09, 0.0338],
+                      hopf_criticality=["supercritical", "supercritical", "subcritical"]),
                record(10.0, 0.0, H1=None, H2=None, hopf=[[140.0, 13.0]], hopf_names=["H3"],
                       stable=[[0.5, 140.0]], kappa=0.0, kappa_yfp=0.0, kappa_Fstar=0.649,
                       kappa_V=10.5, on_switch=True, ytlk_ratio_kappa=None,
@@ -199,8 +200,8 @@ def test_summary_writes_the_table_from_the_grids_records(tmp_path, monkeypatch):
     assert headlines[0].startswith("  (0, 0): straight rolling stable at V = 0.500-1.000, "
                                    "3.000-140.000 m/s")
     assert "allowed freeplay 0.0365 mm (kappa* 0.3651 at F* = 0.295)" in headlines[0]
-    assert ("by l1: H1 supercritical, H2 supercritical, H3 subcritical" in headlines[0]
-            and "by l1" not in headlines[1])
+    assert ("by the normal form: H1 supercritical, H2 supercritical, H3 subcritical"
+            in headlines[0] and "by the normal form" not in headlines[1])
     assert headlines[1].startswith("* (10, 0):")
     assert ("no freeplay allowed (unstable without freeplay at F* = 0.649, on the oleo's "
             "stage switch, V = 10.5 m/s); away from the switch 0.0371 mm (kappa* 0.3714 at "

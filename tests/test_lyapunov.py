@@ -207,3 +207,43 @@ def test_model_forms_name_a_vector_of_the_wrong_shape(form, vectors, bad):
     model, u = rolling_at(100.0, PAPER_GEAR)
     with pytest.raises(ValueError, match=f"mlg_{form}: {bad} has shape"):
         getattr(model, form)(u, **vectors)
+
+
+class KinkDamped:
+    """x' = y, y' = -x - c |y| y at 0: A has +-i with q = p = (1, i)/sqrt2,
+    and on x(theta) = 2 Re(q e^(i theta)) the one-sided second-order term is
+    (0, -c |y| y): a2 = -4 sqrt2 c / (3 pi), from the integral of
+    |sin| sin e^(-i theta) = -8i/3."""
+
+    def __init__(self, c):
+        self.c = c
+
+    def jacobian(self, u):
+        return np.array([[0.0, 1.0], [-1.0, -2 * self.c * abs(u[1])]])
+
+    def second_form(self, u, x, y):
+        return np.zeros(2)      # at y = 0 the kink has no second derivative
+
+    def third_form(self, u, x, y, z):
+        return np.zeros(2)
+
+    def taylor(self, u, d):
+        """f(u + t d) = f(u) + t A d + t^2 (0, -c |d_y| d_y) for t > 0."""
+        return np.array([[0.0, 0.0], self.jacobian(u) @ d,
+                         [0.0, -2 * self.c * abs(d[1]) * d[1]], [0.0, 0.0]])
+
+
+@pytest.mark.parametrize("c", [0.7, -0.2])
+def test_kink_coefficient_of_quadratic_damping(c):
+    system = KinkDamped(c)
+    hopf = lyapunov.first_lyapunov(system, np.zeros(2))
+    assert hopf.l1 == pytest.approx(0.0, abs=1e-15)
+    a2 = lyapunov.kink_coefficient(system, np.zeros(2), hopf)
+    assert a2.real == pytest.approx(-4 * np.sqrt(2) * c / (3 * np.pi), rel=1e-3)
+    assert abs(a2.imag) < 1e-12
+
+
+def test_no_kink_where_the_mode_leaves_the_oleo_still():
+    """H3 of the paper's gear: q_eta' = 0 to rounding, a2 ~ 1e-17."""
+    _, model, u, hopf, _ = hopf_point("H3")
+    assert abs(lyapunov.kink_coefficient(model, u, hopf)) < 1e-15

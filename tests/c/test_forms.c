@@ -4,7 +4,8 @@
  *   B(x, y)    = d/ds J(u + s x) y,            Richardson from steps h, h/2;
  *   C(x, y, z) = d2/ds dr J(u + s x + r y) z,  the four-point mixed difference,
  *                Richardson from steps h, h/2;
- * and the first Taylor derivative against J x, the value against mlg_rhs.
+ * and the first Taylor derivative against J x, the value against mlg_rhs;
+ * at the oleo's kink the one-sided second derivative (kink_error).
  * Directions x, y, z: random in [-1, 1] times each state's scale.
  *
  * Error measure: per component f_i, the difference over the largest |B_i|
@@ -81,6 +82,30 @@ static double probe_error(double exact[NPROBES][MLG_NX], const double *fd, int n
         worst = fmax(worst, best);
     }
     return worst;
+}
+
+/* At eta' = 0, where the oleo's |eta'| eta' has a kink, the Taylor second
+ * derivative along d is the one-sided one (t -> 0+): against the forward
+ * second difference (f(u + 2hd) - 2 f(u + hd) + f(u)) / h^2, error O(h),
+ * for eta' moving either way.  The largest error over the components, over
+ * the largest |D^2 f|. */
+static double kink_error(double eta_dot_direction)
+{
+    mlg_params p = mlg_params_figures();
+    p.V = 100.0, p.yfp = 1.0, p.eps_rel = 0.1;
+    double u[MLG_NX], d[MLG_NX], taylor[4 * MLG_NX], f0[MLG_NX], f1[MLG_NX], f2[MLG_NX];
+    mlg_equilibrium(&p, -1.0, u);
+    for (int i = 0; i < MLG_NX; i++) d[i] = 1e-6 * cos(1.0 + i);   /* eta' leads */
+    d[MLG_ETA_DOT] = eta_dot_direction;
+    mlg_rhs_taylor(&p, u, d, taylor);
+    const double h = 1e-4;
+    double u1[MLG_NX], u2[MLG_NX], size = 0.0, worst = 0.0;
+    for (int i = 0; i < MLG_NX; i++) u1[i] = u[i] + h * d[i], u2[i] = u[i] + 2 * h * d[i];
+    mlg_rhs(&p, u, f0), mlg_rhs(&p, u1, f1), mlg_rhs(&p, u2, f2);
+    for (int i = 0; i < MLG_NX; i++) size = fmax(size, fabs(taylor[i + 2 * MLG_NX]));
+    for (int i = 0; i < MLG_NX; i++)
+        worst = fmax(worst, fabs(taylor[i + 2 * MLG_NX] - (f2[i] - 2 * f1[i] + f0[i]) / (h * h)));
+    return worst / size;
 }
 
 int main(void)
@@ -161,5 +186,8 @@ int main(void)
           "max error %.2e", worst_B);
     check(worst_C <= 1e-4, "third_form_matches_differences_of_jacobian",
           "max error %.2e (worst sample: %s)", worst_C, worst_where);
+    double up = kink_error(0.05), down = kink_error(-0.05);
+    check(up < 1e-3 && down < 1e-3, "one_sided_at_the_oleo_kink",
+          "eta' rising %.2e, falling %.2e (forward differences, h = 1e-4)", up, down);
     return unit_exit();
 }

@@ -10,6 +10,7 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import lyapunov
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import naming
 from mlgshimmy.shared import paper
@@ -52,10 +53,19 @@ def compute(parameter_set="figures", where="fig09"):
         return model, model.equilibrium()
     tests = [codim2.along_hopf_curve(list(zip(b["V"], b["Fstar"])), at)
              for c in curves for b in c]
+    kinks = [kink(*at(V, F)) for c in curves for b in c for V, F in zip(b["V"], b["Fstar"])]
     named = [naming.named_points([(V, None)], [], parameter_set, "V", Fstar=Fstar,
                                  **gear.parameters())[0] for Fstar, V in ends]
     return {"curves": [jobs.stored(c, ("V", "Fstar")) for c in curves], "ends": ends,
-            "tests": tests, "named": named}
+            "tests": tests, "named": named, "kinks": kinks}
+
+
+def kink(model, u):
+    """(Re a2, psi amplitude up to which it decides) at a point of the curve
+    (lyapunov.kink_coefficient, naming.SEEN)."""
+    hopf = lyapunov.first_lyapunov(model, u)
+    a2 = lyapunov.kink_coefficient(model, u, hopf).real
+    return a2, 2 * abs(hopf.q[0]) * abs(a2) / (hopf.omega * abs(hopf.l1))
 
 
 def about(result):
@@ -70,6 +80,13 @@ def about(result):
              "codimension-two points on it (codim2): " + (", ".join(
                  f"{p['type']} at V = {p['a']:.6g} m/s, F* = {p['b']:.6g} (omega "
                  f"{p['omega']:.4g} rad/s, l1 {p['l1']:+.4g})" for p in found) or "none")]
+    decided = [a2 for a2, psi in result["kinks"] if psi > naming.SEEN]
+    if decided:
+        lines.append(f"the oleo's kink decides at {len(decided)} of {len(result['kinks'])} points "
+                     f"(Re a2 {min(decided):+.3g} to {max(decided):+.3g}; "
+                     f"{'supercritical' if max(decided) < 0 else 'mixed'} there): "
+                     "the mode moves eta', l1 and its GH points are those of the one-sided "
+                     "expansion, above the kink's amplitude")
     lines += [f"end at F* = {Fstar:.3g}: {p['about']}"
               for (Fstar, _), p in zip(result["ends"], result["named"])]
     return lines + [naming.agreement(result["named"])]

@@ -64,6 +64,7 @@ def library():
     lib.mlg_status_text.restype = ctypes.c_char_p
     lib.mlg_equilibrium.argtypes = [P, ctypes.c_double, D]
     lib.mlg_rhs_jacobian.argtypes = [P, D, D, D, D]
+    lib.mlg_rhs_taylor.argtypes = [P, D, D, D]
     lib.mlg_second_form.argtypes = [P, D, D, D, D]
     lib.mlg_third_form.argtypes = [P, D, D, D, D, D]
     lib.mlg_r_tlk.restype = ctypes.c_double
@@ -244,17 +245,29 @@ class Model:
             raise RuntimeError(f"jacobian: {library().mlg_status_text(status).decode()}")
         return numpy.array(J, dtype=float).reshape(nx, nx).T
 
+    def taylor(self, u, d) -> numpy.ndarray:
+        """[f, D f[d], D^2 f[d, d], D^3 f[d, d, d]] at the state u along d
+        (sequences in UNAMES order), a 4 x NX array, exact to rounding; at a
+        kink of f (|eta'| eta' at eta' = 0) the one-sided derivatives, t -> 0+."""
+        nx = _table("NX")
+        out = numpy.zeros(4 * nx)
+        self._form(library().mlg_rhs_taylor, out, u=u, d=d)
+        return out.reshape(4, nx)
+
     def second_form(self, u, x, y) -> numpy.ndarray:
         """B(x, y) = sum_jk d2f/du_j du_k x_j y_k at the state u (a sequence in
         UNAMES order) for real x and y, exact to rounding (c/vector_field_taylor.c)."""
-        return self._form(library().mlg_second_form, u=u, x=x, y=y)
+        return self._form(library().mlg_second_form, None, u=u, x=x, y=y)
 
     def third_form(self, u, x, y, z) -> numpy.ndarray:
         """C(x, y, z) = sum_jkl d3f/du_j du_k du_l x_j y_k z_l at u, real
         arguments, exact to rounding."""
-        return self._form(library().mlg_third_form, u=u, x=x, y=y, z=z)
+        return self._form(library().mlg_third_form, None, u=u, x=x, y=y, z=z)
 
-    def _form(self, function, **arguments) -> numpy.ndarray:
+    def _form(self, function, out, **arguments) -> numpy.ndarray:
+        """function(params, *arguments, out) with arguments of shape (NX,),
+        each checked (ValueError naming it); out: an array to fill (default
+        NX values)."""
         nx = _table("NX")
         vectors = []
         for name, v in arguments.items():
@@ -262,11 +275,13 @@ class Model:
             if v.shape != (nx,):
                 raise ValueError(f"{function.__name__}: {name} has shape {v.shape}, not ({nx},)")
             vectors.append((ctypes.c_double * nx)(*v))
-        out = (ctypes.c_double * nx)()
-        status = function(ctypes.byref(self._p), *vectors, out)
+        out = numpy.zeros(nx) if out is None else out
+        buffer = (ctypes.c_double * len(out))()
+        status = function(ctypes.byref(self._p), *vectors, buffer)
         if status != 0:
             raise RuntimeError(f"{function.__name__}: {library().mlg_status_text(status).decode()}")
-        return numpy.array(out, dtype=float)
+        out[:] = buffer
+        return out
 
     def energy(self, u: Sequence[float], eta_ref: float):
         """(kinetic, potential) of the model's Lagrangian at the state u (a

@@ -36,10 +36,11 @@ DEGREES_OF_FREEDOM = {"psi": "torsional", "delta": "lateral", "beta": "longitudi
 NEAR = 0.05     # relative: orbit points this close to a Hopf value tell its side
 ZERO_AMPLITUDE = 1e-8   # rad: below, an "orbit" is straight rolling (continuation.COLLAPSED)
 # Simulations (simulated): at the distance d from the Hopf point where the
-# pair's real part is RATE omega (at most SPAN of the value), on each side,
-# each run lasting SETTLE / |real part|.  On the unstable side from
-# straight rolling moved by PSI0 in psi: the motion grows (to GREW PSI0 at
-# least) onto the attractor there; on the stable side from straight
+# pair's real part is RATE omega (at most SPAN of the value, and half the
+# distance to the next Hopf point), on each side, each run lasting
+# SETTLE / |real part|.  On the unstable side from straight rolling moved
+# by PSI0 in psi: the motion settles on the attractor there (a small orbit
+# may lie below PSI0); on the stable side from straight
 # rolling moved by that attractor's amplitude: it decays (below DECAYED of
 # it) if no orbit surrounds straight rolling there (supercritical), and
 # persists (above PERSISTS) on the orbits that do (subcritical: the
@@ -47,8 +48,17 @@ ZERO_AMPLITUDE = 1e-8   # rad: below, an "orbit" is straight rolling (continuati
 RATE = 0.02
 SPAN = 0.1
 SETTLE = 12.0
-PSI0 = 1e-6            # rad: below every orbit of the figures near their Hopf points
-GREW = 10.0
+PSI0 = 1e-6            # rad: a push, small beside the orbits near the Hopf points
+LEFT = 1e-3            # of PSI0: an end amplitude below is straight rolling, no attractor
+# Where f has a kink on the critical plane (lyapunov.kink_coefficient: the
+# oleo's |eta'| eta' when the mode moves eta', at side-stay angles) the
+# quadratic a2 decides up to the psi amplitude where its r^2 term meets the
+# cubic one, 2 |q_psi| |Re a2| / (omega |l1|); past SEEN, an amplitude both
+# AUTO's first orbits and the simulations' push reach, a2 decides, else l1.
+SEEN = PSI0
+# below, a2 is the rounding of f (the modes of the symmetric gear do not move
+# eta': a2 ~ 1e-17, kink_psi ~ 1e-20 rad at H1-H3) and is not written
+KINK_NOISE = 1e-12   # rad
 DECAYED, PERSISTS = 0.1, 0.5
 # |l1| is weak where the normal form's orbit at real part 0.01 omega,
 # 2 |q_psi| sqrt(0.01 / |l1|), exceeds the angle over which the field stays
@@ -63,7 +73,9 @@ def mode(parameter_set: str, parameter: str, value: float, state=None,
     the largest angle of its eigenvector), "loses" (True where straight
     rolling loses stability in that pair as the parameter grows), "l1" (the
     first Lyapunov coefficient, shared.lyapunov), "mu_slope" (d Re lambda /
-    d parameter), "weak" (|l1| small: weak())}."""
+    d parameter), "weak" (|l1| small: weak()), "a2" (Re of the kink's
+    quadratic coefficient, 0 where f is smooth), "kink_psi" (the psi
+    amplitude up to which a2 decides: SEEN)}."""
     def spectrum_at(at):
         model = mlgmodel.Model(parameter_set, **{**values, parameter: at})
         u = state(at) if state else model.equilibrium()
@@ -71,6 +83,8 @@ def mode(parameter_set: str, parameter: str, value: float, state=None,
     here = mlgmodel.Model(parameter_set, **{**values, parameter: value})
     u = state(value) if state else here.equilibrium()
     hopf = lyapunov.first_lyapunov(here, u)
+    a2 = lyapunov.kink_coefficient(here, u, hopf)
+    meet = 2 * abs(hopf.q[0]) * abs(a2.real) / (hopf.omega * abs(hopf.l1))
     lam, vec = spectrum_at(value)
     k = int(numpy.argmin(numpy.abs(lam.real) + (numpy.abs(lam.imag) < 1e-6) * 1e9))
     lam, vec = lam[k], vec[:, k]
@@ -87,7 +101,7 @@ def mode(parameter_set: str, parameter: str, value: float, state=None,
             "dof": DEGREES_OF_FREEDOM[max(size, key=size.get)],
             "loses": bool(after.real > before.real), "l1": float(hopf.l1),
             "mu_slope": float((after.real - before.real) / (2 * step)),
-            "weak": bool(weak(here, u, hopf))}
+            "weak": bool(weak(here, u, hopf)), "a2": float(a2.real), "kink_psi": float(meet)}
 
 
 def names(modes: Sequence[Dict[str, object]]) -> List[str]:
@@ -122,19 +136,23 @@ def weak(model: mlgmodel.Model, u, hopf: lyapunov.Hopf) -> bool:
     return 2 * abs(hopf.q[0]) * numpy.sqrt(0.01 / abs(hopf.l1)) > angle
 
 
-def criticality(value: float, loses: bool, orbits, parameter: str = "V") -> Optional[str]:
+def criticality(value: float, loses: bool, orbits, parameter: str = "V",
+                others: Sequence[float] = ()) -> Optional[str]:
     """"supercritical" or "subcritical" from the orbit branches `orbits`
     (runs of AUTO diagrams, or stored branches) where they come nearest to
     straight rolling at `value`: their side (the side where the crossing
     mode is unstable: supercritical) and their stability there (stable:
     supercritical); "inconsistent" where side and stability disagree; None
-    if no branch comes within NEAR of it."""
+    if no branch comes within NEAR of it, or within half the distance to the
+    nearest of the other Hopf points `others` (their orbits are theirs)."""
+    window = min([NEAR * max(1.0, abs(value))] + [0.5 * abs(value - o) for o in others
+                                                  if o != value])
     best = None
     for run in orbits:
         for branch in run:
             v = numpy.asarray(branch[parameter])
             amp = numpy.asarray(branch["psi_amp"])
-            near = numpy.abs(v - value) <= NEAR * max(1.0, abs(value))
+            near = numpy.abs(v - value) <= window
             # a branch born at the point: its first step tells the side, however long
             near[1:2] |= len(v) > 1 and abs(v[0] - value) <= 1e-6 * max(1.0, abs(value))
             near = numpy.flatnonzero(near & (amp > ZERO_AMPLITUDE) & (v != value))
@@ -152,6 +170,17 @@ def criticality(value: float, loses: bool, orbits, parameter: str = "V") -> Opti
 def by_l1(l1: float) -> str:
     """The criticality the first Lyapunov coefficient's sign gives."""
     return "supercritical" if l1 < 0 else "subcritical"
+
+
+def kink_decides(m: Dict[str, object]) -> bool:
+    """Whether the kink's a2, not l1, decides at the amplitudes seen (SEEN)."""
+    return m.get("kink_psi", 0.0) > SEEN
+
+
+def by_coefficients(m: Dict[str, object]) -> str:
+    """The criticality the normal form gives: Re a2's sign where the kink
+    decides, else l1's."""
+    return by_l1(m["a2"]) if kink_decides(m) else by_l1(m["l1"])
 
 
 def _amplitude(parameter_set, parameter, value, psi0, t_end, state, values):
@@ -173,13 +202,16 @@ def _amplitude(parameter_set, parameter, value, psi0, t_end, state, values):
 
 
 def simulated(parameter_set: str, parameter: str, value: float, m: Dict[str, object],
-              state=None, **values: float) -> Dict[str, object]:
+              state=None, others: Sequence[float] = (), **values: float) -> Dict[str, object]:
     """The criticality short simulations on each side give (module
     constants): {"verdict": "supercritical", "subcritical" or "unsettled"
-    (the motion did not grow on the unstable side, or neither decayed nor
+    (the motion died out on the unstable side, or neither decayed nor
     persisted on the stable one), "distance" d, "amplitude" [rad] on the
-    unstable side, "decay" (the stable side's end amplitude over its start)}."""
-    d = min(RATE * 2 * numpy.pi * m["freq_hz"] / abs(m["mu_slope"]), SPAN * abs(value))
+    unstable side, "decay" (the stable side's end amplitude over its start)}.
+    others: the other Hopf points' values; d stays below half the distance
+    to the nearest (else the stable side may not be stable)."""
+    d = min([RATE * 2 * numpy.pi * m["freq_hz"] / abs(m["mu_slope"]), SPAN * abs(value)]
+            + [0.5 * abs(value - o) for o in others if o != value])
     unstable = 1.0 if m["mu_slope"] > 0 else -1.0
     t_end = SETTLE / (abs(m["mu_slope"]) * d)
 
@@ -188,7 +220,7 @@ def simulated(parameter_set: str, parameter: str, value: float, m: Dict[str, obj
     grown = amplitude(value + unstable * d, PSI0)
     start = min(grown, WEAK_ZERO_FREEPLAY)
     decay = amplitude(value - unstable * d, start) / start
-    verdict = ("unsettled" if grown < GREW * PSI0 else
+    verdict = ("unsettled" if grown < LEFT * PSI0 else
                "supercritical" if decay < DECAYED else
                "subcritical" if decay > PERSISTS else "unsettled")
     return {"verdict": verdict, "distance": float(d), "amplitude": float(grown),
@@ -200,7 +232,7 @@ def verdicts(m: Dict[str, object], branch: Optional[str],
     """The three checks side by side: {"criticality" (by l1), "branch",
     "simulation" (a verdict or None where not simulated), "agree" (True
     where every check made says what l1 says, and one was made)}."""
-    verdict = by_l1(m["l1"])
+    verdict = by_coefficients(m)
     simulation = simulation["verdict"] if simulation else None
     made = [c for c in (branch, simulation) if c is not None]
     return {"criticality": verdict, "branch": branch, "simulation": simulation,
@@ -209,7 +241,7 @@ def verdicts(m: Dict[str, object], branch: Optional[str],
 
 def needs_simulation(m: Dict[str, object], branch: Optional[str]) -> bool:
     """Where the branch check does not settle l1's verdict, or |l1| is small."""
-    return branch != by_l1(m["l1"]) or m.get("weak", False)
+    return branch != by_coefficients(m) or (m.get("weak", False) and not kink_decides(m))
 
 
 def describe(m: Dict[str, object], branch: Optional[str],
@@ -218,7 +250,7 @@ def describe(m: Dict[str, object], branch: Optional[str],
     the orbit branch agrees; simulation agrees)': the verdict of l1,
     checked against the orbit branch (criticality) and the simulations
     (simulated); a disagreement is said, never hidden."""
-    verdict = by_l1(m["l1"])
+    verdict = by_coefficients(m)
     checks = ["no orbit branch near it to check" if branch is None else
               "the orbit branch agrees" if branch == verdict else
               f"DISAGREES with the orbit branch, which is {branch}"]
@@ -229,9 +261,15 @@ def describe(m: Dict[str, object], branch: Optional[str],
                       + f" (at {simulation['distance']:.3g} either side: amplitude "
                         f"{simulation['amplitude']:.3g} rad, then decay to "
                         f"{simulation['decay']:.2g} of it)")
+    kink = ""
+    if m.get("kink_psi", 0.0) > KINK_NOISE:
+        kink = (f", a2 = {m['a2']:+.4g} (the oleo's kink) "
+                + ("decides" if kink_decides(m) else "yields")
+                + f" up to psi {m['kink_psi']:.2g} rad")
     return (f"{m['band']}-frequency {m['dof']}, "
             f"{'loses' if m['loses'] else 'regains'} stability, {verdict} "
-            f"(l1 = {m['l1']:+.4g}{', weak' if m.get('weak') else ''}; {'; '.join(checks)})")
+            f"(l1 = {m['l1']:+.4g}{', weak' if m.get('weak') else ''}{kink}; "
+            f"{'; '.join(checks)})")
 
 
 def agreement(points: Sequence[Dict[str, object]]) -> str:
@@ -243,15 +281,17 @@ def agreement(points: Sequence[Dict[str, object]]) -> str:
 def named_points(hopf, orbits, parameter_set: str, parameter: str, state=None,
                  **values: float) -> List[Dict[str, object]]:
     """[{"name", <parameter>, "freq_hz", "band", "dof", "loses", "l1",
-    "mu_slope", "weak", "criticality" (by l1), "branch_criticality" (the
+    "mu_slope", "weak", "a2", "kink_psi", "criticality" (by_coefficients),
+    "branch_criticality" (the
     orbit branches `orbits`), "simulated" (simulated(), where
     needs_simulation), "agree", "about"}] of the Hopf points hopf =
     [(value, Hz)] of straight rolling along `parameter`, named by their mode."""
     modes = [mode(parameter_set, parameter, v, state=state, **values) for v, _ in hopf]
     out = []
     for (v, _), m, name in zip(hopf, modes, names(modes)):
-        branch = criticality(v, m["loses"], orbits, parameter)
-        simulation = (simulated(parameter_set, parameter, v, m, state=state, **values)
+        branch = criticality(v, m["loses"], orbits, parameter, others=[h for h, _ in hopf])
+        simulation = (simulated(parameter_set, parameter, v, m, state=state,
+                                others=[h for h, _ in hopf], **values)
                       if needs_simulation(m, branch) else None)
         checked = verdicts(m, branch, simulation)
         out.append({"name": name, parameter: v, **m, "criticality": checked["criticality"],

@@ -155,7 +155,8 @@ def check(points):
 def speeds(values):
     """The scans at F* = 1: {critical_V, hopf: [(V, Hz)] with freeplay,
     hopf_names: their names by mode (shared.naming), hopf_l1: their first
-    Lyapunov coefficients (the sign their criticality), bp: the real-eigenvalue
+    Lyapunov coefficients, hopf_criticality: by the normal form
+    (naming.by_coefficients: l1, or the oleo's kink), bp: the real-eigenvalue
     crossings in V (none expected), stable: [(V_from, V_to)] where straight
     rolling with freeplay is stable, within the scan's ct.V_MIN-ct.V_MAX}."""
     zero = spectrum.hopf_scan("figures", "V", ct.SPEED_SCAN, Fstar=FSTAR, yfp=0.0, **values)
@@ -166,6 +167,7 @@ def speeds(values):
     return {"critical_V": zero[0][0] if zero else None, "hopf": hopf,
             "hopf_names": naming.names(modes),
             "hopf_l1": [m["l1"] for m in modes],
+            "hopf_criticality": [naming.by_coefficients(m) for m in modes],
             "bp": [v for v, kind, _ in changes if kind == "BP"],
             "stable": spectrum.stable_intervals("figures", "V", [v for v, _, _ in changes],
                                                 ct.V_MIN, ct.V_MAX, **case)}
@@ -310,9 +312,9 @@ def headline(c):
               if name not in HOPF_NAMES]
     if others:
         parts.append("other Hopf points " + ", ".join(others) + " m/s")
-    if c.get("hopf_l1"):    # maps computed before l1 was stored have none
-        parts.append("by l1: " + ", ".join(f"{name} {naming.by_l1(l1)}" for name, l1
-                                           in zip(c["hopf_names"], c["hopf_l1"])))
+    if c.get("hopf_criticality"):    # maps computed before it was stored have none
+        parts.append("by the normal form: " + ", ".join(
+            f"{name} {verdict}" for name, verdict in zip(c["hopf_names"], c["hopf_criticality"])))
     where = (f"F* = {c['kappa_Fstar']:.3f}" + (", on the oleo's stage switch" if c["on_switch"]
                                                  else ""))
     parts.append(f"no freeplay allowed (unstable without freeplay at {where}, "
