@@ -14,6 +14,7 @@ import numpy
 from mlgshimmy.shared import autoglue
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import doubling
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
@@ -54,7 +55,7 @@ VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
 
 def runs(parameter_set="figures", where="fig12", variant=0):
     """(stationary states, Hopf points named by their mode (shared.naming),
-    orbit runs)."""
+    orbit runs, [(PD point, run)] of the period-doubled orbits from them)."""
     rundir = paths.rundir(where)
     values = {**VALUES, "strut_variant": float(variant), **gear.parameters()}
     # The printed strut (variant 1) folds straight rolling twice in F* while
@@ -73,7 +74,9 @@ def runs(parameter_set="figures", where="fig12", variant=0):
                                parameter="Fstar", gap=1e-3, figure=where, state=state, DS=0.002,
                                DSMAX=0.02, NMX=3000, **steps)
     orbits = diagram.branches
-    return found, diagram.named, orbits
+    doubled = doubling.follow(rundir, "pd", orbits, "Fstar", (F_MIN, F_MAX), DS=0.002,
+                              DSMAX=0.02, NMX=3000, **steps)
+    return found, diagram.named, orbits, doubled
 
 
 def rolling_states(found):
@@ -168,12 +171,13 @@ def freeplay_boundary(parameter_set, loads, variant=0, state=None):
 
 
 def compute(name="fig12", variant=0, parameter_set="figures"):
-    found, hopf, orbits = runs(parameter_set, name, variant)
+    found, hopf, orbits, doubled = runs(parameter_set, name, variant)
     loads = numpy.linspace(F_MIN, F_MAX, 200)
     out = numbers(found, hopf, orbits)
     return {"name": name, "variant": variant, "numbers": out,
             "about": ([f"{p['name']}: {p['about']}" for p in hopf]
                       + ([naming.agreement(hopf)] if hopf else [])
+                      + (doubling.describe("Fstar", doubled) if orbits else [])
                       + (bounds_meaning(found, loads_of(hopf), out) if hopf else [])),
             "hopf_names": [p["name"] for p in hopf],
             "eq": jobs.stored(found.straight, COLUMNS),
@@ -181,6 +185,7 @@ def compute(name="fig12", variant=0, parameter_set="figures"):
             "folds": [(F, psi) for F, psi, _ in found.folds()],
             "yaw": [jobs.stored(d, COLUMNS) for d in found.yawed],
             "orbits": [jobs.stored(d, COLUMNS) for d in orbits],
+            "doubled": [jobs.stored(run, COLUMNS) for _, run in doubled],
             "boundary": (loads, freeplay_boundary(parameter_set, loads, variant,
                                                   rolling_states(found)))}
 
@@ -190,6 +195,7 @@ def plot(result):
     eq, pitchforks, hopf = jobs.loaded(result["eq"]), result["pitchforks"], result["hopf"]
     yaw = [jobs.loaded(d) for d in result["yaw"]]
     orbits = [jobs.loaded(d) for d in result["orbits"]]
+    doubled = [jobs.loaded(d) for d in result.get("doubled", [])]
     fig, (amp, freq) = plt.subplots(2, 1, figsize=(8, 8.4), sharex=True)
     loads, boundary = (numpy.asarray(a) for a in result["boundary"])
     boundary = boundary * DEG
@@ -214,6 +220,12 @@ def plot(result):
                               name=next(names[ax]))
             draw.mark_specials(ax, diagram, "Fstar", column, scale=scale, kinds=("TR", "PD"))
         shown += [branch["psi_amp"] * DEG for branch in diagram]
+    for diagram in doubled:   # twice the period: half the frequency of the orbits they leave
+        draw.plot_branch(amp, diagram, "Fstar", "psi_amp", scale=DEG, color=DOUBLED)
+        draw.plot_branch(freq, diagram, "Fstar", "freq", color=DOUBLED)
+        for ax, column, scale in ((amp, "psi_amp", DEG), (freq, "freq", 1.0)):
+            draw.mark_specials(ax, diagram, "Fstar", column, scale=scale, kinds=("TR", "PD"))
+        shown += [branch["psi_amp"] * DEG for branch in diagram]
     for k, f in enumerate(pitchforks):
         draw.mark(amp, f, 0, "BP", name=f"P{k + 1}")
     for k, (f, psi) in enumerate(result.get("folds", [])):
@@ -234,6 +246,8 @@ def plot(result):
     extra = [Line2D([], [], color=draw.STABLE, ls=YAW[True], label="stationary yaw, stable"),
              Line2D([], [], color=draw.UNSTABLE, ls=YAW[False], label="stationary yaw, unstable"),
              Line2D([], [], color="0.7", lw=3, label=r"freeplay boundary $\pm\psi_{fp}$")]
+    if doubled:
+        extra.append(Line2D([], [], color=DOUBLED, label="orbits of twice the period, from PD"))
     freq.set_ylabel("frequency [Hz]")
     freq.set_xlabel(r"$F_z^*$")
     freq.set_title("(b) frequency")
@@ -246,6 +260,7 @@ def plot(result):
 
 
 YAW = {True: "-.", False: ":"}   # line styles of the stationary yawed states
+DOUBLED = "#009988"               # the period-doubled orbits: neither stability colour
 
 
 if __name__ == "__main__":

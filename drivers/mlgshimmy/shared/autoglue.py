@@ -33,6 +33,7 @@ import atexit
 import importlib.util
 import math
 import os
+import re
 import shutil
 import signal
 import sys
@@ -486,7 +487,9 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
     missing = [path for path in outputs if not os.path.exists(path)]
     if missing:
         raise RunError(f"run {name} in {rundir}: AUTO wrote no {', '.join(missing)}", log)
-    bd = read_diagram(outputs, f"run {name} in {rundir}", log)
+    # a run told to STOP at a special point (e.g. "BP1") ends there, unlabelled EP
+    stops = tuple(re.sub(r"\d+$", "", str(kind)) for kind in kw.get("STOP", ()))
+    bd = read_diagram(outputs, f"run {name} in {rundir}", log, ends=BRANCH_ENDS + stops)
 
     status = "done"
     try:
@@ -509,11 +512,12 @@ def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]
 BRANCH_ENDS = ("EP", "UZ", "MX")
 
 
-def read_diagram(outputs, what, log=None):
+def read_diagram(outputs, what, log=None, ends=BRANCH_ENDS):
     """The diagram of a run's b-, s- and d-files, its b-file parsed now (AUTO
     reads lazily), checked complete by its content (AUTO ignores write
     errors, so a full disk leaves files cut at any byte): every branch ends
-    in a labelled EP, UZ or MX, the s-file holds a whole solution for every
+    in a labelled point of a type in `ends` (EP, UZ or MX, and the types the
+    run was told to STOP at), the s-file holds a whole solution for every
     label of the b-file, and the b-file's last line is whole.  RunError otherwise
     (saying so when the file system is full)."""
     auto = init()
@@ -529,7 +533,7 @@ def read_diagram(outputs, what, log=None):
         lengths = [len(branch) for branch in bd]
         labels = [lab for branch in bd for _, lab, _ in branches.labelled_points(branch)]
         cut = [branch.BR for branch in bd
-               if not any(index == len(branch) - 1 and kind in BRANCH_ENDS
+               if not any(index == len(branch) - 1 and kind in ends
                           for index, _, kind in branches.labelled_points(branch))]
     except Exception as exc:  # any parser failure means an unreadable file
         raise RunError(f"{what}: {outputs[0]} unreadable ({type(exc).__name__}: {exc})"
