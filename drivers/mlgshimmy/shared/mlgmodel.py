@@ -15,11 +15,12 @@ write_constants_files(); docs/model.md 2.1).
 import ctypes
 import os
 import zlib
-from typing import Dict, Sequence, Union
+from typing import Dict, Sequence, Tuple, Union
 
 import numpy
 
 from mlgshimmy.shared import paths
+from mlgshimmy.shared.suggest import did_you_mean
 from mlgshimmy.shared.jobs.atomic import write_text
 
 LIBRARY = os.path.join(paths.BUILD, "lib", "libmlg.so")
@@ -37,7 +38,7 @@ _lib = None
 _tables: Dict[str, object] = {}
 
 
-def library():
+def library() -> ctypes.CDLL:
     """The c/ library, loaded (and its functions typed) on first use;
     LibraryMissing says what to build."""
     global _lib
@@ -63,6 +64,7 @@ def library():
     lib.mlg_params_check.argtypes = [P, ctypes.c_char_p, ctypes.c_size_t]
     lib.mlg_status_text.restype = ctypes.c_char_p
     lib.mlg_equilibrium.argtypes = [P, ctypes.c_double, D]
+    lib.mlg_rhs.argtypes = [P, D, D]
     lib.mlg_rhs_jacobian.argtypes = [P, D, D, D, D]
     lib.mlg_rhs_taylor.argtypes = [P, D, D, D]
     lib.mlg_second_form.argtypes = [P, D, D, D, D]
@@ -129,6 +131,23 @@ _EPSILON_PARTS = ("eps_abs", "eps_rel")
 _constants_files: Dict[int, str] = {}
 
 
+State = Union[Dict[str, float], Sequence[float]]
+
+
+def _state(u: State):
+    """u as the library's array: a {name: value} dict (every state named,
+    KeyError with a suggestion otherwise) or a sequence of NX values."""
+    names = _table("UNAMES")
+    if isinstance(u, dict):
+        unknown = [k for k in u if k not in names]
+        if unknown:
+            raise KeyError(f"no state named {unknown[0]!r}{did_you_mean(unknown[0], names)}")
+        u = [u[name] for name in names]
+    if len(u) != len(names):
+        raise ValueError(f"a state has {len(names)} values ({', '.join(names)}), not {len(u)}")
+    return (ctypes.c_double * len(names))(*u)
+
+
 class Model:
     """A parameter set of the c/ library: 'table' (the paper as printed) or
     'figures' (c_psi calibrated), with any parameter or constant overridden
@@ -141,7 +160,8 @@ class Model:
 
     def __init__(self, parameter_set: str = "figures", **values: float):
         if parameter_set not in ("table", "figures"):
-            raise ValueError(f"unknown parameter set {parameter_set!r}")
+            raise ValueError(f"unknown parameter set {parameter_set!r}"
+                             f"{did_you_mean(parameter_set, ('table', 'figures'))}")
         self.parameter_set = parameter_set
         self._p = getattr(library(), f"mlg_params_{parameter_set}")()
         self.set(**values)
@@ -163,7 +183,8 @@ class Model:
             raise KeyError(f"no parameter or constant named {name!r} (a name holds no NUL)")
         ref = library().mlg_param_ref(ctypes.byref(self._p), name.encode())
         if not ref:
-            raise KeyError(f"no parameter or constant named {name!r}")
+            raise KeyError(f"no parameter or constant named {name!r}"
+                           f"{did_you_mean(name, _table('FIELDS'))}")
         return ref
 
     def __getitem__(self, name: str) -> float:
@@ -199,7 +220,7 @@ class Model:
         return {name: self[name] for name in _table("FIELDS")
                 if name not in in_par and self[name] != table[name]}
 
-    def constants_file(self):
+    def constants_file(self) -> Tuple[int, str]:
         """(k, text) of the file mlg.constants.<k> that carries constants(),
         k named by the text's checksum; (0, "") if none differs."""
         changed = self.constants()
@@ -231,13 +252,21 @@ class Model:
             raise RuntimeError(f"straight-rolling equilibrium not found: {why}")
         return dict(zip(names, u))
 
-    def jacobian(self, u: Union[Dict[str, float], Sequence[float]]) -> numpy.ndarray:
+    def rhs(self, u: State) -> numpy.ndarray:
+        """du/dt at the state u ({name: value} or a sequence in UNAMES order),
+        in UNAMES order; raises if the state is outside the model's domain."""
+        x = _state(u)
+        f = (ctypes.c_double * len(x))()
+        status = library().mlg_rhs(ctypes.byref(self._p), x, f)
+        if status != 0:
+            raise RuntimeError(f"rhs: {library().mlg_status_text(status).decode()}")
+        return numpy.array(f, dtype=float)
+
+    def jacobian(self, u: State) -> numpy.ndarray:
         """df/du at the state u ({name: value} or a sequence in UNAMES order),
         an NX x NX array; raises if the state is outside the model's domain."""
         nx = _table("NX")
-        if isinstance(u, dict):
-            u = [u[name] for name in _table("UNAMES")]
-        x = (ctypes.c_double * nx)(*u)
+        x = _state(u)
         f = (ctypes.c_double * nx)()
         J = (ctypes.c_double * (nx * nx))()   # column-major
         status = library().mlg_rhs_jacobian(ctypes.byref(self._p), x, f, J, None)
@@ -245,7 +274,7 @@ class Model:
             raise RuntimeError(f"jacobian: {library().mlg_status_text(status).decode()}")
         return numpy.array(J, dtype=float).reshape(nx, nx).T
 
-    def taylor(self, u, d) -> numpy.ndarray:
+    def taylor(self, u: Sequence[float], d: Sequence[float]) -> numpy.ndarray:
         """[f, D f[d], D^2 f[d, d], D^3 f[d, d, d]] at the state u along d
         (sequences in UNAMES order), a 4 x NX array, exact to rounding; at a
         kink of f (|eta'| eta' at eta' = 0) the one-sided derivatives, t -> 0+."""
@@ -254,12 +283,14 @@ class Model:
         self._form(library().mlg_rhs_taylor, out, u=u, d=d)
         return out.reshape(4, nx)
 
-    def second_form(self, u, x, y) -> numpy.ndarray:
+    def second_form(self, u: Sequence[float], x: Sequence[float],
+                    y: Sequence[float]) -> numpy.ndarray:
         """B(x, y) = sum_jk d2f/du_j du_k x_j y_k at the state u (a sequence in
         UNAMES order) for real x and y, exact to rounding (c/vector_field_taylor.c)."""
         return self._form(library().mlg_second_form, None, u=u, x=x, y=y)
 
-    def third_form(self, u, x, y, z) -> numpy.ndarray:
+    def third_form(self, u: Sequence[float], x: Sequence[float], y: Sequence[float],
+                   z: Sequence[float]) -> numpy.ndarray:
         """C(x, y, z) = sum_jkl d3f/du_j du_k du_l x_j y_k z_l at u, real
         arguments, exact to rounding."""
         return self._form(library().mlg_third_form, None, u=u, x=x, y=y, z=z)
@@ -283,7 +314,7 @@ class Model:
         out[:] = buffer
         return out
 
-    def energy(self, u: Sequence[float], eta_ref: float):
+    def energy(self, u: Sequence[float], eta_ref: float) -> Tuple[float, float]:
         """(kinetic, potential) of the model's Lagrangian at the state u (a
         sequence in U order); the oleo potential counts from eta_ref."""
         x = (ctypes.c_double * _table("NX"))(*u)

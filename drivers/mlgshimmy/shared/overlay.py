@@ -16,13 +16,13 @@ FREEPLAY=tanh adds that entry): a name of the table MLG_FREEPLAY_LAWS of
 c/freeplay_laws.h, read as text too, held as its index there (the switch
 freeplay_law); the paper's law (15), atan, is no overlay.
 """
-import difflib
 import math
 import os
 import re
 from typing import Dict, Mapping, Tuple
 
 from mlgshimmy.shared import number_text
+from mlgshimmy.shared.suggest import did_you_mean
 
 ENV_SET = "MLG_SET"
 HEADER = os.path.join(os.path.dirname(__file__), "..", "..", "..", "c", "mlg_parameters.h")
@@ -111,9 +111,7 @@ def parse(text: str) -> Tuple[Tuple[str, float], ...]:
         if name in NOT_OVERLAID:
             raise OverlayError(f"SET: {name} cannot be overlaid: {NOT_OVERLAID[name]}")
         if name not in units:
-            close = difflib.get_close_matches(name, list(units), n=1)
-            hint = f"; did you mean {close[0]}?" if close else \
-                " (the names are those of c/mlg_parameters.h)"
+            hint = did_you_mean(name, units) or " (the names are those of c/mlg_parameters.h)"
             raise OverlayError(f"SET: no parameter or constant named {name!r}{hint}")
         if name in values:
             raise OverlayError(f"SET: {name} is given twice")
