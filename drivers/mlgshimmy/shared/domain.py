@@ -8,14 +8,14 @@ orbits reach lift-off below V = 600 m/s (rho = mu = 10 deg: F* = 1 at
     reason = stop_reason(run("MX")[0])   # "wheel lift-off" or "numerical"
 """
 import ctypes
-from typing import Dict
+from typing import Dict, Tuple
 
 from mlgshimmy.shared import mlgmodel
 
 LIFT_OFF_LOAD = 1e-4         # of the static tyre load: "zero" at an MX stop
 
 
-def solution_model(sol) -> mlgmodel.Model:
+def solution_model(sol: object) -> mlgmodel.Model:
     """The model of an AUTO solution: its PAR and its constants file's constants."""
     names = [n for n in mlgmodel.PARNAMES if n and n != mlgmodel.CONSTANTS_FILE]
     return mlgmodel.Model("figures", **{n: sol.PAR[n] for n in names},
@@ -42,12 +42,12 @@ def diagnose(model: mlgmodel.Model, u: Dict[str, float]) -> Dict[str, object]:
     return found
 
 
-def tyre_loads(model: mlgmodel.Model, u: Dict[str, float]):
+def tyre_loads(model: mlgmodel.Model, u: Dict[str, float]) -> Tuple[float, float]:
     """(F_L, F_R) [N] at the state u."""
     return diagnose(model, u)["F"]
 
 
-def least_tyre_load(sol) -> float:
+def least_tyre_load(sol: object) -> float:
     """The least tyre load [N] over the stored points of an orbit (an AUTO
     solution), relative to nothing: see stop_reason."""
     model = solution_model(sol)
@@ -55,7 +55,7 @@ def least_tyre_load(sol) -> float:
                for k in range(len(sol["t"])))
 
 
-def stop_reason(sol) -> str:
+def stop_reason(sol: object) -> str:
     """"wheel lift-off" if the orbit `sol` (an MX solution) has a tyre load
     below LIFT_OFF_LOAD of the static one, else "numerical"."""
     model = solution_model(sol)

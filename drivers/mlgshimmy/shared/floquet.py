@@ -10,6 +10,7 @@ F* = 0.2 the count changes 1.2 m/s after the sign).  The crossings are
 therefore found here, from the multipliers of every step.
 """
 import re
+from typing import Dict, List, Sequence, Tuple
 
 import numpy
 
@@ -19,14 +20,14 @@ _MULTIPLIER = re.compile(r"^\s*-?\d+\s+(-?\d+)\s+Multiplier\s+\d+\s+(\S+)\s+(\S+
 COMPLEX = 3e-3    # |Im mu| above this: a complex pair (AUTO: sqrt(EPSS))
 
 
-def fortran_number(text):
+def fortran_number(text: str) -> float:
     """A number as AUTO's Fortran writes it: 1.5D+02, and 1.5+288 where a
     three-digit exponent leaves no room for the E."""
     return float(re.sub(r"(?<=[0-9.])([+-]\d+)$", r"E\1", text.replace("D", "E"))
                  if "E" not in text.upper().replace("D", "E") else text.replace("D", "E"))
 
 
-def read(path):
+def read(path: str) -> List[Tuple[float, numpy.ndarray]]:
     """[(parameter value, multipliers as complex array)] per point of the
     branch in the d-file at path, in branch order.  AUTO writes a block for
     each Newton solve; while it locates a special point it solves several
@@ -51,7 +52,7 @@ def read(path):
     return [points[k] for k in sorted(points)]
 
 
-def critical(mults):
+def critical(mults: numpy.ndarray) -> Tuple[float, float]:
     """The complex multiplier of largest modulus, the trivial one (nearest 1)
     left out: (|mu| - 1, angle in rad)."""
     rest = numpy.delete(mults, numpy.argmin(numpy.abs(mults - 1.0)))
@@ -62,7 +63,7 @@ def critical(mults):
     return abs(mu) - 1.0, abs(numpy.angle(mu))
 
 
-def torus_crossings(steps):
+def torus_crossings(steps: Sequence[Tuple[float, numpy.ndarray]]) -> List[Dict[str, object]]:
     """Where a complex pair crosses the unit circle between two steps:
     [{"value", "angle", "direction", "slope_per_unit", "between"}], the
     value and angle interpolated linearly in |mu| - 1 between the two

@@ -19,7 +19,7 @@ no straight rolling beyond: NoRollingState.
 """
 import bisect
 import ctypes
-from typing import Dict, List, Optional, Tuple
+from typing import Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy
 
@@ -55,7 +55,7 @@ def _residual(model: mlgmodel.Model, x: numpy.ndarray, par: Optional[str] = None
 
 
 def solve(model: mlgmodel.Model, start: numpy.ndarray, iterations: int = 30,
-          tol: float = 1e-13):
+          tol: float = 1e-13) -> Optional[numpy.ndarray]:
     """Newton on f(u) = 0 from `start` with backtracking on |f| (as
     mlg_equilibrium); the state, or None if it does not converge."""
     x = numpy.array(start, dtype=float)
@@ -83,7 +83,7 @@ def solve(model: mlgmodel.Model, start: numpy.ndarray, iterations: int = 30,
     return None
 
 
-def fan_states(model: mlgmodel.Model, base: numpy.ndarray, psis, same: float,
+def fan_states(model: mlgmodel.Model, base: numpy.ndarray, psis: Sequence[float], same: float,
                iterations: int = 30) -> List[numpy.ndarray]:
     """The distinct stationary states Newton (solve) converges to from the
     state `base` with psi set to each of `psis` in turn (psi within `same`
@@ -99,8 +99,8 @@ def fan_states(model: mlgmodel.Model, base: numpy.ndarray, psis, same: float,
     return sorted(found, key=lambda u: u[0])
 
 
-def follow(model_at, par: str, s0: float, u0: numpy.ndarray, s1: float,
-           branch: str) -> List[Tuple[float, numpy.ndarray]]:
+def follow(model_at: Callable[[float], mlgmodel.Model], par: str, s0: float,
+           u0: numpy.ndarray, s1: float, branch: str) -> List[Tuple[float, numpy.ndarray]]:
     """[(s, state)] from s0 (not included) to s1 along the branch of
     equilibria of model_at(s) through the state u0 at s0, s the value of
     the parameter `par`.  A step (_step) predicts along the branch's
