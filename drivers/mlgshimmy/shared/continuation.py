@@ -480,7 +480,7 @@ def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
     `first`; steps: AUTO constants of the orbit runs; state(value): straight
     rolling there (spectrum.stability_changes)."""
     changes = spectrum.stability_changes(parameter_set, parameter, grid, state=state, **values)
-    hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]
+    hopf = [(v, hz) for v, kind, hz in changes if kind == "HB"]
     bp = [v for v, kind, _ in changes if kind == "BP"]
     parts, names, reached = [], [], set()
     for k, (v, _) in enumerate(hopf, first):

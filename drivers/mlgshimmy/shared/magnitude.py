@@ -76,7 +76,7 @@ def stable_orbits(diagram, V):
 
 
 def yfp_thresholds(scaling, V, Fstar=FSTAR, **model):
-    """[(y_fp, kind, omega)]: where straight rolling changes stability in y_fp
+    """[(y_fp, kind, freq_hz)]: where straight rolling changes stability in y_fp
     at speed V (eigenvalue scan over YFP_MIN..YFP_MAX)."""
     grid = numpy.geomspace(YFP_MIN, YFP_MAX, 241)
     return spectrum.stability_changes("figures", "yfp", grid, V=V, Fstar=Fstar,
@@ -88,7 +88,7 @@ def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude", **model):
     [YFP_MIN, YFP_MAX], across the Hopf points of straight rolling in y_fp
     (continuation.follow_orbits; runs stop 0.1% either side of them).
     Returns (down, up): the lists of runs in each direction, in order."""
-    hopf = {y: w / (2 * numpy.pi) for y, kind, w in yfp_thresholds(scaling, V, **model)
+    hopf = {y: hz for y, kind, hz in yfp_thresholds(scaling, V, **model)
             if kind == "HB"}
     return tuple(ct.follow_orbits(rundir, lambda n, d=direction: f"{tag}_{d}{n}", point, "yfp",
                                   hopf, lambda y: 1e-3 * y, (YFP_MIN, YFP_MAX),

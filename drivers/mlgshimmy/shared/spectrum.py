@@ -81,9 +81,9 @@ def stability_changes(parameter_set: str, parameter: str, grid: Sequence[float],
                       state: Optional[Callable[[float], dict]] = None,
                       **values: float) -> List[Tuple[float, str, float]]:
     """Where straight rolling changes stability along `grid` of `parameter`,
-    refined by bisection (60 halvings of a grid step): [(value, kind, omega)],
-    kind "HB" (complex pair, omega its imaginary part in rad/s) or "BP"
-    (real eigenvalue).  state(value): the state of straight rolling there,
+    refined by bisection (60 halvings of a grid step): [(value, kind, freq_hz)],
+    kind "HB" (complex pair, freq_hz its frequency |Im|/2pi in Hz) or "BP"
+    (real eigenvalue, 0 Hz).  state(value): the state of straight rolling there,
     where Newton from psi = 0 may miss it (shared.stationary)."""
     def counts(value):
         return _unstable(parameter_set, {**values, parameter: value},
@@ -99,7 +99,8 @@ def stability_changes(parameter_set: str, parameter: str, grid: Sequence[float],
             at = bisect(lambda v: counts(v)[k] == before[k], previous, value)
             eig = counts(at)[2]
             critical = eig[numpy.argmin(numpy.abs(eig.real))]
-            changes.append((at, kind, abs(critical.imag) if kind == "HB" else 0.0))
+            hz = abs(critical.imag) / (2 * numpy.pi) if kind == "HB" else 0.0
+            changes.append((at, kind, hz))
         previous, before = value, now
     return sorted(changes)
 
@@ -122,7 +123,7 @@ def hopf_scan(parameter_set: str, parameter: str, grid: Sequence[float],
               **values: float) -> List[Tuple[float, float]]:
     """[(value, frequency in Hz)] of the Hopf points of straight rolling
     along `grid` (stability_changes, complex pairs only)."""
-    return [(v, w / (2 * numpy.pi)) for v, kind, w
+    return [(v, hz) for v, kind, hz
             in stability_changes(parameter_set, parameter, grid, **values) if kind == "HB"]
 
 

@@ -162,7 +162,7 @@ def speeds(values):
     zero = spectrum.hopf_scan("figures", "V", ct.SPEED_SCAN, Fstar=FSTAR, yfp=0.0, **values)
     case = {"Fstar": FSTAR, **FREEPLAY, **values}
     changes = spectrum.stability_changes("figures", "V", ct.SPEED_SCAN, **case)
-    hopf = [(v, w / (2 * numpy.pi)) for v, kind, w in changes if kind == "HB"]
+    hopf = [(v, hz) for v, kind, hz in changes if kind == "HB"]
     modes = [naming.mode("figures", "V", v, **case) for v, _ in hopf]
     return {"critical_V": zero[0][0] if zero else None, "hopf": hopf,
             "hopf_names": naming.names(modes),
