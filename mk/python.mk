@@ -52,3 +52,10 @@ ifeq ($(PY_DEPS_WANTED),yes)
 endif
 endif
 endef
+
+# make venv [VENV=v] [PYTHON=...]: a virtual environment that imports the
+# drivers from drivers/ (mk/venv.sh says what it needs when PYTHON lacks it).
+VENV ?= v
+.PHONY: venv
+venv:
+	mk/venv.sh $(call shell_quote,$(PYTHON)) $(call shell_quote,$(VENV))
