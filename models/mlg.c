@@ -13,6 +13,7 @@
  * persists).  A non-finite solution that AUTO accepts anyway ends the run at
  * once, naming where (pvls). */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -116,17 +117,66 @@ int func(integer ndim, const doublereal *u, const integer *icp, const doublereal
     return 0;
 }
 
-/* Straight rolling for the parameters below.  AUTO applies the PAR and U
- * values of the constants file after STPNT, so a run at other parameters
- * passes the matching equilibrium in U (mlgshimmy.shared.mlgmodel computes it). */
+/* The PAR and U values of the constants (c.mlg's PAR = {...}, run(PAR=...)),
+ * which AUTO 0.9.2 applies only after STPNT (toolboxae.f90, STPNUS), read
+ * from its module AUTO_CONSTANTS: PARVALS and UVALS, arrays of
+ * (CHARACTER(13) name or index, value), through gfortran's array descriptor
+ * (gfortran >= 8). Weak, and checked: elsewhere nothing is read. */
+typedef struct { char index[13]; double value; } auto_indexvar;
+typedef struct {
+    auto_indexvar *base;
+    size_t offset;
+    struct { size_t elem_len; int version; signed char rank, type; short attribute; } dtype;
+    ptrdiff_t span;
+    struct { ptrdiff_t stride, lbound, ubound; } dim[1];
+} auto_list;
+extern auto_list __auto_constants_MOD_parvals __attribute__((weak));
+extern auto_list __auto_constants_MOD_uvals __attribute__((weak));
+
+static ptrdiff_t list_length(const auto_list *list)
+{
+    if (list == NULL || list->base == NULL || list->dtype.rank != 1 ||
+        list->dtype.elem_len != sizeof(auto_indexvar) || list->dim[0].stride != 1)
+        return 0;
+    return list->dim[0].ubound - list->dim[0].lbound + 1;
+}
+
+/* par[] with the constants' PAR values set: by PAR index or by name. */
+static void apply_given_par(doublereal *par)
+{
+    const auto_list *list = &__auto_constants_MOD_parvals;
+    for (ptrdiff_t i = 0; i < list_length(list); i++) {
+        char name[14];
+        memcpy(name, list->base[i].index, 13);
+        name[13] = '\0';
+        for (int k = 12; k >= 0 && name[k] == ' '; k--) name[k] = '\0';
+        char *end;
+        long slot = strtol(name, &end, 10);
+        if (*end != '\0' || end == name) {
+            slot = 0;
+            for (int k = 0; k < MLG_PAR_SLOTS && slot == 0; k++)
+                if (mlg_par_name(k) && strcmp(mlg_par_name(k), name) == 0) slot = k + 1;
+        }
+        if (slot >= 1 && slot <= MLG_PAR_SLOTS) par[slot - 1] = list->base[i].value;
+    }
+}
+
+/* Straight rolling at the PAR the run is given (the constants' PAR over the
+ * built-in V = 50 m/s, F* = 1 of the `figures` set), by Newton from the
+ * static balance (mlg_equilibrium). Invalid PAR: FUNC's first call says
+ * which. With every state given in U, AUTO's U is the start instead. */
 int stpnt(integer ndim, doublereal t, doublereal *u, doublereal *par)
 {
     mlg_params p = mlg_params_figures();
     p.V = 50.0;
     p.Fstar = 1.0;
     mlg_params_get_par(&p, par);
-    if (mlg_equilibrium(&p, -1.0, u) != 0) {
-        fprintf(stderr, "mlg: no straight-rolling equilibrium at the default parameters\n");
+    apply_given_par(par);
+    if (parameters_for(par, &p) != NULL) return 0;
+    if (mlg_equilibrium(&p, -1.0, u) != 0 &&
+        list_length(&__auto_constants_MOD_uvals) < MLG_NX) {
+        fprintf(stderr, "mlg: no straight-rolling equilibrium at the starting parameters "
+                "(V = %g m/s, Fstar = %g): give the starting state in U\n", p.V, p.Fstar);
         exit(1);
     }
     return 0;

@@ -15,6 +15,8 @@ import subprocess
 
 import pytest
 
+from mlgshimmy.shared import mlgmodel
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 V_HOPF = 346.1          # m/s, the paper's Fig. 7 (the `figures` set is calibrated to it)
 HB, EP, UZ = 3, 9, -4   # AUTO's point types in b-files
@@ -123,3 +125,30 @@ def test_at_r_rebuilds_an_edited_mlg_c_or_runs_nothing(tmp_path):
     assert "@r mlg: mlg.c does not build with the model library (above): mlg.o and mlg.exe " \
         "removed, so that no old executable runs; fix mlg.c and run it again" in out, out
     assert not (where / "mlg.exe").exists() and not (where / "fort.7").exists(), out
+
+
+def test_stpnt_starts_at_the_par_it_is_given(demo):
+    """run(PAR={'Fstar': 0.2}) from the STPNT: label 1 is straight rolling at
+    F* = 0.2 (STPNT read the run's PAR; it had returned the F* = 1 state),
+    by PAR name or PAR index, and an impossible load is refused in one line."""
+    script = demo / "start.py"
+    script.write_text(
+        "import numpy\n"
+        "if 'bool' not in vars(numpy): numpy.bool = numpy.bool_\n"
+        "for par in ({'Fstar': 0.2, 'V': 300.0}, {2: 0.5}):\n"
+        "    s = run(e='mlg', c='mlg', PAR=par, ICP=['V'], NMX=2)(1)\n"
+        "    print('START', s['V'], s['Fstar'], *[float(s[n][0]) for n in s.coordnames])\n")
+    status, out = in_demo(demo, "auto start.py")
+    starts = [[float(x) for x in line.split()[1:]] for line in out.splitlines()
+              if line.startswith("START")]
+    assert len(starts) == 2, out
+    for V, Fstar, *u in starts:
+        model = mlgmodel.Model("figures", V=V, Fstar=Fstar)
+        expected = model.equilibrium()
+        assert u == pytest.approx([expected[n] for n in mlgmodel.UNAMES], abs=1e-9)
+        assert max(abs(model.rhs(u))) < 1e-8
+    assert starts[0][:2] == [300.0, 0.2] and starts[1][:2] == [50.0, 0.5]
+    assert starts[0][2 + mlgmodel.UNAMES.index("eta")] == pytest.approx(0.27013, abs=1e-5)
+    script.write_text("run(e='mlg', c='mlg', PAR={'Fstar': -1.0}, ICP=['V'], NMX=2)\n")
+    status, out = in_demo(demo, "auto start.py")
+    assert "mlg: invalid starting parameters: " in out and "Fstar" in out, out
