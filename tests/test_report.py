@@ -3,7 +3,9 @@ tmp_path: the page names every figure, every <img> it shows exists beside
 it, the scorecard has one row per number the paper prints (shared.paper
 PAPER) and per held-out value (HELD_OUT) with the status the tables give,
 a figure not made shows as missing, and headless Chromium renders the page
-to a screenshot (skipped, with the reason, where Chromium is absent).
+to a screenshot, its sidebar beside the text (`make test` installs Chromium
+and sets MLG_REQUIRE_CHROMIUM: there a missing Chromium fails; by hand it
+skips, with the reason).
 
 Run: /usr/bin/python3 -m pytest -q tests/test_report.py
 """
@@ -24,6 +26,7 @@ from mlgshimmy.studies import report  # noqa: E402
 OURS = {"fig07": {"H, F* = 1 [m/s]": 346.1000001},
         "fig10": {"H1 [m/s]": 1.45816, "H2 [m/s]": 28.3067, "H3 [m/s]": 144.27,
                   "S1 [m/s]": 41.4912},
+        "fig13": {"y_fp = 1: H1 [m/s]": 1.45817, "y_fp = 1: H2 [m/s]": 28.3067},
         "fig12": {"a_12": 0.408, "b_12": 1.527, "pitchfork 1 F*": 0.037}}
 
 
@@ -31,12 +34,16 @@ class Page(html.parser.HTMLParser):
     def __init__(self):
         super().__init__()
         self.images, self.ids, self.rows, self._in_score = [], [], [], False
-        self._cells = None
+        self._cells, self.sidebar, self._in_nav, self.links = None, [], False, []
 
     def handle_starttag(self, tag, attrs):
         attrs = dict(attrs)
         if tag == "img":
             self.images.append(attrs["src"])
+        if tag == "nav" and attrs.get("class") == "side":
+            self._in_nav = True
+        if tag == "a":
+            (self.sidebar if self._in_nav else self.links).append(attrs["href"])
         if "id" in attrs:
             self.ids.append(attrs["id"])
         if tag == "table" and "score" in attrs.get("class", ""):
@@ -56,6 +63,8 @@ class Page(html.parser.HTMLParser):
             self._cells = None
         if tag == "table":
             self._in_score = False
+        if tag == "nav":
+            self._in_nav = False
 
 
 # a figure's named points, under its table (e.g. fig10.plot's)
@@ -65,7 +74,7 @@ NOTES = {"fig10": ["H3: high-frequency lateral, loses stability, subcritical (l1
 
 @pytest.fixture
 def run_root(tmp_path, monkeypatch):
-    """fig07, fig10 and fig12 made (result, table, PNG); the rest not."""
+    """fig07, fig10, fig12 and fig13 made (result, table, PNG); the rest not."""
     root = tmp_path / "build"
     monkeypatch.setenv("MLG_RUN_ROOT", str(root))
     (root / "figures").mkdir(parents=True)
@@ -99,18 +108,34 @@ def test_the_page_from_cached_results(run_root, capsys):
                                          + ["figures/criterion.png"])
     for src in page.images:
         assert (out / src).is_file(), src
-    # the scorecard: every printed number, then every held-out value
-    printed = [(f, q) for f, values in paper.PAPER.items() for q in values]
-    held = [(f, q) for f, values in paper.HELD_OUT.items() for q in values]
-    assert [(r[0], r[1]) for r in page.rows] == printed + held
-    status = {(r[0], r[1]): r[5] for r in page.rows}
+    # the scorecard: every printed number once (Fig. 13's y_fp = 1 slice is Fig. 10's
+    # four numbers, shown beside them), then every held-out value
+    assert [(r[0].split("also")[0], r[1]) for r in page.rows] == [
+        ("fig07", "H, F* = 1 [m/s]"), ("fig10", "H1 [m/s]"), ("fig10", "H2 [m/s]"),
+        ("fig10", "H3 [m/s]"), ("fig10", "S1 [m/s]"), ("fig12", "a_12"), ("fig12", "b_12"),
+        ("fig16", "r1 = a [mm]"), ("fig16", "r2 = b [mm]"), ("fig16", "r3 = c [mm]"),
+        ("fig18", "kappa*")]
+    status = {(r[0].split("also")[0], r[1]): r[5] for r in page.rows}
     assert status[("fig07", "H, F* = 1 [m/s]")] == "calibrated"
     assert status[("fig10", "H1 [m/s]")] == "agrees"
     assert status[("fig10", "H3 [m/s]")] == "close"
-    assert status[("fig13", "y_fp = 1: H1 [m/s]")] == "missing"      # not made
     assert status[("fig12", "a_12")] == "held out"
     assert status[("fig16", "r1 = a [mm]")] == "missing"
+    assert page.rows[1][0] == "fig10also fig13 (y_fp = 1: H1 [m/s]): 1.45817"
+    assert page.rows[4][0] == "fig10also fig13 (y_fp = 1: S1 [m/s]): –"   # not in fig13's table
     text = (out / "index.html").read_text()
+    assert "<p>11 numbers, each counted once: 1 calibrated, 2 agrees, 2 close, 2 held out, " \
+        "4 missing.</p>" in text
+    # a sidebar to every part; provenance folded; each figure's checks and docs section
+    assert page.sidebar[:3] == ["#top", "#scorecard", "#provenance"]
+    assert [h for h in page.sidebar if h.startswith("#fig")] == \
+        [f"#{f}" for f, _, _ in report.FIGURES]
+    assert "<details><summary>the tools that made" in text
+    assert text.count('<details class="prov"><summary>provenance of the cached result') == 4
+    docs = os.path.relpath(os.path.join(report.paths.ROOT, "docs", "reproduction.md"), out)
+    assert f"{docs}#fig-10--f--1-with-1-mm-of-freeplay-diagram-in-v" in page.links
+    assert os.path.isfile(os.path.join(out, docs))
+    assert "tests/test_naming.py::test_the_paper_s_gear_has_its_three_named_points" in text
     assert "No figure yet: run <code>make fig11</code>" in text
     assert "numpy" in text and "matplotlib" in text and "abc123" in text
     assert "missing: fig06" in capsys.readouterr().out
@@ -125,6 +150,8 @@ def test_the_page_from_cached_results(run_root, capsys):
 def test_chromium_renders_the_page(run_root, tmp_path):
     chromium = shutil.which("chromium") or shutil.which("chromium-browser")
     if not chromium:
+        assert not os.environ.get("MLG_REQUIRE_CHROMIUM"), "chromium is not installed, and " \
+            "make test installs it (mk/install-packages.sh chromium)"
         pytest.skip("chromium is not installed (apt-get install -y chromium): the page "
                     "is checked as HTML only")
     target = report.build()
@@ -139,3 +166,6 @@ def test_chromium_renders_the_page(run_root, tmp_path):
     # something is drawn: the page is not blank
     assert (image[..., :3] < 0.5).any()
     assert os.path.getsize(shot) > 10_000
+    # the sidebar's background (#f5f6f8) down the left edge, the page's white right of it
+    assert image[1900, 20, :3] == pytest.approx([0xf5 / 255, 0xf6 / 255, 0xf8 / 255], abs=0.01)
+    assert image[1900, 1270, :3] == pytest.approx([1.0, 1.0, 1.0], abs=0.01)

@@ -29,6 +29,11 @@ DECLARED = {
         # IV.D.1: the Fig. 10 diagram is the y_fp = 1 mm slice of Fig. 13
         "paper": {"y_fp = 1: H1 [m/s]": 1.5, "y_fp = 1: H2 [m/s]": 28.1,
                   "y_fp = 1: H3 [m/s]": 142.5, "y_fp = 1: S1 [m/s]": 41.5},
+        # Fig. 10's printed numbers: the scorecard counts them once, there
+        "repeats": {"y_fp = 1: H1 [m/s]": ["fig10", "H1 [m/s]"],
+                    "y_fp = 1: H2 [m/s]": ["fig10", "H2 [m/s]"],
+                    "y_fp = 1: H3 [m/s]": ["fig10", "H3 [m/s]"],
+                    "y_fp = 1: S1 [m/s]": ["fig10", "S1 [m/s]"]},
     },
 }
 

@@ -30,6 +30,10 @@ _FIGURES = catalogue.figures()
 PAPER = {e["name"]: e["paper"] for e in _FIGURES if "paper" in e}
 CALIBRATED = {(e["name"], q) for e in _FIGURES for q in e.get("calibrated", [])}
 HELD_OUT = {e["name"]: e["held_out"] for e in _FIGURES if "held_out" in e}
+# Printed numbers a second figure shows again ("repeats": its quantity ->
+# [figure, quantity] where it is printed first): counted once, there.
+REPEATS = {(e["name"], q): tuple(first) for e in _FIGURES
+           for q, first in e.get("repeats", {}).items()}
 CLOSE = 0.02   # relative error up to which a value outside the printed digits is "close"
 
 

@@ -8,13 +8,16 @@ missing, with the command that makes it.
 
     make report            # or: python3 -m mlgshimmy.studies.report [--out DIR]
 
-The page opens with the scorecard (every number the paper prints,
-shared.paper.PAPER, beside ours, the relative error and a status; the
-values the paper withholds, shared.paper.HELD_OUT, with ours), then the
-provenance (commit, AUTO, compilers, Python, numpy, matplotlib), then one
-section per figure: what the paper shows, our PNG and its table; then the
-studies beyond the paper that have been run (their tables and figures,
-STUDIES)."""
+A sidebar links every part. The page opens with the scorecard (every
+number the paper prints, shared.paper.PAPER, once, beside ours, the
+relative error and a status; the values the paper withholds,
+shared.paper.HELD_OUT, with ours), then the provenance (commit, AUTO,
+compilers, Python, numpy, matplotlib; folded), then one section per
+figure: what the paper shows, our PNG and its table, the qualitative
+features the tests check (shared.checks) with a link to the figure's
+section of docs/reproduction.md, and its cached result's provenance
+(folded); then the studies beyond the paper that have been run
+(their tables and figures, STUDIES)."""
 import argparse
 import datetime
 import html
@@ -25,7 +28,7 @@ import shutil
 import subprocess
 import sys
 
-from mlgshimmy.shared import paper
+from mlgshimmy.shared import checks, paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs import catalogue
 from mlgshimmy.shared.jobs.atomic import write_text
@@ -180,15 +183,24 @@ def collect(root):
                               and os.path.getmtime(entry["png"]) < os.path.getmtime(result))
         figures.append(entry)
     by_figure = {f["figure"]: f for f in figures}
-    score = []
+
+    def ours_of(figure, quantity):
+        rows = by_figure.get(figure, {}).get("rows") or []
+        return next((r["ours"] for r in rows if r["quantity"] == quantity), None)
+    score, printed_at = [], {}
     for figure, printed in paper.PAPER.items():
-        rows = {r["quantity"]: r for r in (by_figure.get(figure, {}).get("rows") or [])}
         for quantity, value in printed.items():
-            row = rows.get(quantity)
-            ours = row["ours"] if row else None
-            score.append({"figure": figure, "quantity": quantity, "paper": value, "ours": ours,
-                          "rel_error": None if ours is None else (ours - value) / value,
-                          "status": paper.status(figure, quantity, value, ours)})
+            ours = ours_of(figure, quantity)
+            row = {"figure": figure, "quantity": quantity, "paper": value, "ours": ours,
+                   "rel_error": None if ours is None else (ours - value) / value,
+                   "status": paper.status(figure, quantity, value, ours), "also": []}
+            first = paper.REPEATS.get((figure, quantity))
+            if first:    # the same printed number: one row, where it is printed first
+                printed_at[first]["also"].append({"figure": figure, "quantity": quantity,
+                                                  "ours": ours, "status": row["status"]})
+            else:
+                printed_at[(figure, quantity)] = row
+                score.append(row)
     for figure, held in paper.HELD_OUT.items():
         rows = {r["quantity"]: r for r in (by_figure.get(figure, {}).get("rows") or [])}
         for quantity, symbol in held.items():
@@ -215,6 +227,13 @@ def _status(status):
             f'title="{html.escape(STATUS_TEXT.get(status, ""))}">{html.escape(status)}</span>')
 
 
+def _also(row):
+    """The other figures that show the same printed number, with their value."""
+    return "".join(f'<br><span class="also">also <a href="#{a["figure"]}">{a["figure"]}</a> '
+                   f'({html.escape(a["quantity"])}): {_number(a["ours"])}</span>'
+                   for a in row.get("also", []))
+
+
 def _scorecard(score):
     counts = {}
     for row in score:
@@ -224,14 +243,26 @@ def _scorecard(score):
              '<th>ours</th><th>rel. error</th><th>status</th></tr></thead><tbody>']
     for row in score:
         lines.append(
-            f'<tr><td><a href="#{row["figure"]}">{row["figure"]}</a></td>'
+            f'<tr><td><a href="#{row["figure"]}">{row["figure"]}</a>{_also(row)}</td>'
             f'<td>{html.escape(row["quantity"])}</td><td>{_number(row["paper"])}</td>'
             f'<td>{_number(row["ours"])}</td><td>{html.escape(paper.relative(row["rel_error"]))}'
             f'</td><td>{_status(row["status"])}</td></tr>')
     lines.append("</tbody></table>")
     legend = "".join(f"<li>{_status(s)} {html.escape(t)}</li>" for s, t in STATUS_TEXT.items())
-    return (f"<p>{len(score)} rows: {html.escape(summary)}.</p>" + "\n".join(lines)
-            + f'<ul class="legend">{legend}</ul>')
+    return (f"<p>{len(score)} numbers, each counted once: {html.escape(summary)}.</p>"
+            + "\n".join(lines) + f'<ul class="legend">{legend}</ul>')
+
+
+def _checks(figure, docs):
+    """The qualitative features the tests check, and the figure's docs section."""
+    heading, found = checks.CHECKS.get(figure, (None, []))
+    if heading is None:
+        return ""
+    items = "".join(f"<li>{html.escape(feature)} <code>{html.escape(test)}</code></li>"
+                    for feature, test in found)
+    return (f'<div class="checks"><b>Checked by the tests</b> (discussed in <a href="{docs}#'
+            f'{checks.anchor(heading)}">{checks.DOCS}: {html.escape(checks.title(heading))}</a>)'
+            f"<ul>{items}</ul></div>")
 
 
 def _table(rows):
@@ -258,16 +289,13 @@ def _table(rows):
     return "\n".join(out)
 
 
-def _figure(entry, image):
+def _figure(entry, image, docs):
     figure = entry["figure"]
     parts = [f'<section id="{figure}"><h2>{figure}</h2>',
              f'<p class="shows"><b>Paper:</b> {html.escape(entry["shows"])}</p>',
              f'<p class="cmd"><code>{html.escape(entry["command"])}</code>']
-    provenance = entry["provenance"]
-    if provenance:
-        parts.append(" &middot; cached result: " + html.escape(
-            ", ".join(f"{k} {v}" for k, v in provenance.items())))
-    elif entry["cached"] is False and figure not in ("fig06", "fig08", "fig15", "fig19"):
+    if not entry["provenance"] and entry["cached"] is False and \
+            figure not in ("fig06", "fig08", "fig15", "fig19"):
         parts.append(" &middot; <b>no cached result</b>")
     parts.append("</p>")
     if image:
@@ -297,13 +325,32 @@ def _figure(entry, image):
     if entry.get("notes"):
         parts.append("<ul>" + "".join(f"<li>{html.escape(line)}</li>" for line in entry["notes"])
                      + "</ul>")
+    parts.append(_checks(figure, docs))
+    if entry["provenance"]:
+        rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(str(v))}</td></tr>"
+                       for k, v in entry["provenance"].items())
+        parts.append('<details class="prov"><summary>provenance of the cached result'
+                     f'</summary><table class="tools"><tbody>{rows}</tbody></table></details>')
     parts.append("</section>")
     return "\n".join(parts)
 
 
 STYLE = """
-body { font-family: system-ui, sans-serif; margin: 0 auto; padding: 1em 2em; max-width: 72em;
-       line-height: 1.4; color: #222; }
+body { font-family: system-ui, sans-serif; margin: 0; line-height: 1.4; color: #222;
+       display: flex; align-items: flex-start; }
+nav.side { position: sticky; top: 0; height: 100vh; overflow-y: auto; flex: none; width: 12em;
+           box-sizing: border-box; padding: 1em; background: #f5f6f8; border-right: 1px solid #ddd;
+           font-size: 0.9em; }
+nav.side a { display: block; padding: 0.1em 0; text-decoration: none; color: #1f4e8c; }
+nav.side .group { margin-top: 0.8em; font-weight: bold; color: #555; }
+nav.side .missing { color: #a04000; }
+main { flex: 1; min-width: 0; max-width: 72em; padding: 1em 2em; }
+@media (max-width: 50em) { body { display: block; }
+  nav.side { position: static; height: auto; width: auto; border-right: none; } }
+.checks { font-size: 0.9em; background: #f7faf7; border-left: 3px solid #7bb07b;
+          padding: 0.3em 0.8em; margin: 0.5em 0; }
+.checks ul { margin: 0.2em 0; } .also { font-size: 0.8em; color: #555; }
+details.prov { font-size: 0.85em; color: #555; margin: 0.4em 0; }
 h1 { font-size: 1.6em; } h2 { border-bottom: 1px solid #ccc; padding-top: 0.5em; }
 img { max-width: 100%; height: auto; border: 1px solid #ddd; }
 figure { margin: 0.5em 0; } figcaption { font-size: 0.85em; color: #555; }
@@ -315,7 +362,7 @@ th { background: #f0f0f0; }
 .good { background: #cfe3ff; } .calib { background: #e6e6e6; } .close { background: #ffe8b3; }
 .bad { background: #f6c7a8; } .held { background: #eadcf0; }
 ul.legend { font-size: 0.85em; } code { background: #f4f4f4; padding: 0 0.2em; }
-.missing { color: #a04000; } nav a { margin-right: 0.6em; }
+.missing { color: #a04000; }
 pre { overflow-x: auto; font-size: 0.8em; background: #f8f8f8; padding: 0.5em; }
 """
 
@@ -338,23 +385,34 @@ def _study(study, images):
     return "\n".join(parts)
 
 
-def page(info, images):
+def _sidebar(info):
+    figures = "".join(f'<a href="#{f["figure"]}"' + ("" if f["png"] else
+                      ' class="missing" title="not made yet"') + f'>{f["figure"]}</a>'
+                      for f in info["figures"])
+    studies = "".join(f'<a href="#study-{s["name"]}">{s["name"]}</a>' for s in info["studies"])
+    return ('<nav class="side"><a href="#top"><b>mlg-shimmy report</b></a>'
+            '<a href="#scorecard">Scorecard</a><a href="#provenance">Provenance</a>'
+            f'<div class="group">Figures</div>{figures}'
+            f'<div class="group">Studies</div>{studies}</nav>')
+
+
+def page(info, images, docs=os.path.join("..", "..", checks.DOCS)):
+    """The HTML page; docs: the link to docs/reproduction.md from it."""
     score = _scorecard(info["score"])
     tools = "".join(f"<tr><th>{html.escape(k)}</th><td>{html.escape(str(v))}</td></tr>"
                     for k, v in info["tools"])
     commits = sorted({f["provenance"].get("git_commit") or "unknown"
                       for f in info["figures"] if f["provenance"]})
-    nav = " ".join(f'<a href="#{f["figure"]}">{f["figure"]}</a>' for f in info["figures"]) \
-        + ' <a href="#studies">studies</a>'
-
-    sections = "\n".join(_figure(f, images.get(f["figure"])) for f in info["figures"])
+    sections = "\n".join(_figure(f, images.get(f["figure"]), docs) for f in info["figures"])
     studies = "\n".join(_study(st, images) for st in info["studies"])
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>mlg-shimmy: reproduction report</title><style>{STYLE}</style></head>
 <body>
-<h1>mlg-shimmy: reproduction report</h1>
+{_sidebar(info)}
+<main>
+<h1 id="top">mlg-shimmy: reproduction report</h1>
 <p>Howcroft, Lowenberg, Neild and Krauskopf, <i>Effects of freeplay on the dynamic stability
 of an aircraft main landing gear</i>: every figure beside the numbers the paper prints.
 Generated {html.escape(info["written"])} by <code>make report</code> from the cached results;
@@ -362,18 +420,20 @@ nothing here is copied by hand. All figures use the <code>figures</code> paramet
 torsional damping c_psi = 724.0034 N m s/rad (instead of Table 1's 410) is calibrated so that
 the zero-freeplay Hopf point at F* = 1 lies at the paper's 346.1 m/s
 (docs/model.md, section 5); the <code>table</code> set is the paper as printed.</p>
-<nav>{nav}</nav>
 <h2 id="scorecard">Scorecard: every number the paper prints</h2>
 {score}
 <h2 id="provenance">Provenance</h2>
+<details><summary>the tools that made and drew the results, and the commits of the cached
+results</summary>
 <table class="tools"><tbody>{tools}
 <tr><th>commits of the cached results</th><td>{html.escape(", ".join(commits) or "none")}</td></tr>
-</tbody></table>
+</tbody></table></details>
 {sections}
 <h2 id="studies">Studies beyond the paper</h2>
 <p>Computed by the project's own studies, not compared with the paper; shown when they have
 been run.</p>
 {studies}
+</main>
 </body></html>
 """
 
@@ -396,7 +456,8 @@ def build(out=None, root=None):
             shutil.copyfile(path, os.path.join(out, "figures", name))
             images[path] = f"figures/{name}"
     target = os.path.join(out, "index.html")
-    write_text(target, page(info, images))
+    write_text(target, page(info, images, os.path.relpath(os.path.join(paths.ROOT, checks.DOCS),
+                                                          out)))
     write_text(os.path.join(out, "report.json"),
                json.dumps({k: v for k, v in info.items()}, indent=1, default=str) + "\n")
     missing = [f["figure"] for f in info["figures"] if not f["png"]]

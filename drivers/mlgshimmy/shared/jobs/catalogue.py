@@ -24,7 +24,9 @@ A figure's entry (figures/figNN.py):
     "options"  driver options (a variant: "--strut-variant 1")
     "paper"    {quantity: value} of the result values the paper prints
                (shared.paper.PAPER); "calibrated": those the parameter set
-               was fitted to; "held_out": {quantity: the paper's symbol}
+               was fitted to; "held_out": {quantity: the paper's symbol};
+               "repeats": {quantity: [figure, quantity]} of printed numbers
+               another figure shows first (counted once, there)
 A study's entry (studies/<name>.py, keyed by its make target): "help",
 "time", "usage" (the help's target column), "grid"
 (the make variable of its grid options: submitted a job per point),
@@ -40,7 +42,7 @@ from typing import Dict, List
 PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 ROOMS = ("figures", "studies")
 FIGURE_KEYS = {"help", "time", "report", "regress", "parts", "after", "needs", "cached",
-               "redraw", "options", "paper", "calibrated", "held_out"}
+               "redraw", "options", "paper", "calibrated", "held_out", "repeats"}
 STUDY_KEYS = {"help", "time", "usage", "grid", "carries", "in_figures", "report"}
 NEEDS = {"simulator": "$(MLG_SIMULATE)", "library": "$(MLG_SHARED)"}
 TIME = re.compile(r"^(?:\+ |> )?(\d+(?:\.\d+)?) (s|min)$")
