@@ -51,6 +51,16 @@ def state_args(u):
     return [] if u is None else ["--u0", ",".join(repr(u[n]) for n in mlgmodel.UNAMES)]
 
 
+def start_args(V, Fstar, freeplay, u0, psi0, t_end, dt_out, params):
+    """The options of a run of the `figures` set from the state u0 (None: the
+    simulator's own straight rolling) with psi displaced by psi0, at a
+    freeplay case {yfp, eps_abs, eps_rel} and the gear's --param values
+    (shared.gear.simulator_params)."""
+    at = [word for name, value in params.items() for word in ("--param", f"{name}={value}")]
+    return ["--set", "figures", "--V", V, "--Fstar", Fstar, *freeplay_args(freeplay),
+            "--t-end", t_end, "--dt-out", dt_out, "--psi0", psi0, *state_args(u0), *at]
+
+
 def left_domain(proc):
     """The simulator's reason if the model left its domain, else None."""
     for line in proc.stderr.splitlines():

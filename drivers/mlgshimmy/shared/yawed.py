@@ -19,7 +19,7 @@ stability does, from the eigenvalues of the exact Jacobian at each V.
     grid = stable_grid("figures", F_GRID, V_GRID, freeplay.NOMINAL, **geometry)
 """
 import math
-from typing import Dict, Optional, Sequence
+from typing import Dict, Optional, Sequence, Tuple
 
 import numpy
 
@@ -50,6 +50,18 @@ def straight(parameter_set: str, Fstar: float, freeplay: Dict[str, float],
         return rolling.state(parameter_set, Fstar, freeplay["yfp"], epsilon, **overrides)
     except rolling.NoRollingState:
         return None
+
+
+def reference(parameter_set: str, Fstar: float, freeplay: Dict[str, float],
+              u0: Optional[Dict[str, float]], **overrides: float) -> Tuple[float, Optional[float]]:
+    """(psi_fp, psi_straight) [rad] at this load for shared.attractor.classify:
+    the freeplay angle y_fp / r_tlk at straight rolling u0 (r_tlk depends on
+    the strut compression, so on F*: 2.56e-3 at F* = 0.02, 2.05e-3 at 3.5)
+    and straight rolling's psi (None where there is none, u0 None; psi_fp
+    then at the library's equilibrium)."""
+    m = mlgmodel.Model(parameter_set, Fstar=Fstar, **freeplay, **overrides)
+    eta = (m.equilibrium() if u0 is None else u0)["eta"]
+    return freeplay["yfp"] * 1e-3 / m.r_tlk(eta), None if u0 is None else u0["psi"]
 
 
 def states(parameter_set: str, Fstar: float, freeplay: Dict[str, float],

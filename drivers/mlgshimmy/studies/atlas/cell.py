@@ -16,7 +16,6 @@ import numpy
 
 from mlgshimmy.shared import attractor
 from mlgshimmy.shared import freeplay, simulator, gear
-from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import yawed
 
 FREEPLAY = freeplay.NOMINAL      # y_fp = 1 mm, eps = 0.1 mm (Fig. 11)
@@ -53,11 +52,8 @@ def simulator_args(v, fstar, psi0, t_end):
     fail or land on a yawed state; without straight rolling the simulator's
     equilibrium) with psi displaced by psi0, for the gear of the run
     (shared.gear; nothing at the paper's)."""
-    at = [word for name, value in gear.simulator_params().items()
-          for word in ("--param", f"{name}={value}")]
-    start = simulator.state_args(straight_rolling(fstar))
-    return ["--set", "figures", "--V", v, "--Fstar", fstar, *simulator.freeplay_args(FREEPLAY),
-            "--t-end", t_end, "--dt-out", DT_OUT, "--psi0", psi0, *start, *at]
+    return simulator.start_args(v, fstar, FREEPLAY, straight_rolling(fstar), psi0, t_end,
+                                DT_OUT, gear.simulator_params())
 
 
 def discard(path):
@@ -88,15 +84,9 @@ def read_run(csv):
 
 
 def reference(fstar):
-    """(psi_fp, psi_straight) [rad] at this load: the freeplay angle y_fp /
-    r_tlk at straight rolling (r_tlk depends on the strut compression, so on
-    F*: 2.56e-3 at F* = 0.02, 2.05e-3 at 3.5) and straight rolling's psi
-    (None where there is no straight rolling; psi_fp then at the simulator's
-    equilibrium)."""
-    model = mlgmodel.Model("figures", Fstar=fstar, **FREEPLAY, **gear.parameters())
-    u0 = straight_rolling(fstar)
-    eta = (model.equilibrium() if u0 is None else u0)["eta"]
-    return FREEPLAY["yfp"] * 1e-3 / model.r_tlk(eta), None if u0 is None else u0["psi"]
+    """(psi_fp, psi_straight) [rad] at this load (yawed.reference)."""
+    return yawed.reference("figures", fstar, FREEPLAY, straight_rolling(fstar),
+                           **gear.parameters())
 
 
 def end_state(data, fstar):
