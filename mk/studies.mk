@@ -154,3 +154,17 @@ laws: $(call result,laws)
 	$(PYTHON) -m mlgshimmy.studies.laws --plot
 laws-plot:
 	$(PYTHON) -m mlgshimmy.studies.laws --plot
+
+# The gear's motion at one (V, F*), animated from the simulator (studies.animate):
+#   make animate V=300 FSTAR=1 [START=shimmy|rolling|yawed] [YFP=1] [RHO= MU= SET=]
+# (a GIF, an MP4 where ffmpeg is installed, a contact sheet of frames);
+# make animate-plot redraws the cached motion.
+START ?= shimmy
+YFP ?= 1
+.PHONY: animate animate-plot
+animate animate-plot: $(MLG_SIMULATE) $(MLG_SHARED)
+	$(if $(and $(V),$(FSTAR)),,$(error make $@ needs V=<m/s> FSTAR=<load>, e.g. make animate V=300 FSTAR=1))
+	$(PYTHON) -m mlgshimmy.studies.animate --V=$(call shell_quote,$(V)) \
+	    --Fstar=$(call shell_quote,$(FSTAR)) --start=$(call shell_quote,$(START)) \
+	    --yfp=$(call shell_quote,$(YFP))$(if $(filter animate-plot,$@), --plot)
+
