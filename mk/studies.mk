@@ -168,3 +168,10 @@ animate animate-plot: $(MLG_SIMULATE) $(MLG_SHARED)
 	    --Fstar=$(call shell_quote,$(FSTAR)) --start=$(call shell_quote,$(START)) \
 	    --yfp=$(call shell_quote,$(YFP))$(if $(filter animate-plot,$@), --plot)
 
+# One labelled point of any diagram (studies.point_view): orbit profile, phase
+# portrait, Floquet multipliers, a simulation from it:
+#   make point RUN=build/fig10/po3 LABEL=5
+.PHONY: point
+point: $(MLG_SIMULATE) $(MLG_SHARED)
+	$(if $(and $(strip $(RUN)),$(strip $(LABEL))),,$(error make point needs RUN=<run directory>/<run name> LABEL=<label>, e.g. RUN=build/fig10/po3 LABEL=5))
+	$(PYTHON) -m mlgshimmy.studies.point_view $(call shell_quote,$(RUN)) $(call shell_quote,$(LABEL))

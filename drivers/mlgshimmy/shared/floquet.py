@@ -29,9 +29,16 @@ def fortran_number(text: str) -> float:
 
 def read(path: str) -> List[Tuple[float, numpy.ndarray]]:
     """[(parameter value, multipliers as complex array)] per point of the
-    branch in the d-file at path, in branch order.  AUTO writes a block for
-    each Newton solve; while it locates a special point it solves several
-    times for one point number, and the last block is the point kept."""
+    branch in the d-file at path, in branch order (read_points)."""
+    points = read_points(path)
+    return [points[k] for k in sorted(points)]
+
+
+def read_points(path: str) -> Dict[int, Tuple[float, numpy.ndarray]]:
+    """{point number: (parameter value, multipliers)} of the d-file at path,
+    the point numbers as the b-file's PT.  AUTO writes a block for each
+    Newton solve; while it locates a special point it solves several times
+    for one point number, and the last block is the point kept."""
     points, value, last_value, current, point = {}, None, None, [], None
     with open(path) as f:
         for line in f:
@@ -49,7 +56,7 @@ def read(path: str) -> List[Tuple[float, numpy.ndarray]]:
             last_value = value
     if current:
         points[point] = (last_value, numpy.array(current))
-    return [points[k] for k in sorted(points)]
+    return points
 
 
 def critical(mults: numpy.ndarray) -> Tuple[float, float]:
