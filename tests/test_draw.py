@@ -45,7 +45,9 @@ def test_coinciding_points_of_one_name_are_named_once():
     draw.mark(ax, 100.0, 5.0, "TR")
     ax.set(xlim=(0, 600), ylim=(0, 16))
     labels.place(fig)
-    assert [t.get_text() for t in texts(ax)] == ["TR", "TR"]
+    assert [t.get_text() for t in texts(ax)] == ["TR ×4", "TR"]
+    # one marker for the cluster of four, one for the lone point
+    assert sum(line.get_visible() for line in ax.get_lines()) == 2
     plt.close(fig)
 
 

@@ -32,21 +32,19 @@ from matplotlib.lines import Line2D
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import paths
-from mlgshimmy.shared.draw import labels
+from mlgshimmy.shared.draw import labels, palette
+from mlgshimmy.shared.draw.palette import NEUTRAL, STABLE, UNSTABLE, sequence  # noqa: F401
 from mlgshimmy.shared.jobs.atomic import write_atomic
 
-matplotlib.rcParams.update({"figure.dpi": 110, "savefig.dpi": 150, "font.size": 9,
-                            "axes.grid": True, "grid.alpha": 0.3})
-# Okabe-Ito-like pair: distinct for every common colour-vision deficiency
-# and by lightness in grey scale; the line style tells them apart as well.
-STABLE, UNSTABLE = "#0b3d91", "#e69f00"
+STYLE = os.path.join(os.path.dirname(__file__), "mlg.mplstyle")
+plt.style.use(STYLE)
+# stable solid, unstable dashed: told apart by colour and by line style
 STABLE_STYLE = {"color": STABLE, "linestyle": "-"}
 UNSTABLE_STYLE = {"color": UNSTABLE, "linestyle": "--"}
-NEUTRAL = "0.25"
-# curves of bifurcation points in two parameters (Figs. 9, 14(h), 16, 17):
-# dot-dash as in the paper, Hopf in a colour neither stability colour uses
-HOPF_CURVE = {"color": "#aa3377", "ls": "-.", "lw": 1.3}
-FOLD_CURVE = {"color": "k", "ls": "-.", "lw": 1.5}   # the stability legend of figures whose colours mean something else
+# curves of bifurcation points in two parameters (Figs. 9, 14(h), 16, 17),
+# dot-dashed as in the paper
+HOPF_CURVE = {"color": palette.HOPF, "ls": "-.", "lw": 1.3}
+FOLD_CURVE = {"color": palette.FOLD, "ls": "-.", "lw": 1.5}
 DEG = numpy.degrees(1.0)
 
 # AUTO type -> how it is drawn and named; "change": a stability change of
@@ -91,13 +89,6 @@ def figure_title(target, text, **options):
     return target.set_title(text, **options)
 
 
-def sequence(n, cmap="viridis"):
-    """n colours in order (a family of curves: eps, y_fp, V), from a
-    perceptually uniform map that is safe for colour-vision deficiencies;
-    the light yellow end is left out (it vanishes on white)."""
-    return [matplotlib.colormaps[cmap](x) for x in numpy.linspace(0.0, 0.82, n)]
-
-
 def sci(value, digits=2):
     """A number for mathtext in scientific notation: 3.9e7 -> 3.9 x 10^7
     (as "$3.9 \\times 10^{7}$")."""
@@ -139,13 +130,13 @@ def mark(ax, x, y, kind, name=None, color="k", zorder=5):
     """One special point of type `kind` (a key of POINTS) at (x, y), named
     `name` (default the kind's name; "" for none) when the figure is saved."""
     point = POINTS[kind]
-    ax.plot([x], [y], linestyle="", marker=point["marker"], ms=point["ms"],
-            mfc=point["mfc"] if color == "k" or point["mfc"] == "white" else color,
-            mec=color, mew=0.9, zorder=zorder)
+    line, = ax.plot([x], [y], linestyle="", marker=point["marker"], ms=point["ms"],
+                    mfc=point["mfc"] if color == "k" or point["mfc"] == "white" else color,
+                    mec=color, mew=0.9, zorder=zorder)
     kinds = ax.__dict__.setdefault("_mlg_kinds", [])
     if kind not in kinds:
         kinds.append(kind)
-    labels.register(ax, x, y, point["name"] if name is None else name)
+    labels.register(ax, x, y, point["name"] if name is None else name, line)
 
 
 def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None, color="k"):
@@ -172,7 +163,9 @@ def mark_specials(ax, diagram, x, y, scale=1.0, kinds=SPECIAL, changes=True, col
     """Every labelled special point of `kinds` on the branches of an orbit
     diagram (folds S, pitchforks P, torus points TR), and with `changes` the
     stability changes AUTO labelled with nothing (at the middle of the step
-    across which the stability flips)."""
+    across which the stability flips): a fold S where the branch turns back
+    in x there (AUTO labels a fold only when its test function changes sign
+    within one step), the open circle otherwise."""
     for kind in kinds:
         mark_points(ax, diagram, kind, x, y, scale, color=color)
     if changes:
@@ -183,7 +176,15 @@ def mark_specials(ax, diagram, x, y, scale=1.0, kinds=SPECIAL, changes=True, col
                 # next to the Hopf point a branch starts from, the flag flips
                 # spuriously (multipliers at 1; as AUTO's fold test there)
                 if abs(at - xs[0]) > START_ZONE * max(abs(xs[0]), 1e-12):
-                    mark(ax, at, 0.5 * (ys[i] + ys[i + 1]), "change", color=color)
+                    kind = "LP" if turns_back(xs, i) else "change"
+                    mark(ax, at, 0.5 * (ys[i] + ys[i + 1]), kind, color=color)
+
+
+def turns_back(xs, i, near=2):
+    """Whether the branch's x reverses its direction within `near` steps of
+    the step from i to i+1."""
+    steps = numpy.sign(numpy.diff(numpy.asarray(xs)[max(i - near, 0):i + near + 2]))
+    return bool((steps > 0).any() and (steps < 0).any())
 
 
 def stability_handles(color=None):

@@ -2,16 +2,20 @@
 
 register(ax, x, y, "H1") remembers a name at a data point; place(fig)
 (draw.save calls it) draws every name of every axes next to its point,
-where it overlaps no name already placed, no marked point and as few
-curves as possible, inside the axes.  Points of one name closer than
-MERGE pixels are named once (four torus points within 10 m/s: one "TR").
+where it overlaps no name already placed (nor touches one: PAD), no marked
+point and as few curves as possible, inside the axes.  Points of one name
+closer than MERGE pixels are one cluster: one marker, named with their
+count (four torus points within 10 m/s: one triangle, "TR ×4").
 Positions are found in display space after the figure is laid out, so they
 hold for the saved file (bbox_inches="tight" only crops)."""
 import numpy
 
+from mlgshimmy.shared.draw import palette
+
 FONTSIZE = 8
 GAP = 3.0       # points between a marker and its name
-MERGE = 14.0    # pixels: names of one kind closer than this are drawn once
+MERGE = 14.0    # pixels: points of one name closer than this are drawn once
+PAD = 0.25      # of a name's height: the space kept between two names
 LEADER_FROM = 4  # candidates from this one on are far enough to need a leader line
 # offsets of the name's lower-left corner from the point, in units of the
 # name's (width, height) plus GAP; first wins when nothing is in the way
@@ -20,9 +24,11 @@ CANDIDATES = ((0, 0), (0, -1), (-1, 0), (-1, -1), (-0.5, 0.3), (-0.5, -1.3),
               (0.6, 1.6), (-1.6, 1.6), (0.6, -2.6), (-1.6, -2.6))
 
 
-def register(ax, x, y, name):
+def register(ax, x, y, name, marker=None):
+    """Name the point (x, y) when the figure is placed; marker: its Line2D,
+    hidden if the point joins a cluster of its name."""
     if name:
-        ax.__dict__.setdefault("_mlg_labels", []).append((float(x), float(y), name))
+        ax.__dict__.setdefault("_mlg_labels", []).append((float(x), float(y), name, marker))
 
 
 def _segments(ax):
@@ -62,8 +68,27 @@ def _crossings(segments, box):
     return int(numpy.count_nonzero(keep & (lo <= hi)))
 
 
-def _overlaps(a, b):
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+def _overlaps(a, b, pad=0.0):
+    return a[0] < b[2] + pad and b[0] < a[2] + pad and a[1] < b[3] + pad and b[1] < a[3] + pad
+
+
+def clusters(points, markers):
+    """[[index of its first point, count]] of the clusters: points of one
+    name chained closer than MERGE pixels (display positions `markers`).
+    The markers of all but a cluster's first point are hidden."""
+    owner, out = [], []
+    for k, ((_, _, name, marker), at) in enumerate(zip(points, markers)):
+        near = next((owner[j] for j in range(k) if points[j][2] == name
+                     and numpy.hypot(*(at - markers[j])) < MERGE), None)
+        if near is None:
+            owner.append(len(out))
+            out.append([k, 1])
+            continue
+        owner.append(near)
+        out[near][1] += 1
+        if marker is not None:
+            marker.set_visible(False)
+    return out
 
 
 def place_axes(ax, renderer):
@@ -73,15 +98,14 @@ def place_axes(ax, renderer):
     scale = ax.figure.dpi / 72.0
     frame = ax.get_window_extent(renderer).extents
     segments = _segments(ax)
-    markers = [ax.transData.transform((x, y)) for x, y, _ in points]
-    placed, named = [], []
-    for (x, y, name), at in zip(points, markers):
-        if not (frame[0] - 1 <= at[0] <= frame[2] + 1 and frame[1] - 1 <= at[1] <= frame[3] + 1):
-            continue   # outside the axes' limits
-        close = any(n == name and numpy.hypot(*(at - q)) < MERGE for q, n in named)
-        named.append((at, name))   # a chain of close points is named once
-        if close:
-            continue
+    markers = [ax.transData.transform((x, y)) for x, y, _, _ in points]
+    inside = [k for k, at in enumerate(markers)
+              if frame[0] - 1 <= at[0] <= frame[2] + 1 and frame[1] - 1 <= at[1] <= frame[3] + 1]
+    points, markers = [points[k] for k in inside], [markers[k] for k in inside]
+    placed = []
+    for first, count in clusters(points, markers):
+        (x, y, name, _), at = points[first], markers[first]
+        name = name if count == 1 else f"{name} ×{count}"
         text = ax.annotate(name, (x, y), xytext=(0, 0), textcoords="offset points",
                            fontsize=FONTSIZE, ha="left", va="bottom", zorder=6,
                            annotation_clip=False)
@@ -96,10 +120,11 @@ def place_axes(ax, renderer):
             score = 0.0
             if rect[0] < frame[0] or rect[2] > frame[2] or rect[1] < frame[1] or rect[3] > frame[3]:
                 score += 100
-            score += 20 * sum(_overlaps(rect, other) for other in placed)
+            score += 20 * sum(_overlaps(rect, other, PAD * h) for other in placed)
             score += 10 * sum(_overlaps(rect, (m[0] - 3 * scale, m[1] - 3 * scale,
                                                m[0] + 3 * scale, m[1] + 3 * scale))
-                              for m in markers)
+                              for m, p in zip(markers, points)
+                              if p[3] is None or p[3].get_visible())
             score += _crossings(segments, rect)
             if best is None or score < best[0]:
                 best = (score, dx, dy, rect, k)
@@ -112,7 +137,7 @@ def place_axes(ax, renderer):
                     min(max(at[1], rect[1]), rect[3]) - at[1])
             ax.annotate("", (x, y), xytext=(near[0] / scale, near[1] / scale),
                         textcoords="offset points", annotation_clip=False,
-                        arrowprops={"arrowstyle": "-", "lw": 0.5, "color": "0.35",
+                        arrowprops={"arrowstyle": "-", "lw": 0.5, "color": palette.NEUTRAL,
                                     "shrinkA": 0, "shrinkB": 2.5})
         placed.append(rect)
 
