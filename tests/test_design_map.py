@@ -14,9 +14,11 @@ import pathlib
 import subprocess
 import sys
 
+import matplotlib
 import pytest
 
 from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared.draw import palette
 from mlgshimmy.studies import design_map
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -207,12 +209,14 @@ def test_summary_writes_the_table_from_the_grids_records(tmp_path, monkeypatch):
             "stage switch, V = 10.5 m/s); away from the switch 0.0371 mm (kappa* 0.3714 at "
             "F* = 0.295)") in headlines[1]
     assert (tmp_path / "figures" / "design_map.png").exists()
-    # on every panel a red dashed box at (10, 0): column 1, row 0; and its legend entry
+    # on every panel a dashed box (palette.LIFTOFF) at (10, 0): column 1, row 0; and its
+    # legend entry
     fig = saved["fig"]
     panels = [ax for ax in fig.axes if ax.get_visible() and ax.get_title()]
     assert len(panels) == len(design_map.QUANTITIES)
     for ax in panels:
-        boxes = [p for p in ax.patches if p.get_edgecolor()[:3] == (1.0, 0.0, 0.0)]
+        boxes = [p for p in ax.patches if p.get_edgecolor()[:3]
+                 == pytest.approx(matplotlib.colors.to_rgb(palette.LIFTOFF))]
         assert len(boxes) == 1 and boxes[0].get_xy() == pytest.approx((1 - 0.44, -0.44))
     labels = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "your gear rho = 10, mu = 3 deg (nearest grid point 10, 0)" in labels

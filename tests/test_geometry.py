@@ -207,7 +207,7 @@ def test_a_figure_at_a_geometry_says_so(monkeypatch):
     fig.suptitle("Fig. 10")
     gear.stamp(fig)
     assert fig._suptitle.get_text() == ("Fig. 10 [side stay rho = 10 deg, mu = -20 deg, "
-                                        "eom_terms = 2]")
+                                        "the complete equations of motion]")
     bare, _ = plt.subplots()
     gear.stamp(bare)
     assert "rho = 10 deg" in bare._suptitle.get_text()

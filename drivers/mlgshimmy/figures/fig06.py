@@ -38,13 +38,14 @@ def main():
             ax.plot(y * 1e3, profile(yfp, ratio * yfp, y) / 1e3, lw=1.3, color=colour,
                     label=rf"$\epsilon$ = {ratio:g} $y_{{fp}}$")
     for ax in (full, zoom):
-        ax.plot(y * 1e3, profile(yfp, 0.0, y) / 1e3, "k--", lw=1.2, label="eq. (14)")
+        ax.plot(y * 1e3, profile(yfp, 0.0, y) / 1e3, ls="--", color=draw.NEUTRAL, lw=1.2,
+                label="eq. (14)")
         ax.set_xlabel(r"$y_{tlk}$ [mm]")
         ax.set_ylabel(r"$M_{k\psi} / r_{tlk}$ [kN]")
     eps = 0.1 * yfp
     zoom.set_xlim(0.5, 1.6)
     zoom.set_ylim(-4.5, 25)
-    zoom.axvspan((yfp - eps) * 1e3, (yfp + eps) * 1e3, color="0.85", zorder=0)
+    zoom.axvspan((yfp - eps) * 1e3, (yfp + eps) * 1e3, color=draw.palette.BAND, zorder=0)
     # below the curves (all >= 0 here), on the shaded band it names
     zoom.annotate(r"$y_{fp} \pm \epsilon$ ($\epsilon$ = 0.1 $y_{fp}$)", (1.0, -3.2),
                   ha="center", va="center", fontsize=8)

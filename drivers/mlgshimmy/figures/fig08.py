@@ -2,7 +2,7 @@
 straight-rolling equilibrium at V = 300 m/s, F* = 0.2, zero freeplay.
 
 Runs build/bin/mlg_simulate for 15 s from the equilibrium with psi perturbed
-by 1e-3 rad, and plots psi, delta, beta (rad) and eta (m) against t, each with
+by 1e-3 rad, and plots psi, delta, beta (deg) and eta (mm) against t, each with
 a zoom of the last second on the right.  Writes build/fig08/fig08.csv,
 build/fig08/summary.txt (the simulator's summary: solver statistics and the
 settled amplitudes over the last second) and build/figures/fig08.{png,pdf}.
@@ -41,8 +41,9 @@ FIG_DIR = paths.figures_dir()
 
 V, FSTAR, T_END, DT_OUT, PSI0 = 300.0, 0.2, 15.0, 1e-3, 1e-3
 
-ROWS = [("psi", r"$\psi$ [rad]"), ("delta", r"$\delta$ [rad]"),
-        ("beta", r"$\beta$ [rad]"), ("eta", r"$\eta$ [m]")]
+# (state, label, factor): angles in degrees, as every figure draws them
+ROWS = [("psi", r"$\psi$ [deg]", draw.DEG), ("delta", r"$\delta$ [deg]", draw.DEG),
+        ("beta", r"$\beta$ [deg]", draw.DEG), ("eta", r"$\eta$ [mm]", 1e3)]
 
 
 def simulate(csv_path):
@@ -60,22 +61,18 @@ def plot(data, path_stem):
     zoom = t >= T_END - 1.0
     fig, axes = plt.subplots(len(ROWS), 2, figsize=(10, 8.5), sharex="col",
                              gridspec_kw={"width_ratios": [3, 1]})
-    for (name, label), (full, last) in zip(ROWS, axes):
-        full.plot(t, data[name], lw=0.4, color="tab:blue")
-        last.plot(t[zoom], data[name][zoom], lw=0.8, color="tab:blue")
+    for (name, label, factor), (full, last) in zip(ROWS, axes):
+        full.plot(t, factor * data[name], lw=0.4, color=draw.STABLE)
+        last.plot(t[zoom], factor * data[name][zoom], lw=0.8, color=draw.STABLE)
         full.set_ylabel(label)
-        for ax in (full, last):
-            ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 3), useOffset=False)
-            ax.grid(alpha=0.3)
     axes[-1, 0].set_xlabel("t [s]")
     axes[-1, 1].set_xlabel("t [s] (last second)")
     axes[-1, 1].set_xlim(T_END - 1.0, T_END)
-    draw.figure_title(fig, f"Fig. 8: V = {V:g} m/s, F* = {FSTAR:g}, y_fp = 0 "
-                           f"(psi perturbed by {PSI0:g} rad at t = 0)" + gear.suffix())
+    draw.figure_title(fig, rf"Fig. 8: V = {V:g} m/s, $F^*$ = {FSTAR:g}, $y_{{fp}}$ = 0 "
+                           rf"($\psi$ perturbed by {draw.sci(PSI0, 1)} rad "
+                           "at t = 0)" + gear.suffix())
     fig.tight_layout()
-    for ext in ("png", "pdf"):
-        fig.savefig(f"{path_stem}.{ext}", dpi=150)
-    plt.close(fig)
+    draw.save(fig, os.path.basename(path_stem))
 
 
 def main(redraw):
@@ -103,8 +100,8 @@ def main(redraw):
     print("fig08: settled oscillation over the last second "
           "(amplitude = half peak-to-peak):")
     print("\n".join("  " + line for line in lines))
-    print(f"fig08: wrote {FIG_DIR}/fig08.png, fig08.pdf"
-          + ("" if redraw else f" and {OUT_DIR}/summary.txt"))
+    if not redraw:
+        print(f"fig08: wrote {os.path.relpath(summary_path, paths.ROOT)}")
 
 
 if __name__ == "__main__":

@@ -4,6 +4,7 @@ its codimension-two points (shared.codim2) and the criticality of its
 ends checked (shared.naming)."""
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
 
 from mlgshimmy.shared import codim2
 from mlgshimmy.shared import continuation as ct
@@ -107,8 +108,7 @@ def plot(result):
     ax.text(495, 2.2, "H", color=draw.HOPF_CURVE["color"])
     for point in (p for t in result["tests"] for p in t["points"]):
         draw.mark(ax, point["a"], point["b"], point["type"])
-    ax.axvline(80.0, color="k", ls="--", lw=1)
-    ax.text(40, 3.3, "operating\nregion", ha="center", fontsize=8)
+    ax.axvspan(0, 80.0, color=draw.palette.SHADE, zorder=0)
     ax.text(450, 0.4, "torsional shimmy", ha="center", fontsize=8)
     ax.text(230, 1.6, "stable straight rolling", ha="center", fontsize=8)
     ax.set_xlim(0, span[0])
@@ -117,7 +117,7 @@ def plot(result):
     ax.set_ylabel("$F_z^*$")
     handles = [Line2D([], [], color=draw.HOPF_CURVE["color"], lw=1.6,
                       label="H: Hopf curve of straight rolling"),
-               Line2D([], [], color="k", ls="--", lw=1, label="operating region, V ≤ 80 m/s")]
+               Patch(color=draw.palette.SHADE, label="operating region, V ≤ 80 m/s")]
     draw.legend(ax, extra=handles, stability=False, loc="upper right")
     draw.figure_title(ax, "Fig. 9: Hopf curve, zero freeplay")
     draw.save(fig, "fig09")

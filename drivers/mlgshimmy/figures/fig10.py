@@ -154,7 +154,7 @@ def plot(result):
     closing = []
     for ax, column, scale in ((amp, "psi_amp", DEG), (zoom, "psi_amp", DEG), (freq, "freq", 1.0)):
         for orbits in zero_orbits:
-            draw.plot_branch(ax, orbits, "V", column, scale=scale, color="0.55")
+            draw.plot_branch(ax, orbits, "V", column, scale=scale, color=draw.palette.GUIDE)
         if column == "psi_amp":
             draw.plot_branch(ax, jobs.loaded(freeplay["eq"]), "V", column, scale=DEG)
         names = iter(f"S{k + 1}" for k in range(100))
@@ -183,7 +183,8 @@ def plot(result):
     freq.set_xlim(0, V_MAX)
     freq.set_ylabel("frequency [Hz]")
     freq.set_title("(b) frequency")
-    extra = [Line2D([], [], color="0.55", label="zero freeplay (stable solid, unstable dashed)")]
+    extra = [Line2D([], [], color=draw.palette.GUIDE,
+                    label="zero freeplay (stable solid, unstable dashed)")]
     if closing:
         extra.append(Line2D([], [], color=draw.STABLE, ls=":", lw=1.2,
                             label="to its Hopf point (the run stops 0.01 m/s before it)"))

@@ -199,8 +199,8 @@ def plot(result):
     fig, (amp, freq) = plt.subplots(2, 1, figsize=(8, 8.4), sharex=True)
     loads, boundary = (numpy.asarray(a) for a in result["boundary"])
     boundary = boundary * DEG
-    amp.plot(loads, boundary, color="0.7", lw=3, zorder=1)
-    amp.plot(loads, -boundary, color="0.7", lw=3, zorder=1)
+    amp.plot(loads, boundary, color=draw.palette.GUIDE, lw=3, zorder=1)
+    amp.plot(loads, -boundary, color=draw.palette.GUIDE, lw=3, zorder=1)
     draw.plot_branch(amp, eq, "Fstar", "psi_amp", scale=DEG)
     shown = [boundary, -boundary]
     # with side-stay angles straight rolling is yawed too: drawn as a stationary state
@@ -245,22 +245,23 @@ def plot(result):
     amp.set_title("(a) torsional amplitude")
     extra = [Line2D([], [], color=draw.STABLE, ls=YAW[True], label="stationary yaw, stable"),
              Line2D([], [], color=draw.UNSTABLE, ls=YAW[False], label="stationary yaw, unstable"),
-             Line2D([], [], color="0.7", lw=3, label=r"freeplay boundary $\pm\psi_{fp}$")]
+             Line2D([], [], color=draw.palette.GUIDE, lw=3,
+                    label=r"freeplay boundary $\pm\psi_{fp}$")]
     if doubled:
         extra.append(Line2D([], [], color=DOUBLED, label="orbits of twice the period, from PD"))
     freq.set_ylabel("frequency [Hz]")
     freq.set_xlabel(r"$F_z^*$")
     freq.set_title("(b) frequency")
     freq.set_xlim(0, F_MAX)
-    draw.figure_title(fig, rf"Fig. 12, strut variant {result['variant']}: V = 50 m/s, "
-                           r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm")
+    draw.figure_title(fig, r"Fig. 12: V = 50 m/s, $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm; "
+                           + draw.STRUT_ORDER[result["variant"]])
     fig.tight_layout()
     draw.legend(fig, extra=extra)   # below the panels
     draw.save(fig, result["name"])
 
 
 YAW = {True: "-.", False: ":"}   # line styles of the stationary yawed states
-DOUBLED = "#009988"               # the period-doubled orbits: neither stability colour
+DOUBLED = draw.palette.DOUBLED       # the period-doubled orbits: neither stability colour
 
 
 if __name__ == "__main__":

@@ -106,12 +106,12 @@ def plot(result):
         y = d["yfp"]
         draw_magnitude.diagram_in_V(axes[0][0], d, colour, f"$y_{{fp}}$ = {y:g} mm")
         ys, force = freeplay.profile(y, "ratio", k_tlk, span=1.0 / y * 3.0)
-        axes[0][1].plot(ys, force, color=colour, label=f"$y_{{fp}}$ = {y:g} mm")
+        axes[0][1].plot(ys, force / 1e3, color=colour, label=f"$y_{{fp}}$ = {y:g} mm")
     axes[0][0].set(xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]", xlim=(0, mg.V_MAX),
                    title="(a) diagrams in V")
     draw.legend(axes[0][0], extra=axes[0][0].get_legend_handles_labels()[0], color=draw.NEUTRAL,
                 loc="upper left", ncol=2)
-    axes[0][1].set(xlabel="$y_{tlk}$ [mm]", ylabel=r"$M_{k\psi}/r_{tlk}$ [N]", xlim=(-3, 3),
+    axes[0][1].set(xlabel="$y_{tlk}$ [mm]", ylabel=r"$M_{k\psi}/r_{tlk}$ [kN]", xlim=(-3, 3),
                    title=r"(b) stiffness profiles, $\epsilon$ = 0.1 $y_{fp}$")
     axes[0][1].legend(fontsize=7)
     draw_magnitude.orbits_in_yfp(axes[1][0], axes[1][1], result["orbits"])

@@ -96,7 +96,7 @@ def plot(result):
                title=f"({'abcdef'[n]}) $y_{{fp}}$ = {y:g} mm")
         inset = fig.add_subplot(grid[row, 3 * col + 2])
         ys, force = freeplay.profile(y, "fixed", k_tlk, span=max(3.0, 0.6 / y))
-        inset.plot(ys, force / 1e3, color="k", lw=1)
+        inset.plot(ys, force / 1e3, color=draw.NEUTRAL, lw=1)
         inset.set(xlabel="$y_{tlk}$ [mm]", ylabel=r"$M_{k\psi}/r_{tlk}$ [kN]")
     ax_amp = fig.add_subplot(grid[3, 0:3])
     ax_freq = fig.add_subplot(grid[3, 3:6])

@@ -48,7 +48,8 @@ def main():
         for y, colour in zip(freeplays, draw.sequence(len(freeplays))):
             ax.plot(*rescaled(y, scaling, k_tlk), lw=1.2, color=colour,
                     label=f"$y_{{fp}}$ = {y:g} mm")
-        ax.plot([-SPAN, -1, 1, SPAN], [1 - SPAN, 0, 0, SPAN - 1], "k--", lw=0.8,
+        ax.plot([-SPAN, -1, 1, SPAN], [1 - SPAN, 0, 0, SPAN - 1], color=draw.NEUTRAL, ls="--",
+                lw=0.8,
                 label=r"$\epsilon$ = 0 (eq. 14)")
         ax.set(title=title, xlabel=r"$x^* = y_{tlk}/y_{fp}$", xlim=(-SPAN, SPAN))
         ax.legend(fontsize=7)

@@ -42,7 +42,7 @@ FAMILY = {
 HIGHLIGHT = {"ratio": (0.5, 1.0, 2.0), "fixed": freeplay.FIG14_FREEPLAYS}
 DEG = numpy.degrees(1.0)
 Y_MAX = 1.0   # y_fp range [mm] of panel (b)
-SLICE = "0.15"   # colour of the highlighted slices
+SLICE = draw.NEUTRAL   # colour of the highlighted slices
 HOPF, FOLD = draw.HOPF_CURVE, draw.FOLD_CURVE
 
 
@@ -169,7 +169,7 @@ def orbit_surface(ax, diagrams, hopf_curves):
                         ls="-" if ok else "--", lw=1.3, zorder=3)
     for d in diagrams:
         for V, amp in d["folds"]:
-            ax.scatter([V], [d["yfp"]], [amp * DEG], color="k", s=5, zorder=4)
+            ax.scatter([V], [d["yfp"]], [amp * DEG], color=draw.NEUTRAL, s=5, zorder=4)
 
 
 def plot(result):
@@ -198,10 +198,12 @@ def plot(result):
             for lo, hi, name in ((0.0, window["a"], "R1"), (window["b"], window["c"], "R2")):
                 ax.add_collection3d(Poly3DCollection(
                     [[(0, lo, 0), (mg.V_LIMIT, lo, 0), (mg.V_LIMIT, hi, 0), (0, hi, 0)]],
-                    facecolor="tab:cyan", alpha=0.5, zorder=0))
+                    facecolor=draw.palette.ALLOWED, alpha=0.5, zorder=0))
                 ax.text(60, 0.5 * (lo + hi), 0, name, fontsize=8, zorder=5)
             ax.set_title(r"(b) $\epsilon$ = 0.1 mm (R1, R2: stable up to 120 m/s)", y=0.95)
         ax.set(xlabel="V [m/s]", ylabel="$y_{fp}$ [mm]", zlabel=r"$\psi$ amplitude [deg]")
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.labelpad = 18      # clear of the tick labels, which the view tilts
         ax.view_init(elev=22, azim=-55)
         ax.set_box_aspect(None, zoom=0.88)   # room for the axis labels inside the canvas
     handles = [Patch(color=draw.STABLE, label="stable orbits"),

@@ -47,13 +47,14 @@ def plot(result):
             ax.plot(curve["V"], numpy.asarray(curve["yfp"]) / eps, label=label, **style)
             label = None
     for lo, hi, name in ((0.0, window["a"], "R1"), (window["b"], window["c"], "R2")):
-        ax.fill_between([0, mg.V_LIMIT], lo / eps, hi / eps, color="tab:cyan", alpha=0.35)
+        ax.fill_between([0, mg.V_LIMIT], lo / eps, hi / eps, color=draw.palette.ALLOWED,
+                        alpha=0.35)
         ax.text(60, 0.5 * (lo + hi) / eps, name, ha="center", va="center")
     for name in "abc":
         V, y = window[f"V_{name}"], window[name] / eps
-        ax.plot(V, y, "ko", ms=4)
+        ax.plot(V, y, "o", color=draw.NEUTRAL, ms=4)
         ax.annotate(name, (V, y), textcoords="offset points", xytext=(4, 4))
-    ax.axvline(mg.V_LIMIT, color="0.4", ls=":", lw=1)
+    ax.axvline(mg.V_LIMIT, color=draw.palette.GUIDE, ls=":", lw=1)
     ax.set(xlim=(0, mg.V_MAX), ylim=(0, 6), xlabel="V [m/s]", ylabel=r"$y_{fp}/\epsilon$")
     draw.figure_title(ax, r"Fig. 17: bifurcation curves in (V, $y_{fp}/\epsilon$), $F^*$ = 1, "
                           r"$\epsilon$ = 0.1 mm")

@@ -48,7 +48,11 @@ FSTARS = mg.ENVELOPE_LOADS
 MAP_KAPPA = numpy.geomspace(0.05, 8.0, 50)
 MAP_SPEEDS = numpy.linspace(mg.V_MIN, mg.V_LIMIT, 30)
 REGIONS = ("R1", "R2", "gentle oscillations", "high-frequency shimmy", "static yaw")
-COLOURS = ("white", "tab:cyan", "khaki", "salmon", "0.7")
+COLOURS = (draw.palette.ALLOWED, draw.palette.ALLOWED, draw.palette.ATTRACTOR["low"],
+           draw.palette.ATTRACTOR["high"], draw.palette.ATTRACTOR["yaw"])
+# (curve, colour, line style) of the threshold curves a, b, c and the pitchfork
+CURVES = (("a", draw.STABLE, "-"), ("b", draw.STABLE, "--"), ("c", draw.palette.HOPF, "-"),
+          ("p", draw.palette.PITCHFORK, ":"))
 
 
 def region(Fstar, kappa, b, **model):
@@ -176,23 +180,25 @@ def plot(result):
     ax.pcolormesh(RASTER_KAPPA, raster_F, painted, cmap=ListedColormap(COLOURS), vmin=-0.5,
                   vmax=len(REGIONS) - 0.5, alpha=0.8, shading="nearest", rasterized=True)
     Fs = [p["Fstar"] for p in points]
-    for name, style in (("a", "b-"), ("b", "b--"), ("c", "g-"), ("p", "k:")):
+    for name, colour, line in CURVES:
         ys = numpy.array([numpy.nan if p[name] is None else p[name] / mg.EPSILON
                           for p in points])
         if numpy.isfinite(ys).any():   # a curve with no point (no pitchfork at a geometry)
-            ax.plot(ys, Fs, style, lw=1.6, label=name if name != "p" else "pitchfork")
+            ax.plot(ys, Fs, color=colour, ls=line, lw=1.6,
+                    label=name if name != "p" else "pitchfork")
     for run in auto:
-        ax.plot(numpy.asarray(run["yfp"]) / mg.EPSILON, run["Fstar"], "w:", lw=1)
+        ax.plot(numpy.asarray(run["yfp"]) / mg.EPSILON, run["Fstar"], color=draw.palette.ON_FILL,
+                ls=":", lw=1)
     ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
                                FSTARS[-1] - FSTARS[0], fill=False, hatch="//", lw=1.2))
     handles = ax.get_legend_handles_labels()[0] + [
-        Patch(facecolor=colour, edgecolor="0.4", alpha=0.8, label=name)
-        for colour, name in zip(COLOURS, REGIONS)]   # edged: R1 is white
+        Patch(facecolor=colour, edgecolor=draw.palette.GUIDE, alpha=0.8, label=name)
+        for colour, name in zip(COLOURS[1:], ("R1, R2: straight rolling stable",) + REGIONS[2:])]
     ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0], FSTARS[-1]),
            xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$")
-    draw.figure_title(ax, rf"Fig. 18, strut variant {result['variant']}: straight rolling for "
-                          rf"V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm (hatched: $y_{{fp}}/\epsilon < "
-                          rf"\kappa^*$ = {kappa:.3f})")
+    draw.figure_title(ax, rf"Fig. 18: straight rolling for V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm"
+                          "\n" + draw.STRUT_ORDER[result["variant"]]
+                          + rf"; hatched: $y_{{fp}}/\epsilon < \kappa^*$ = {kappa:.3f}")
     ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     draw.save(fig, result["name"])
 

@@ -52,16 +52,17 @@ def main():
     fig, ax = plt.subplots(figsize=(6, 4.5))
     both = (rf"$y_{{fp}}/\epsilon < {kappa_printed:.3f}$" if kappa_printed > 0
             else r"none ($\kappa^*$ = 0: unstable without freeplay)")
-    ax.fill_between(x, printed, x, color="tab:cyan", alpha=0.4, label=f"allowed by both: {both}")
-    ax.fill_between(x, limit, printed, color="khaki", alpha=0.6,
-                    label=rf"allowed by variant 0 only: ${kappa_printed:.3f} \leq "
+    ax.fill_between(x, printed, x, color=draw.palette.ALLOWED, alpha=0.4,
+                    label=f"allowed by both: {both}")
+    ax.fill_between(x, limit, printed, color=draw.palette.ALLOWED_PART, alpha=0.5,
+                    label=rf"allowed in the monotone order only: ${kappa_printed:.3f} \leq "
                           rf"y_{{fp}}/\epsilon < {kappa:.3f}$")
-    ax.plot(x, limit, color="tab:blue", lw=1.4,
-            label=rf"$\kappa^*$ = {kappa:.3f} (strut variant 0, default)")
-    ax.plot(x, printed, color="tab:orange", lw=1.4,
-            label=rf"$\kappa^*$ = {kappa_printed:.3f} (strut variant 1, as printed)")
-    ax.plot(x, x, "k--", lw=1, label=r"$\epsilon \to \infty$")
-    ax.plot(x, rescaled(10.0, x), color="tab:red", lw=1,
+    ax.plot(x, limit, color=draw.STABLE, lw=1.4,
+            label=rf"$\kappa^*$ = {kappa:.3f} ({draw.STRUT_ORDER[0]})")
+    ax.plot(x, printed, color=draw.UNSTABLE, lw=1.4,
+            label=rf"$\kappa^*$ = {kappa_printed:.3f} ({draw.STRUT_ORDER[1]})")
+    ax.plot(x, x, color=draw.NEUTRAL, ls="--", lw=1, label=r"$\epsilon \to \infty$")
+    ax.plot(x, rescaled(10.0, x), color=draw.palette.LIFTOFF, lw=1,
             label=r"$y_{fp}/\epsilon$ = 10 (section IV.B)")
     ax.set(xlim=(-SPAN, SPAN), xlabel=r"$x^* = y_{tlk}/y_{fp}$",
            ylabel=r"$y^* = M_{k\psi}/(r_{tlk}\,k_{tlk}\,y_{fp})$")

@@ -28,6 +28,10 @@ from mlgshimmy.shared import number_text, overlay
 ENV_RHO, ENV_MU, ENV_EOM = "MLG_RHO_DEG", "MLG_MU_DEG", "MLG_EOM"
 MAKE_VARIABLE = {ENV_RHO: "RHO", ENV_MU: "MU", ENV_EOM: "EOM"}
 EOM_LEVELS = (0, 1, 2)
+# each level in a reader's words, for titles and tables
+EOM_WORDS = {0: "the equations of motion as printed",
+             1: "the printed equations with the side-stay corrections",
+             2: "the complete equations of motion"}
 EOM_WITH_ANGLES = 2
 
 
@@ -133,7 +137,7 @@ class Geometry:
         if self.baseline:
             return ""
         return (f"side stay rho = {self.rho_deg:g} deg, mu = {self.mu_deg:g} deg, "
-                f"eom_terms = {self.eom_terms}")
+                f"{EOM_WORDS[self.eom_terms]}")
 
     def suffix(self) -> str:
         """What a title gets appended ("" at the baseline)."""

@@ -215,24 +215,22 @@ def lines(groups):
 
 
 def plot(groups):
-    fig, axes = plt.subplots(1, 4, figsize=(13, 3.8))
-    colours = {0: "tab:blue", 1: "tab:red"}
-    for ax, (group, by_variant) in zip(axes, lines(groups).items()):
-        twin = ax.twinx()
+    # kappa* above, the strut compression at its minimum below: one quantity an axis
+    fig, axes = plt.subplots(2, 4, figsize=(13, 6.2), sharex="col")
+    colours = {0: draw.STABLE, 1: draw.UNSTABLE}
+    for top, low, (group, by_variant) in zip(axes[0], axes[1], lines(groups).items()):
         for v, pts in by_variant.items():
             xs = [x / (1e3 if group == "tyre" else 1.0) for x, _ in pts]
-            ax.plot(xs, [p["kappa"] for _, p in pts], "o-", color=colours[v],
-                    label=f"variant {v}")
-            twin.plot(xs, [p["eta"] for _, p in pts], "s:", color=colours[v], ms=3, alpha=0.6)
-        ax.set(xlabel=AXES[group], ylim=(0, 0.45))
-        twin.set(ylim=(0, 0.45))
+            top.plot(xs, [p["kappa"] for _, p in pts], "o-", color=colours[v],
+                     label=draw.STRUT_ORDER[v])
+            low.plot(xs, [p["eta"] for _, p in pts], "s-", color=colours[v], ms=3)
+        top.set(ylim=(0, 0.45))
+        low.set(xlabel=AXES[group], ylim=(0, 0.45))
         if group == "strut":
-            ax.set(xticks=VARIANTS, xlim=(-0.5, 1.5))
-        if ax is axes[0]:
-            ax.set_ylabel(r"$\kappa^*$ (circles, solid)")
-            ax.legend(fontsize=7, loc="upper right")
-        if ax is axes[-1]:
-            twin.set_ylabel(r"$\eta^*$ at the minimum [m] (squares, dotted)")
+            low.set(xticks=VARIANTS, xlim=(-0.5, 1.5))
+    axes[0][0].set_ylabel(r"$\kappa^*$")
+    axes[1][0].set_ylabel(r"$\eta^*$ at the minimum [m]")
+    axes[0][0].legend(fontsize=7, loc="upper right")
     fig.suptitle(r"Allowable freeplay $y_{fp}/\epsilon < \kappa^*$ (eq. 17: $V \leq$ 120 m/s, "
                  r"$F^* \leq$ 2) under each low-load assumption")
     fig.tight_layout()

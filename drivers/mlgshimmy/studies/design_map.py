@@ -417,29 +417,29 @@ def plot(cells, mark=None):
         diverging = key.startswith("ytlk")
         limit = max(numpy.max(numpy.abs(finite)), 1e-12) if finite.size else 1.0
         mesh = ax.imshow(values, origin="lower", aspect="auto",
-                         cmap="RdBu_r" if diverging else "viridis",
+                         cmap=draw.palette.DIVERGING_MAP if diverging
+                         else draw.palette.SEQUENCE_MAP,
                          vmin=-limit if diverging else None, vmax=limit if diverging else None,
                          extent=(-0.5, len(rhos) - 0.5, -0.5, len(mus) - 0.5))
         low, high = (numpy.nanmin(values), numpy.nanmax(values)) if finite.size else (0, 1)
         for i in range(len(mus)):
             for j in range(len(rhos)):
                 v = values[i, j]
-                light = numpy.isfinite(v) and (abs(v) > 0.5 * limit if diverging
-                                               else v < low + 0.5 * (high - low))
+                fill = mesh.cmap(mesh.norm(v)) if numpy.isfinite(v) else "white"
                 missing = "vanished" if key in HOPF_NAMES else "none"
                 ax.text(j, i, missing if not numpy.isfinite(v) else format(v, fmt.lstrip("+")),
-                        ha="center", va="center", fontsize=7, color="w" if light else "k")
+                        ha="center", va="center", fontsize=8, color=draw.palette.text_on(fill))
         for c in cells:
             j, i = rhos.index(c["rho_deg"]), mus.index(c["mu_deg"])
             if key in SWITCH_FLAGGED and c["on_switch"]:
                 ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="//",
-                                       ec="0.6", lw=0))
+                                       ec=draw.palette.GUIDE, lw=0))
             if c is yours:
                 ax.add_patch(Rectangle((j - 0.44, i - 0.44), 0.88, 0.88, fill=False, lw=2.2,
-                                       ec="r", ls="--"))
+                                       ec=draw.palette.LIFTOFF, ls="--"))
         if 0.0 in rhos and 0.0 in mus:     # the paper's geometry
             ax.add_patch(Rectangle((rhos.index(0.0) - 0.5, mus.index(0.0) - 0.5), 1, 1,
-                                   fill=False, lw=2.2, ec="k"))
+                                   fill=False, lw=2.2, ec=draw.NEUTRAL))
         ax.set_xticks(range(len(rhos)), [f"{r:g}" for r in rhos])
         ax.set_yticks(range(len(mus)), [f"{m:g}" for m in mus])
         ax.set_xlabel(r"$\rho$ [deg]")
@@ -449,16 +449,18 @@ def plot(cells, mark=None):
         fig.colorbar(mesh, ax=ax, fraction=0.046, pad=0.03)
     for ax in axes_.flat[len(QUANTITIES):]:
         ax.set_visible(False)
-    legend = [Patch(fill=False, ec="k", lw=2.2, label="the paper's geometry rho = mu = 0"),
-              Patch(fill=False, hatch="//", ec="0.6",
+    legend = [Patch(fill=False, ec=draw.NEUTRAL, lw=2.2,
+                    label="the paper's geometry rho = mu = 0"),
+              Patch(fill=False, hatch="//", ec=draw.palette.GUIDE,
                     label="kappa* set on the oleo's stage switch (read the off-switch value)")]
     if yours is not None:
         at_point = (yours["rho_deg"], yours["mu_deg"]) == tuple(mark)
-        legend.append(Patch(fill=False, ec="r", ls="--", lw=2.2, label=(
+        legend.append(Patch(fill=False, ec=draw.palette.LIFTOFF, ls="--", lw=2.2, label=(
             f"your gear rho = {mark[0]:g}, mu = {mark[1]:g} deg" + ("" if at_point else
             f" (nearest grid point {yours['rho_deg']:g}, {yours['mu_deg']:g})"))))
     fig.legend(handles=legend, loc="lower center", ncol=len(legend), fontsize=9, frameon=False)
-    fig.suptitle("Design map over the side-stay angles (eom_terms = 2, `figures` set; "
+    fig.suptitle(f"Design map over the side-stay angles ({geometry.EOM_WORDS[2]}, our "
+                 "calibrated parameter set; "
                  r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm, $F^*$ = 1 unless stated); "
                  r"allowed $y_{fp}$ = $\kappa^*\epsilon$ at $\epsilon$ = 0.1 mm")
     fig.tight_layout(rect=(0, 0.03, 1, 1))

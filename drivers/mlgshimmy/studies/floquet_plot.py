@@ -65,12 +65,12 @@ def plot(steps, found, title, out):
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for k in range(moduli.shape[1]):
         ax.semilogy(values, moduli[:, k], color=draw.STABLE, lw=0.9, alpha=0.8)
-    ax.axhline(1.0, color="k", lw=0.8, ls=":")
+    ax.axhline(1.0, color=draw.NEUTRAL, lw=0.8, ls=":")
     styles = {"torus": ("TR", "^"), "period doubling": ("PD", "D"), "fold": ("LP", "s")}
     for kind, values in found.items():
         label, marker = styles[kind]
         if values:
-            ax.plot(values, [1.0] * len(values), ls="", marker=marker, mfc="white", mec="k",
+            ax.plot(values, [1.0] * len(values), ls="", marker=marker, mfc=draw.palette.OPEN, mec=draw.NEUTRAL,
                     label=f"{label}: {kind} ({len(values)})")
     ax.set_xlabel("continued parameter")
     ax.set_ylabel("|Floquet multiplier|")

@@ -184,7 +184,7 @@ def plot(name, title, result, reference):
             for orbit in orbits:
                 draw.plot_branch(ax, orbit, "V", "psi_amp", scale=deg, **style)
             for point in hopf:
-                ax.plot(point["V"], 0.0, "o", ms=4, color=style.get("color", "k"))
+                ax.plot(point["V"], 0.0, "o", ms=4, color=style.get("color", draw.NEUTRAL))
         ax.set_title(f"F* = 1, {label}")
         ax.set_xlabel("V [m/s]")
         ax.set_ylabel(r"$\psi$ amplitude [deg] (symlog)")
@@ -193,7 +193,7 @@ def plot(name, title, result, reference):
         ax.set_xlim(0, V_STOP)
     ax = axes[2]
     for data, width, dashes in ((reference, 1.0, "--"), (result, 1.6, "-")):
-        for (label, _, tag, _), color in zip(CASES, ("tab:blue", "tab:orange")):
+        for (label, _, tag, _), color in zip(CASES, draw.palette.CYCLE):
             for curve in data[tag][3]:
                 for branch in curve:
                     ax.plot(branch["V"], branch["Fstar"], dashes, color=color, lw=width,
@@ -205,8 +205,9 @@ def plot(name, title, result, reference):
     ax.set_ylabel("$F_z^*$")
     ax.set_title("Hopf curves (dashed: rho = mu = 0)")
     ax.legend(fontsize=7, loc="upper right")
-    draw.legend(axes[0], extra=[plt.Line2D([], [], color="0.6", lw=1.0, label="rho = mu = 0"),
-                                plt.Line2D([], [], ls="", marker="o", ms=4, color="k",
+    draw.legend(axes[0], extra=[plt.Line2D([], [], color=draw.palette.GUIDE, lw=1.0,
+                                           label="rho = mu = 0"),
+                                plt.Line2D([], [], ls="", marker="o", ms=4, color=draw.NEUTRAL,
                                            label="H: Hopf point")], loc="upper left")
     draw.figure_title(fig, f"{title}; grey / dashed: rho = mu = 0")
     draw.save(fig, name)

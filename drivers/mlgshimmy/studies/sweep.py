@@ -27,6 +27,7 @@ import sys
 import time
 
 from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs import grid as jobgrid
@@ -116,12 +117,14 @@ def summary(points, results, provenance):
         print(f"sweep: rho = {rho:6g} deg, mu = {mu:6g} deg: critical speed "
               + (f"{value:.3f} m/s" if value is not None else f"> {V_STOP:g} m/s"))
     fig, ax = plt.subplots(figsize=(5.5, 4.5))
-    mesh = ax.imshow(speed, origin="lower", cmap="viridis", aspect="auto",
+    mesh = ax.imshow(speed, origin="lower", cmap=draw.palette.SEQUENCE_MAP, aspect="auto",
                      extent=(-0.5, len(rhos) - 0.5, -0.5, len(mus) - 0.5))
     for i in range(len(mus)):
         for j in range(len(rhos)):
             text = "> 600" if numpy.isnan(speed[i, j]) else f"{speed[i, j]:.1f}"
-            ax.text(j, i, text, ha="center", va="center", color="w", fontsize=8)
+            fill = mesh.cmap(mesh.norm(speed[i, j])) if numpy.isfinite(speed[i, j]) else "white"
+            ax.text(j, i, text, ha="center", va="center", color=draw.palette.text_on(fill),
+                    fontsize=8)
     ax.set_xticks(range(len(rhos)), [f"{r:g}" for r in rhos])
     ax.set_yticks(range(len(mus)), [f"{m:g}" for m in mus])
     ax.set_xlabel(r"$\rho$ [deg]")
@@ -129,7 +132,8 @@ def summary(points, results, provenance):
     ax.grid(False)
     fig.colorbar(mesh, label="critical shimmy speed [m/s]")
     ax.set_title("First Hopf point of straight rolling\n"
-                 "zero freeplay, F* = 1, `figures` set, eom_terms = 2")
+                 "zero freeplay, F* = 1, our calibrated parameter set,\n"
+                 + geometry.EOM_WORDS[2])
     draw.save(fig, "sweep_critical_speed")
 
 

@@ -32,7 +32,7 @@ from matplotlib.lines import Line2D
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import paths
-from mlgshimmy.shared.draw import labels, palette
+from mlgshimmy.shared.draw import labels, overlap, palette
 from mlgshimmy.shared.draw.palette import NEUTRAL, STABLE, UNSTABLE, sequence  # noqa: F401
 from mlgshimmy.shared.jobs.atomic import write_atomic
 
@@ -46,22 +46,25 @@ UNSTABLE_STYLE = {"color": UNSTABLE, "linestyle": "--"}
 HOPF_CURVE = {"color": palette.HOPF, "ls": "-.", "lw": 1.3}
 FOLD_CURVE = {"color": palette.FOLD, "ls": "-.", "lw": 1.5}
 DEG = numpy.degrees(1.0)
+# the strut spring's two stage orders (switch strut_variant), in a reader's words
+STRUT_ORDER = {0: "the strut's stages in the monotone order",
+               1: "the strut's stages in the printed order"}
 
 # AUTO type -> how it is drawn and named; "change": a stability change of
 # an orbit branch with no AUTO label (AUTO's TR test fires only when its
 # multiplier count and test function change in one step; docs/reproduction.md)
 POINTS = {
-    "HB": {"name": "H", "marker": "o", "mfc": "k", "ms": 4.0, "legend": "Hopf point"},
-    "LP": {"name": "S", "marker": "s", "mfc": "k", "ms": 4.0,
+    "HB": {"name": "H", "marker": "o", "mfc": palette.MARKER, "ms": 4.0, "legend": "Hopf point"},
+    "LP": {"name": "S", "marker": "s", "mfc": palette.MARKER, "ms": 4.0,
            "legend": "fold of periodic orbits"},
-    "BP": {"name": "P", "marker": "D", "mfc": "k", "ms": 4.0, "legend": "pitchfork"},
-    "LPeq": {"name": "F", "marker": "s", "mfc": "white", "ms": 4.5,
+    "BP": {"name": "P", "marker": "D", "mfc": palette.MARKER, "ms": 4.0, "legend": "pitchfork"},
+    "LPeq": {"name": "F", "marker": "s", "mfc": palette.OPEN, "ms": 4.5,
              "legend": "fold of stationary states"},
-    "TR": {"name": "TR", "marker": "^", "mfc": "white", "ms": 5.0,
+    "TR": {"name": "TR", "marker": "^", "mfc": palette.OPEN, "ms": 5.0,
            "legend": "torus (Neimark-Sacker) point"},
-    "PD": {"name": "PD", "marker": "v", "mfc": "white", "ms": 5.0,
+    "PD": {"name": "PD", "marker": "v", "mfc": palette.OPEN, "ms": 5.0,
            "legend": "period doubling"},
-    "change": {"name": "", "marker": "o", "mfc": "white", "ms": 4.5,
+    "change": {"name": "", "marker": "o", "mfc": palette.OPEN, "ms": 4.5,
                "legend": "stability change AUTO did not label"},
     # codimension-two points on curves of Hopf points (shared.codim2)
     "GH": {"name": "GH", "marker": "*", "mfc": "k", "ms": 8.0,
@@ -126,12 +129,13 @@ def plot_branch(ax, diagram, x, y, scale=1.0, label=None, **style):
         label = None
 
 
-def mark(ax, x, y, kind, name=None, color="k", zorder=5):
+def mark(ax, x, y, kind, name=None, color=palette.MARKER, zorder=5):
     """One special point of type `kind` (a key of POINTS) at (x, y), named
     `name` (default the kind's name; "" for none) when the figure is saved."""
     point = POINTS[kind]
     line, = ax.plot([x], [y], linestyle="", marker=point["marker"], ms=point["ms"],
-                    mfc=point["mfc"] if color == "k" or point["mfc"] == "white" else color,
+                    mfc=(point["mfc"] if color == palette.MARKER or point["mfc"] == palette.OPEN
+                         else color),
                     mec=color, mew=0.9, zorder=zorder)
     kinds = ax.__dict__.setdefault("_mlg_kinds", [])
     if kind not in kinds:
@@ -139,7 +143,7 @@ def mark(ax, x, y, kind, name=None, color="k", zorder=5):
     labels.register(ax, x, y, point["name"] if name is None else name, line)
 
 
-def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None, color="k"):
+def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None, color=palette.MARKER):
     """Mark and name the labelled points of one AUTO type (e.g. 'HB', 'LP')
     on every branch of a diagram (named `text`, default POINTS' name)."""
     for branch in diagram:
@@ -159,7 +163,7 @@ def stability_changes(branch, near=2):
             and all(abs(i - j) > near and abs(i + 1 - j) > near for j in labelled)]
 
 
-def mark_specials(ax, diagram, x, y, scale=1.0, kinds=SPECIAL, changes=True, color="k"):
+def mark_specials(ax, diagram, x, y, scale=1.0, kinds=SPECIAL, changes=True, color=palette.MARKER):
     """Every labelled special point of `kinds` on the branches of an orbit
     diagram (folds S, pitchforks P, torus points TR), and with `changes` the
     stability changes AUTO labelled with nothing (at the middle of the step
@@ -200,7 +204,7 @@ def point_handles(kinds):
         point = POINTS[kind]
         label = f"{point['name']}: {point['legend']}" if point["name"] else point["legend"]
         out.append(Line2D([], [], linestyle="", marker=point["marker"], ms=point["ms"],
-                          mfc=point["mfc"], mec="k", mew=0.9, label=label))
+                          mfc=point["mfc"], mec=palette.MARKER, mew=0.9, label=label))
     return out
 
 
@@ -287,9 +291,12 @@ def save(fig, name):
     """Name the marked points (labels.place), then write
     $MLG_RUN_ROOT/figures/<name>.png and .pdf (each written beside and
     renamed, so a reader never sees half a file) and close fig.  A figure
-    made for a changed gear says so in its title (gear.stamp)."""
+    made for a changed gear says so in its title (gear.stamp); text that
+    overlaps other text is reported, one line a pair (overlap.overlaps)."""
     gear.stamp(fig)
     labels.place(fig)
+    for a, b in overlap.overlaps(fig):
+        print(f"{name}: overlapping text: {a!r} and {b!r}")
     written = [write_atomic(os.path.join(paths.figures_dir(), f"{name}.{ext}"),
                             lambda out, ext=ext: fig.savefig(out, format=ext, bbox_inches="tight"),
                             mode="wb")

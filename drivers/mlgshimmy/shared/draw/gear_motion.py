@@ -15,13 +15,14 @@ import numpy
 from matplotlib.patches import Polygon, Rectangle
 
 from mlgshimmy.shared import draw
+from mlgshimmy.shared.draw import palette
 
 HALF_TRACK = 0.46        # m: a, the axle's half length (Table 1)
 TYRE_RADIUS = 0.58       # m: r
 TYRE_WIDTH = 0.36        # m: drawn only
 L_DELTA0 = 1.266         # m: the lateral bending lever at eta = 0 (L_delta = L_delta0 - eta)
 L_BETA0 = 2.915          # m: the longitudinal one
-GROUND = "0.55"
+GROUND = palette.GUIDE
 
 
 def _rectangle(centre, along, across, length, width):
@@ -65,18 +66,21 @@ def figure(result: Mapping[str, object], scale: Mapping[str, float],
     front.set(xlim=(-reach, reach), ylim=(-0.1, top + 0.15), aspect="equal",
               title="front view", xlabel="lateral [m]", ylabel="height [m]")
     front.axhline(0.0, color=GROUND, lw=2)
-    plan.plot([0], [0], "o", color=draw.NEUTRAL, ms=9, mfc="white", zorder=4)
-    wheels = [plan.add_patch(Polygon(numpy.zeros((4, 2)), closed=True, fc="0.85", ec="k",
+    plan.plot([0], [0], "o", color=draw.NEUTRAL, ms=9, mfc=palette.OPEN, zorder=4)
+    wheels = [plan.add_patch(Polygon(numpy.zeros((4, 2)), closed=True, fc=palette.BAND,
+                                     ec=draw.NEUTRAL,
                                      lw=1.0)) for _ in "LR"]
     axle_line, = plan.plot([], [], color=draw.STABLE, lw=3)
     strut_plan, = plan.plot([], [], color=draw.STABLE, lw=2, ls=":")
-    patches = [plan.plot([], [], color="#cc3311", lw=3, solid_capstyle="round")[0] for _ in "LR"]
-    leading = [plan.plot([], [], "o", color="#cc3311", ms=4)[0] for _ in "LR"]
+    patches = [plan.plot([], [], color=palette.TYRE, lw=3, solid_capstyle="round")[0]
+               for _ in "LR"]
+    leading = [plan.plot([], [], "o", color=palette.TYRE, ms=4)[0] for _ in "LR"]
     strut_front, = front.plot([], [], color=draw.STABLE, lw=4, solid_capstyle="round")
     axle_front, = front.plot([], [], color=draw.STABLE, lw=3)
-    wheels_front = [front.add_patch(Rectangle((0, 0), TYRE_WIDTH, 2 * TYRE_RADIUS, fc="0.85",
-                                              ec="k", lw=1.0)) for _ in "LR"]
-    contacts_front = [front.plot([], [], "o", color="#cc3311", ms=5)[0] for _ in "LR"]
+    wheels_front = [front.add_patch(Rectangle((0, 0), TYRE_WIDTH, 2 * TYRE_RADIUS,
+                                              fc=palette.BAND, ec=draw.NEUTRAL, lw=1.0))
+                    for _ in "LR"]
+    contacts_front = [front.plot([], [], "o", color=palette.TYRE, ms=5)[0] for _ in "LR"]
 
     yfp_mm = 1e3 * float(result["yfp_m"])
     y_tlk_mm = 1e3 * numpy.asarray(frames["y_tlk"])
@@ -85,10 +89,10 @@ def figure(result: Mapping[str, object], scale: Mapping[str, float],
              xlabel=f"lateral [mm], true scale\n(grey: the freeplay gap ±{yfp_mm:g} mm)",
              title="torque-link apex")
     if yfp_mm > 0:
-        link.axvspan(-yfp_mm, yfp_mm, color="0.85", zorder=0)
+        link.axvspan(-yfp_mm, yfp_mm, color=palette.BAND, zorder=0)
     for side in (-1, 1):
-        link.axvline(side * yfp_mm, color="k", lw=1.5)
-    pin, = link.plot([], [], "o", ms=12, mec="k")
+        link.axvline(side * yfp_mm, color=draw.NEUTRAL, lw=1.5)
+    pin, = link.plot([], [], "o", ms=12, mec=draw.NEUTRAL)
 
     trace_t = numpy.asarray(result["trace"]["t"])
     trace.plot(trace_t, draw.DEG * numpy.asarray(result["trace"]["psi"]), color=draw.STABLE,
@@ -101,7 +105,7 @@ def figure(result: Mapping[str, object], scale: Mapping[str, float],
         middle = float(numpy.mean(psi_deg))
         trace.set_ylim(middle - 0.5, middle + 0.5)
     trace.grid(alpha=0.3)
-    now, = trace.plot([], [], "o", color=draw.UNSTABLE, mec="k", ms=6)
+    now, = trace.plot([], [], "o", color=draw.UNSTABLE, mec=draw.NEUTRAL, ms=6)
     fig.suptitle(title, fontsize="medium")
     fig.text(0.5, 0.005, f"motion scaled for visibility: angles ×{scale['angle']:g}, tyre "
              f"deflections ×{scale['deflection']:g}; the torque-link apex at true scale",
@@ -138,7 +142,7 @@ def figure(result: Mapping[str, object], scale: Mapping[str, float],
         engaged = abs(y) > yfp_mm
         pin.set_data([y], [0.0])
         pin.set_color(draw.UNSTABLE if engaged else draw.STABLE)
-        pin.set_markeredgecolor("k")
+        pin.set_markeredgecolor(draw.NEUTRAL)
         now.set_data([f["t"]], [draw.DEG * f["psi"]])
     show(0)
     return fig, show

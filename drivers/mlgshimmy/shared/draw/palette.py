@@ -15,26 +15,31 @@ import numpy
 # stability, the first thing every diagram tells
 STABLE, UNSTABLE = "#0b3d91", "#e69f00"
 NEUTRAL = "0.25"        # text-like lines: markers' edges, reference lines
+MARKER = "black"        # the special points' markers (H, S, P, TR)
+OPEN = "white"          # the face of an open marker
 GUIDE = "0.65"          # a reference drawn behind the data (another gear, a boundary)
 SHADE = "0.9"           # a background band (the operating region)
 BAND = "0.85"           # a highlighted interval (the smoothing width, the freeplay gap)
 # curves of bifurcation points in two parameters, dot-dashed as in the paper
 HOPF = "#009e73"        # Hopf curves
 FOLD = "black"          # folds of orbits
-PITCHFORK = "#56b4e9"   # pitchforks and folds of stationary states
+PITCHFORK = "black"     # pitchforks and folds of stationary states (dotted)
 TORUS = "#cc79a7"       # torus (Neimark-Sacker) curves and points
+DOUBLED = "#009988"     # orbits of twice the period, born at period doublings
 LIFTOFF = "#d55e00"     # the wheel lift-off edge, a model's domain ending
-ALLOWED = "#56b4e9"     # what a criterion allows (freeplay, profiles)
+ALLOWED = "#a6dba0"     # straight rolling stable: what a criterion allows (a fill)
+ALLOWED_PART = "#f0e442"   # what only one of two readings allows
 TYRE = "#d55e00"        # tyre contact patches in the gear's drawings
+ON_FILL = "white"       # a thin line drawn over coloured regions
 # what a time simulation settles on (shared.attractor's kinds; the atlas,
 # Fig. 18's regions): light fills, so that curves and text on them stay legible
-ATTRACTOR = {"straight": "white", "yaw": "#9ecae1", "low": "#fdd49e", "high": "#f4a582",
+ATTRACTOR = {"straight": ALLOWED, "yaw": "#9ecae1", "low": "#fdd49e", "high": "#f4a582",
              "quasi": "#c2a5cf", "domain": "0.7", "unsettled": "#f7f7b0"}
 # a line or marker of each kind, dark enough on white and on the fills above
 ATTRACTOR_EDGE = {"straight": "black", "yaw": "#08519c", "low": "#b35806", "high": "#b2182b",
                   "quasi": "#762a83", "domain": "black", "unsettled": "#8c6d00"}
 # a line plot's default colours, in order (mlg.mplstyle's axes.prop_cycle)
-CYCLE = (STABLE, UNSTABLE, HOPF, TORUS, PITCHFORK, LIFTOFF, NEUTRAL)
+CYCLE = (STABLE, UNSTABLE, HOPF, TORUS, "#56b4e9", LIFTOFF, NEUTRAL)
 SEQUENCE_MAP = "viridis"
 DIVERGING_MAP = "cividis"
 
@@ -43,6 +48,14 @@ def sequence(n: int) -> List[Tuple[float, float, float, float]]:
     """n colours in order (a family of curves: eps, y_fp, V) from viridis,
     its light yellow end left out (it vanishes on white)."""
     return [matplotlib.colormaps[SEQUENCE_MAP](x) for x in numpy.linspace(0.0, 0.82, n)]
+
+
+def categories(n: int) -> List[Tuple[float, float, float, float]]:
+    """n colours for categories in no order (the codes of a region map),
+    from matplotlib's tab20; ValueError beyond its 20."""
+    if n > 20:
+        raise ValueError(f"palette.categories: {n} categories, at most 20")
+    return [matplotlib.colormaps["tab20"](k / 20) for k in range(n)]
 
 
 def text_on(fill) -> str:

@@ -2,15 +2,17 @@
 (b) the largest settled torsion amplitude.  Called by the atlas's `summary`."""
 import numpy
 
-# one colour per kind; a cell with several kinds takes the colour of the
-# first in PAINT (its most shimmy-like attractor; leaving the domain or not
-# settling only when nothing settled) and a marker per other kind
-COLOURS = {"straight": "#ffffff", "yaw": "#9ecae1", "low": "#fdd49e", "high": "#ef6548",
-           "quasi": "#7a0177", "domain": "#969696", "unsettled": "#fff200"}
+from mlgshimmy.shared.draw import palette
+
+# one colour per kind (palette.ATTRACTOR); a cell with several kinds takes
+# the colour of the first in PAINT (its most shimmy-like attractor; leaving
+# the domain or not settling only when nothing settled) and a marker per
+# other kind, in the kind's edge colour
+COLOURS = palette.ATTRACTOR
 PAINT = ("quasi", "high", "low", "yaw", "straight", "unsettled", "domain")
-MARKERS = {"straight": ("o", "k"), "yaw": ("s", "#08519c"), "low": ("^", "#b35806"),
-           "high": ("v", "#b30000"), "quasi": ("D", "#7a0177"), "domain": ("x", "k"),
-           "unsettled": ("*", "#b8860b")}
+MARKERS = {kind: (marker, palette.ATTRACTOR_EDGE[kind]) for kind, marker in
+           (("straight", "o"), ("yaw", "s"), ("low", "^"), ("high", "v"), ("quasi", "D"),
+            ("domain", "x"), ("unsettled", "*"))}
 
 
 def edges(values):
@@ -44,7 +46,7 @@ def plot(cells, names, order):
         main = next(k for k in PAINT if k in kinds)
         used.update(kinds)
         ax.add_patch(plt.Rectangle((ev[j], ef[i]), ev[j + 1] - ev[j], ef[i + 1] - ef[i],
-                                   facecolor=COLOURS[main], edgecolor="0.8", lw=0.3))
+                                   facecolor=COLOURS[main], edgecolor=palette.BAND, lw=0.3))
         others = [k for k in kinds if k != main]
         for n, kind in enumerate(others):
             marker, colour = MARKERS[kind]
@@ -61,12 +63,12 @@ def plot(cells, names, order):
     ax.set_ylabel("F*")
     ax.set_title("(a) end states (colour: the most shimmy-like attractor;\n"
                  "markers: the other end states of the cell)", fontsize=10)
-    handles = [Patch(facecolor=COLOURS[k], edgecolor="0.4", label=names[k])
+    handles = [Patch(facecolor=COLOURS[k], edgecolor=palette.GUIDE, label=names[k])
                for k in order if k in used]
     handles += [Line2D([], [], marker=MARKERS[k][0], color=MARKERS[k][1], ls="none",
                        mfc="none" if k == "straight" else MARKERS[k][1],
                        label=f"also {names[k]}") for k in order if k in used]
-    mesh = bx.pcolormesh(ev, ef, amplitude, cmap="viridis",
+    mesh = bx.pcolormesh(ev, ef, amplitude, cmap=palette.SEQUENCE_MAP,
                          norm=matplotlib.colors.LogNorm(vmin=1e-6, vmax=0.3))
     fig.colorbar(mesh, ax=bx, label=r"largest settled $\psi$ amplitude [rad] "
                  r"(stationary: $10^{-6}$)")
@@ -92,16 +94,16 @@ def overlay(cells, agreement, fig11):
     code = numpy.asarray(region_map["code"], int)
     present = sorted(set(code.ravel().tolist()))
     index = numpy.searchsorted(present, code)
-    colours = matplotlib.colormaps["tab20"](numpy.linspace(0, 1, 20))[:len(present)]
+    colours = palette.categories(len(present))
     fig, ax = plt.subplots(figsize=(14, 8))
     ax.pcolormesh(edges(region_map["V"]), edges(region_map["Fstar"]), index,
                   cmap=matplotlib.colors.ListedColormap(colours), alpha=0.45,
                   vmin=-0.5, vmax=len(present) - 0.5, rasterized=True)
     for curve in fig11["edge_curves"]:
-        ax.plot(curve["V"], curve["Fstar"], "k-", lw=0.8)
-    styles = {"agree": ("o", "#1a9850", "agrees with Fig. 11"),
-              "disagree": ("X", "#d73027", "disagrees (atlas code written beside)"),
-              "on_curve": ("o", "0.55", "on a curve: not compared")}
+        ax.plot(curve["V"], curve["Fstar"], color=palette.NEUTRAL, lw=0.8)
+    styles = {"agree": ("o", palette.HOPF, "agrees with Fig. 11"),
+              "disagree": ("X", palette.LIFTOFF, "disagrees (atlas code written beside)"),
+              "on_curve": ("o", palette.GUIDE, "on a curve: not compared")}
     for group, (marker, colour, _) in styles.items():
         for e in agreement[group]:
             ax.plot(e["V"], e["Fstar"], marker=marker, color=colour, ms=6 if group ==
@@ -114,7 +116,7 @@ def overlay(cells, agreement, fig11):
                for k, c in enumerate(present)]
     handles += [Line2D([], [], marker=m, color=col, ls="none", label=text)
                 for m, col, text in styles.values()]
-    handles.append(Line2D([], [], color="k", lw=0.8, label="Fig. 11's edge curves"))
+    handles.append(Line2D([], [], color=palette.NEUTRAL, lw=0.8, label="Fig. 11's edge curves"))
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1), fontsize=7,
               frameon=False)
     ax.set_xlim(0, 600)
