@@ -28,7 +28,7 @@ import shutil
 import subprocess
 import sys
 
-from mlgshimmy.shared import checks, paper
+from mlgshimmy.shared import checks, gear_answers, paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs import catalogue
 from mlgshimmy.shared.jobs.atomic import write_text
@@ -269,7 +269,7 @@ def _table(rows):
     printed = any(r["paper"] is not None for r in rows)
     with_table = any(r.get("ours_table") is not None for r in rows)
     head = ["quantity"] + (["paper"] if printed else []) + ["ours"] \
-        + (["ours (table set)"] if with_table else []) \
+        + (["ours, printed c_psi"] if with_table else []) \
         + (["rel. error", "status"] if printed else [])
     out = ['<table class="numbers"><thead><tr>' + "".join(f"<th>{h}</th>" for h in head)
            + "</tr></thead><tbody>"]
@@ -385,19 +385,21 @@ def _study(study, images):
     return "\n".join(parts)
 
 
-def _sidebar(info):
+def _sidebar(info, at_gear=False):
     figures = "".join(f'<a href="#{f["figure"]}"' + ("" if f["png"] else
                       ' class="missing" title="not made yet"') + f'>{f["figure"]}</a>'
                       for f in info["figures"])
     studies = "".join(f'<a href="#study-{s["name"]}">{s["name"]}</a>' for s in info["studies"])
     return ('<nav class="side"><a href="#top"><b>mlg-shimmy report</b></a>'
-            '<a href="#scorecard">Scorecard</a><a href="#provenance">Provenance</a>'
+            + ('<a href="#gear">Your gear</a>' if at_gear else "")
+            + '<a href="#scorecard">Scorecard</a><a href="#provenance">Provenance</a>'
             f'<div class="group">Figures</div>{figures}'
             f'<div class="group">Studies</div>{studies}</nav>')
 
 
-def page(info, images, docs=os.path.join("..", "..", checks.DOCS)):
-    """The HTML page; docs: the link to docs/reproduction.md from it."""
+def page(info, images, docs=os.path.join("..", "..", checks.DOCS), lead=""):
+    """The HTML page; docs: the link to docs/reproduction.md from it; lead:
+    HTML shown first (the design answers at a changed gear)."""
     score = _scorecard(info["score"])
     tools = "".join(f"<tr><th>{html.escape(k)}</th><td>{html.escape(str(v))}</td></tr>"
                     for k, v in info["tools"])
@@ -410,9 +412,10 @@ def page(info, images, docs=os.path.join("..", "..", checks.DOCS)):
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>mlg-shimmy: reproduction report</title><style>{STYLE}</style></head>
 <body>
-{_sidebar(info)}
+{_sidebar(info, bool(lead))}
 <main>
 <h1 id="top">mlg-shimmy: reproduction report</h1>
+{lead}
 <p>Howcroft, Lowenberg, Neild and Krauskopf, <i>Effects of freeplay on the dynamic stability
 of an aircraft main landing gear</i>: every figure beside the numbers the paper prints.
 Generated {html.escape(info["written"])} by <code>make report</code> from the cached results;
@@ -439,7 +442,8 @@ been run.</p>
 
 
 def build(out=None, root=None):
-    """Write the page and its images; returns the page's path."""
+    """Write the page and its images; returns the page's path.  At a
+    changed gear it opens with the design answers (shared.gear_answers)."""
     root = root or paths.run_root()
     out = out or os.path.join(root, "report")
     os.makedirs(os.path.join(out, "figures"), exist_ok=True)
@@ -457,7 +461,7 @@ def build(out=None, root=None):
             images[path] = f"figures/{name}"
     target = os.path.join(out, "index.html")
     write_text(target, page(info, images, os.path.relpath(os.path.join(paths.ROOT, checks.DOCS),
-                                                          out)))
+                                                          out), gear_answers.section()))
     write_text(os.path.join(out, "report.json"),
                json.dumps({k: v for k, v in info.items()}, indent=1, default=str) + "\n")
     missing = [f["figure"] for f in info["figures"] if not f["png"]]
