@@ -132,8 +132,8 @@ def test_calibrated_value_and_tables(tmp_path, monkeypatch):
     assert paper.status("fig07", "H, F* = 1 [m/s]", 346.1, 346.16) == "off its calibration"
     assert paper.status("fig07", "H, F* = 1 [m/s]", 346.1, 346.14) == "calibrated"
     text = paper.report("fig10", {"H1 [m/s]": 1.45816, "extra": 2.0}, {"H1 [m/s]": 0.77})
-    assert text.splitlines()[1].split() == ["quantity", "paper", "ours", "(figures)", "ours",
-                                            "(table)", "rel.", "error", "status"]
+    assert text.splitlines()[1].split() == ["quantity", "paper", "ours", "ours,", "printed",
+                                            "c_psi", "rel.", "error", "status"]
     rows = json.loads((tmp_path / "tables" / "fig10.json").read_text())["rows"]
     assert [r["quantity"] for r in rows][:4] == list(paper.PAPER["fig10"])
     assert rows[0]["status"] == "agrees" and rows[1]["status"] == "missing"

@@ -114,9 +114,10 @@ def text_of(figure, table):
     printed = any(r["paper"] is not None for r in table)
     with_table = any(r["ours_table"] is not None for r in table)
     with_base = any("baseline" in r for r in table)
-    head = ["quantity"] + (["paper"] if printed else []) + ["ours (figures)"] \
-        + (["ours (table)"] if with_table else []) + (["rel. error", "status"] if printed else []) \
-        + (["baseline (figures)"] if with_base else [])
+    head = ["quantity"] + (["paper"] if printed else []) + ["ours"] \
+        + (["ours, printed c_psi"] if with_table else []) \
+        + (["rel. error", "status"] if printed else []) \
+        + (["paper's gear"] if with_base else [])
     lines = [head]
     for r in table:
         line = [r["quantity"]] + ([_cell(r["paper"])] if printed else []) + [_cell(r["ours"])]
@@ -131,7 +132,7 @@ def text_of(figure, table):
     body = "\n".join("  ".join(c.ljust(w) for c, w in zip(line, widths)).rstrip()
                      for line in lines)
     if printed:
-        title = f"{figure}: paper vs ours (rel. error and status of the figures set)"
+        title = f"{figure}: paper vs ours (our calibrated parameter set; its rel. error, status)"
     else:
         title = f"{figure}: ours (the paper prints no number for this figure)"
     held = [r["held_out"] + ("" if r["held_out"] == r["quantity"] else f" ({r['quantity']})")
