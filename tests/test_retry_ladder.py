@@ -133,3 +133,25 @@ def test_a_branch_that_uses_its_step_budget_is_reported_not_silent(tmp_path, cap
     continuation.equilibria(str(tmp_path / "b"), "eq", start, stop={"V": 7.5}, DS=1.0,
                             DSMAX=1.0, NMX=40, allow_mx=keep)
     assert "REPORTED" not in capsys.readouterr().out
+
+
+def test_an_mx_at_a_connection_of_saddles_is_an_end_not_a_stop(tmp_path):
+    """With the tanh law (Fig. 10's case) the orbits born at H2 = 28.48 m/s
+    grow onto a heteroclinic cycle of the yawed saddles psi = +-1.754e-3
+    rad, their period from 0.32 to 2.4 s near 29.753 m/s, where AUTO stops
+    (MX): allow_mx=EDGE keeps it as the branch's end."""
+    from mlgshimmy.shared import domain, saddle_connection
+    values = {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1, "freeplay_law": 2}
+    hb = continuation.hopf_points(str(tmp_path), "hb", "figures", "V",
+                                  [27.0 + 0.05 * k for k in range(41)], **values)
+    assert [p["V"] for p in hb] == [pytest.approx(28.4815, abs=1e-3)]
+    po = continuation.periodic_from(str(tmp_path), "po", hb[0], stop={"V": 40.0},
+                                    allow_mx=continuation.EDGE,
+                                    **continuation.SPEED_ORBIT_STEPS)
+    ends = po("MX")
+    assert len(ends) == 1 and ends[0]["V"] == pytest.approx(29.75, abs=0.02)
+    assert domain.stop_reason(ends[0]) == domain.SADDLES
+    saddles, share = saddle_connection.saddle_stays(domain.solution_model(ends[0]), ends[0])
+    assert sorted(u[0] for u in saddles) == [pytest.approx(-1.7541e-3, rel=1e-3),
+                                             pytest.approx(1.7541e-3, rel=1e-3)]
+    assert share > 0.7

@@ -37,6 +37,9 @@ V_GRID = ct.SPEED_SCAN
 COLUMNS = ("V", "psi_amp", "freq")
 FREEPLAY = {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1}   # the figure's conditions
 HIGH_HZ = naming.HIGH_HZ   # Hz: the high-frequency orbits
+# the table's words for the ends of a branch (domain.stop_reason)
+ENDS = {domain.LIFT_OFF: "wheel lift-off",
+        domain.SADDLES: "a saddle connection (period unbounded)"}
 
 
 def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
@@ -59,7 +62,7 @@ def numbers(diagram, points):
     by name (points: the diagram's named points), the folds S1, S2, ... of the
     high-frequency orbits (>= HIGH_HZ; S1 is the paper's S), the folds of
     the low-frequency ones, and where a branch ends at a wheel's lift-off or
-    stopped with no convergence (an orbit branch that shrinks onto straight
+    a connection of saddles, or stopped with no convergence (an orbit branch that shrinks onto straight
     rolling at a Hopf point ends there: no row)."""
     out = {f"{p['name']} [m/s]": p["V"] for p in points}
     high = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] >= HIGH_HZ)
@@ -70,7 +73,7 @@ def numbers(diagram, points):
         stops = [p for p in run("MX") if p["psi_amp"] > ct.COLLAPSED]   # not a Hopf bubble
         for k, point in enumerate(stops):
             why = domain.stop_reason(point)
-            out[(f"{name}: ends at wheel lift-off at V [m/s]" if why == "wheel lift-off" else
+            out[(f"{name}: ends at {ENDS[why]} at V [m/s]" if why in ENDS else
                  f"{name}: stops (MX, {why}) at V [m/s]") + (f" {k + 1}" if k else "")] = point["V"]
     return out
 

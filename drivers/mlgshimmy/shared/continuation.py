@@ -63,7 +63,9 @@ class Start:
 
 def ends_branch(point, parameter: str) -> bool:
     """An MX point that is an end, not a failure: a wheel lifts off there
-    (the model's domain ends: domain.stop_reason), or a periodic orbit has
+    (the model's domain ends), or the orbits approach a connection of
+    saddles (their period grows without bound: domain.stop_reason), or a
+    periodic orbit has
     shrunk onto straight rolling at a Hopf point (zero amplitude, and a pair
     of straight rolling's eigenvalues crosses the axis within JOIN_WINDOW of
     it along `parameter`: the branch joins that Hopf point, where AUTO finds

@@ -1,18 +1,22 @@
 """Why an AUTO run of periodic orbits stopped without convergence (MX):
 at the edge of the model's domain, where a tyre load of the orbit reaches
 zero (wheel lift-off, c/mlg_model.h MLG_WHEEL_LIFT_OFF), or short of it
-(a numerical stop).  With side-stay angles the large-amplitude shimmy
+(a numerical stop), or where the orbits approach a connection of saddle
+equilibria (shared.saddle_connection: their period grows without bound;
+the branch ends there too).  With side-stay angles the large-amplitude shimmy
 orbits reach lift-off below V = 600 m/s (rho = mu = 10 deg: F* = 1 at
 582.8 m/s, F* = 0.2 at 472.4 m/s), where at rho = mu = 0 they do not.
 
-    reason = stop_reason(run("MX")[0])   # "wheel lift-off" or "numerical"
+    reason = stop_reason(run("MX")[0])   # LIFT_OFF, SADDLES or "numerical"
 """
 import ctypes
 from typing import Dict, Tuple
 
 from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import saddle_connection
 
 LIFT_OFF_LOAD = 1e-4         # of the static tyre load: "zero" at an MX stop
+LIFT_OFF, SADDLES = "wheel lift-off", "saddle connection"   # the ends of a branch
 
 
 def solution_model(sol: object) -> mlgmodel.Model:
@@ -56,8 +60,11 @@ def least_tyre_load(sol: object) -> float:
 
 
 def stop_reason(sol: object) -> str:
-    """"wheel lift-off" if the orbit `sol` (an MX solution) has a tyre load
-    below LIFT_OFF_LOAD of the static one, else "numerical"."""
+    """LIFT_OFF if the orbit `sol` (an MX solution) has a tyre load below
+    LIFT_OFF_LOAD of the static one, SADDLES if it is close to a connection
+    of saddles (saddle_connection.connects), else "numerical"."""
     model = solution_model(sol)
     static = min(tyre_loads(model, model.equilibrium()))
-    return "wheel lift-off" if least_tyre_load(sol) < LIFT_OFF_LOAD * static else "numerical"
+    if least_tyre_load(sol) < LIFT_OFF_LOAD * static:
+        return LIFT_OFF
+    return SADDLES if saddle_connection.connects(model, sol) else "numerical"
