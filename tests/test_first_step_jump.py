@@ -55,3 +55,33 @@ def test_a_jump_later_in_the_run_is_refused(monkeypatch):
     with pytest.raises(autoglue.RunError) as error:
         follow(monkeypatch, {-0.005: V})
     assert "jumped by more than 2.0 in V" in str(error.value), str(error.value)
+
+
+
+def test_a_jump_off_a_vertical_start_runs_its_corner_first(monkeypatch):
+    """The hertz law's H3 (144.545 m/s): its orbits grow in the gap at
+    constant V (4e-4 m/s over three steps) up to the contact, where the
+    fourth step cut the corner, 11.3 m/s down.  The corner is run with a
+    hundredth of the steps (CORNER_STEPS of them), and the branch goes on
+    from its end with the run's own steps."""
+    start = [H, H - 6e-5, H - 4e-4]
+    corner = numpy.linspace(H - 4e-4, H - 3.0, ct.CORNER_STEPS - 3)
+    runs = [start + list(numpy.arange(H - 11.3, 0.49, -1.0)),
+            start + list(corner),
+            list(numpy.arange(H - 3.0, 0.49, -1.0))]
+    calls = []
+
+    class Labelled(Run):
+        def __call__(self, label=None):
+            return [] if label else ["the last orbit"]
+
+    def periodic_from(rundir, name, origin, parameter, stop, allow_mx, **kw):
+        calls.append((name, origin, kw["DS"], kw["DSMAX"], kw.get("NMX")))
+        return Labelled(runs[len(calls) - 1])
+    monkeypatch.setattr(ct, "periodic_from", periodic_from)
+    found, _ = ct.follow_orbits("rundir", lambda n: f"po{n}", "HB", "V", {H: FREQ},
+                                lambda h: 0.01, (0.5, 600.0), DS=-0.005, DSMAX=1.0)
+    assert calls == [("po0", "HB", -0.005, 1.0, None),
+                     ("po0", "HB", pytest.approx(-5e-5), pytest.approx(0.01), ct.CORNER_STEPS),
+                     ("po1", "the last orbit", -0.005, 1.0, None)], calls
+    assert len(found) == 2 and found[1][0]["V"][0] == pytest.approx(H - 3.0)

@@ -37,6 +37,8 @@ COLLAPSING = 0.01     # a least amplitude below this part of the branch's larges
 # x0.9, at 29.03 m/s for H2 at 27.97 m/s)
 JOIN_WINDOW = 0.05
 FIRST_STEP_FLOOR = 1e-5   # follow_orbits retries a jumping first step down to this DS
+VERTICAL = 0.1   # of DSMAX: a branch that has moved less along its parameter leaves it vertically
+CORNER, CORNER_STEPS = 0.01, 300   # the steps (of DS, DSMAX) and their number at such a corner
 
 
 class Start:
@@ -238,9 +240,8 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
             print(f"{figure}: orbits {name} left out: {exc.brief}", flush=True)
             break
         values = numpy.asarray(orbits[0][parameter])
-        jumps = _jumps(values, kw)
-        if not runs and jumps.size and jumps[0] and not jumps[1:].any() \
-                and abs(kw.get("DS", 0.0)) > FIRST_STEP_FLOOR:
+        jump = _leaving_jump(values, kw) if not runs else None
+        if jump == 0 and abs(kw.get("DS", 0.0)) > FIRST_STEP_FLOOR:
             # the first step alone jumped: the Hopf point is nearly
             # degenerate (the orbits grow slowly in amplitude along V)
             kw = {**kw, "DS": 0.1 * kw["DS"]}
@@ -248,6 +249,20 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
                   f"{abs(values[1] - values[0]):.3g} in {parameter}: run again with "
                   f"DS = {kw['DS']:.3g}", flush=True)
             continue
+        corner = jump is not None and jump > 0
+        if corner:
+            # a later step jumped: the orbits leave the Hopf point vertically
+            # and turn sharply; AUTO's steps grow past that corner however
+            # small DS is (hertz: step 13 with DS = 5e-5), so the corner is
+            # its own run with CORNER of the steps, and the branch goes on from its end
+            print(f"{figure}: orbits {name}: step {jump + 1} jumped by "
+                  f"{abs(values[jump + 1] - values[jump]):.3g} in {parameter}: its corner "
+                  f"first, with DSMAX = {CORNER * kw['DSMAX']:.3g}", flush=True)
+            orbits = periodic_from(rundir, name, origin, parameter, stop={parameter: stops},
+                                   allow_mx=allow_failed,
+                                   **{**kw, "DS": CORNER * kw["DS"],
+                                      "DSMAX": CORNER * kw["DSMAX"], "NMX": CORNER_STEPS})
+            values = numpy.asarray(orbits[0][parameter])
         before = max((numpy.max(r[0]["psi_amp"]) for r in runs), default=0.0)
         inside = collapse_within(orbits[0], parameter, hopf, gap, before)
         if inside is not None:
@@ -288,7 +303,15 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
                 print(f"{figure}: orbits {name} pass the Hopf point {parameter} = {h:.5g} "
                       f"(amplitude {numpy.degrees(amp[i]):.3g} deg, {freq:.4g} Hz there)",
                       flush=True)
-                origin = orbits("UZ")[-1]
+                # a run kept up to an MX short of the stop has no UZ to go on
+                # from (the `table` set with the cubic law: MX at 0.614 m/s,
+                # 0.02 above H1): the branch ends there, its MX reported
+                origin = (orbits("UZ") or [None])[-1]
+                if origin is None:
+                    print(f"{figure}: orbits {name} stop (MX) short of it: the branch ends "
+                          "there", flush=True)
+        if corner and inside is None and origin is None and len(values) >= CORNER_STEPS:
+            origin = orbits()[-1]     # past the corner: on with the run's own steps
     return runs, ends
 
 
@@ -382,6 +405,20 @@ def _jumps(values, kw):
     if "DSMAX" not in kw or len(values) < 2:
         return numpy.zeros(0, dtype=bool)
     return numpy.abs(numpy.diff(values)) > 2 * kw["DSMAX"]
+
+
+def _leaving_jump(values, kw):
+    """The index of the one step that jumped (_jumps) while the branch had
+    not yet moved VERTICAL DSMAX along its parameter from its start, or
+    None: the orbits leave the Hopf point nearly vertically and the step cut
+    the corner where they turn (the first step, or a later one: the cubic
+    law, exactly zero in the gap, leaves H3's orbits vertical, 4e-4 m/s
+    over three steps, up to the contact, then a step jumped 11.3 m/s)."""
+    jumps = numpy.flatnonzero(_jumps(values, kw))
+    if len(jumps) != 1 or numpy.any(numpy.abs(values[:jumps[0] + 1] - values[0])
+                                    > VERTICAL * kw["DSMAX"]):
+        return None
+    return int(jumps[0])
 
 
 def collapse_within(branch, parameter, hopf, gap, largest=0.0):
