@@ -166,6 +166,8 @@ def plot(result):
             for branch in orbits:
                 for index, _, _ in branches.labelled_points(branch, "LP"):
                     V = branch["V"][index]
+                    if any(abs(V - h) <= 1e-3 * abs(h) for h, _ in freeplay["hopf"]):
+                        continue    # AUTO's spurious LP next to a Hopf point (Diagram.folds)
                     draw.mark(ax, V, branch[column][index] * scale, "LP",
                               name=fold_name(result["numbers"], V) or next(names))
             draw.mark_specials(ax, orbits, "V", column, scale=scale, kinds=("TR",))
