@@ -196,7 +196,7 @@ def plot(result):
         for colour, name in zip(COLOURS[1:], ("R1, R2: straight rolling stable",) + REGIONS[2:])]
     ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0], FSTARS[-1]),
            xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$")
-    draw.figure_title(ax, rf"Fig. 18: straight rolling for V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm"
+    draw.figure_title(ax, r"Fig. 18: straight rolling for V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm"
                           "\n" + draw.STRUT_ORDER[result["variant"]]
                           + rf"; hatched: $y_{{fp}}/\epsilon < \kappa^*$ = {kappa:.3f}")
     ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))

@@ -83,10 +83,8 @@ def law_name(index: float) -> str:
 def _law(entry: str, text: str) -> float:
     names = laws()
     if text not in names:
-        close = difflib.get_close_matches(text, names, n=1)
         raise OverlayError(f"SET: {entry!r}: no freeplay law named {text!r}"
-                           + (f"; did you mean {close[0]}?" if close else "")
-                           + f" (the laws: {', '.join(names)})")
+                           + did_you_mean(text, names) + f" (the laws: {', '.join(names)})")
     return float(names.index(text))
 
 
