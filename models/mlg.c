@@ -8,10 +8,10 @@
  *
  * Bad starting parameters end the run: one message on stderr naming the
  * parameter and exit status 1 (AUTO's Python interface raises).  Later, a
- * continuation step that leaves the domain is answered with a large finite
- * residual, without a message, so that AUTO shortens its step (MX if it
- * persists).  A non-finite solution that AUTO accepts anyway ends the run at
- * once, naming where (pvls). */
+ * continuation step that leaves the domain is answered with a huge residual,
+ * without a message, so that AUTO shortens its step (MX if it persists).  A
+ * non-finite solution that AUTO accepts anyway ends the run at once, naming
+ * where (pvls). */
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -30,20 +30,15 @@ static void start_failed(int started, const char *what, const char *why)
     exit(1);
 }
 
-/* A step outside the domain: a residual that is large but finite, with the
- * identity as its Jacobian, so that each Newton iterate moves every state by
- * -REJECTED, out of the domain again, and AUTO's iteration fails, which halves
- * the step.  Overflow here would give NaN, which AUTO's convergence test
- * takes as converged (every comparison with NaN is false). */
-#define REJECTED 1e10
-static void reject(integer ndim, integer ijac, doublereal *f, doublereal *dfdu,
-                   doublereal *dfdp)
+/* A step outside the domain: a huge residual, so that AUTO's iteration fails
+ * and it halves the step.  A finite residual with a regular Jacobian is not
+ * enough: on a periodic orbit AUTO solves u' = T f, which any finite f
+ * satisfies with T = 0 (Fig. 13's orbits in y_fp then end on such a point).
+ * Where the iteration overflows to NaN instead, which AUTO's convergence
+ * test takes as converged, pvls stops the run. */
+static void reject(integer ndim, doublereal *f)
 {
-    for (integer i = 0; i < ndim; i++) f[i] = REJECTED;
-    if (ijac == 0) return;
-    for (integer k = 0; k < ndim * ndim; k++) dfdu[k] = k % (ndim + 1) == 0 ? 1.0 : 0.0;
-    if (ijac == 1) return;
-    for (integer k = 0; k < ndim * MLG_NPAR; k++) dfdp[k] = 0.0;
+    for (integer i = 0; i < ndim; i++) f[i] = 1e30;
 }
 
 /* The constants for PAR(15): the `table` values, overridden by the file
@@ -96,7 +91,7 @@ int func(integer ndim, const doublereal *u, const integer *icp, const doublereal
     const char *invalid = parameters_for(par, &p);
     if (invalid) {
         start_failed(started, "invalid starting parameters", invalid);
-        reject(ndim, ijac, f, dfdu, dfdp);
+        reject(ndim, f);
         return 0;
     }
     double J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
@@ -105,7 +100,7 @@ int func(integer ndim, const doublereal *u, const integer *icp, const doublereal
     if (status != MLG_OK) {
         start_failed(started, "starting point outside the model's domain",
                      mlg_status_text(status));
-        reject(ndim, ijac, f, dfdu, dfdp);
+        reject(ndim, f);
         return 0;
     }
     started = 1;

@@ -1,10 +1,10 @@
 """The AUTO plugin (models/mlg.c) at the edge of the model's domain, compiled
 into a small harness (no AUTO run): a step that leaves the domain gets a
-large finite residual with the identity as Jacobian, so that AUTO's Newton
-iteration fails and the step is halved (an overflow to NaN would pass
-AUTO's convergence test), and a non-finite solution stops the run at once
-with one line naming where; the drivers read that line as a run that did
-not converge (autoglue.RunError.kind), which the retry ladder retries.
+huge residual, so that AUTO's Newton iteration fails and the step is halved,
+and a non-finite solution (where that iteration overflowed instead, which
+AUTO's convergence test passes) stops the run at once with one line naming
+where; the drivers read that line as a run that did not converge
+(autoglue.RunError.kind), which the retry ladder retries.
 
 Run: /usr/bin/python3 -m pytest -q tests/test_plugin_domain.py
 """
@@ -27,12 +27,8 @@ int main(void)
     stpnt(MLG_NX, 0.0, u, par);
     func(MLG_NX, u, icp, par, 2, f, dfdu, dfdp);       /* the start: inside the domain */
     par[MLG_PAR_V] = -0.4;                               /* a step to V < 0 */
-    for (int k = 0; k < MLG_NX * MLG_NX; k++) dfdu[k] = NAN;
-    for (int k = 0; k < MLG_NX * MLG_NPAR; k++) dfdp[k] = NAN;
     func(MLG_NX, u, icp, par, 2, f, dfdu, dfdp);
     for (int i = 0; i < MLG_NX; i++) printf("f %.17g\n", f[i]);
-    for (int k = 0; k < MLG_NX * MLG_NX; k++) printf("dfdu %d %d %.17g\n", k % MLG_NX, k / MLG_NX, dfdu[k]);
-    for (int k = 0; k < MLG_NX * MLG_NPAR; k++) printf("dfdp %.17g\n", dfdp[k]);
     fflush(stdout);
     getp_value = NAN;                                    /* AUTO accepted a NaN solution */
     pvls(MLG_NX, u, par);
@@ -57,15 +53,10 @@ def harness(tmp_path_factory):
     return done.returncode, done.stdout.splitlines(), done.stderr
 
 
-def test_a_step_outside_the_domain_gets_a_finite_residual_and_the_identity(harness):
+def test_a_step_outside_the_domain_gets_a_huge_residual(harness):
     _, lines, _ = harness
     f = [float(line.split()[1]) for line in lines if line.startswith("f ")]
-    assert len(f) > 0 and all(value == 1e10 for value in f)
-    jacobian = [line.split()[1:] for line in lines if line.startswith("dfdu ")]
-    assert len(jacobian) == len(f) ** 2
-    assert all(float(v) == (1.0 if i == j else 0.0) for i, j, v in jacobian)
-    assert [float(line.split()[1]) for line in lines if line.startswith("dfdp ")] \
-        == [0.0] * (len(lines) - len(f) - len(jacobian) - ("pvls returned" in lines))
+    assert len(f) > 0 and all(value == 1e30 for value in f)
 
 
 def test_a_non_finite_solution_stops_the_run_naming_where(harness, tmp_path):
