@@ -12,11 +12,12 @@ AUTO_DRIVER_DEPS := $(MLG_MODEL).exe $(MLG_SHARED) | auto
 # What a result depends on besides the drivers: the constants, the model as
 # linked (mlg.exe is relinked when AUTO_DIR changes: mk/auto.mk) and the
 # thread count of the AUTO runs (their rounding depends on it), a stamp
-# rewritten (when make reads its makefiles) only when it changes.
+# rewritten (when make reads its makefiles) only when it changes, and the
+# simulator: the shared layer's criticality check simulates (naming.simulated).
 AUTO_THREADS_USED := build/auto-link/auto-threads
 $(call stamp,$(AUTO_THREADS_USED),$(AUTO_THREADS))
 MODEL_INPUTS := constants/c.mlg $(wildcard constants/runs/c.*) $(MLG_MODEL).exe $(MLG_SHARED) \
-                $(AUTO_THREADS_USED)
+                $(AUTO_THREADS_USED) $(MLG_SIMULATE)
 
 # $(call cached_figure,<fig>,<more inputs>[,<driver>,<driver options>]): the
 # driver is mlgshimmy.figures.<fig> unless named (fig12_v1: fig12 with

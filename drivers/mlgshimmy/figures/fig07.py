@@ -20,7 +20,6 @@ DECLARED = {
     "fig07": {
         "help": "Fig. 7: zero freeplay, diagrams in V at F* = 0.2, 1",
         "time": "10 s",
-        "needs": ["simulator"],   # the criticality check simulates (naming.simulated)
         "regress": "quick",
         "report": ("Zero freeplay, diagrams in V at F* = 0.2 and 1: stable straight rolling up "
                    "to a supercritical Hopf point H, torsional shimmy beyond it, far above the "

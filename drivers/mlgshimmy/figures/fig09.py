@@ -23,7 +23,6 @@ DECLARED = {
     "fig09": {
         "help": "Fig. 9: zero-freeplay Hopf curve in (V, F*)",
         "time": "5 s",
-        "needs": ["simulator"],   # the criticality check simulates (naming.simulated)
         "regress": "quick",
         "report": ("The zero-freeplay Hopf curve in (V, F*): it bounds stable straight rolling "
                    "and lies outside the operating region (IV.A)."),

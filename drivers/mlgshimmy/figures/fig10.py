@@ -23,7 +23,6 @@ DECLARED = {
     "fig10": {
         "help": "Fig. 10: y_fp = 1 mm, F* = 1: three Hopf points, orbits, fold",
         "time": "40 s",
-        "needs": ["simulator"],   # the criticality check simulates (naming.simulated)
         "regress": True,
         "report": ("F* = 1 with +-1 mm of freeplay: Hopf points at 1.5, 28.1 and 142.5 m/s, "
                    "low-frequency orbits between the first two, high-frequency orbits with a "

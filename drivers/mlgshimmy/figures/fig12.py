@@ -30,7 +30,6 @@ DECLARED = {
     "fig12": {
         "help": "Fig. 12: V = 50 m/s: pitchforks, yawed states, orbits in F*",
         "time": "20 s",
-        "needs": ["simulator"],   # the criticality check simulates (naming.simulated)
         "regress": True,
         "report": ("V = 50 m/s, diagram in F*: two pitchforks with stationary yawed states "
                    "between them, a Hopf point, orbits with stable low- and high-frequency "

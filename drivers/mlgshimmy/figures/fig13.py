@@ -21,7 +21,6 @@ DECLARED = {
     "fig13": {
         "help": "Fig. 13: eps = 0.1 y_fp, y_fp = 0.2-2 mm",
         "time": "1 min",
-        "needs": ["simulator"],   # the criticality check simulates (naming.simulated)
         "regress": True,
         "parts": True,
         "report": ("eps = 0.1 y_fp: diagrams in V for y_fp = 0.2-2 mm scale with y_fp while "

@@ -21,7 +21,6 @@ DECLARED = {
     "fig14": {
         "help": "Fig. 14: eps = 0.1 mm, y_fp = 0.05-1 mm, Hopf curves",
         "time": "1.5 min",
-        "needs": ["simulator"],   # the criticality check simulates (naming.simulated)
         "regress": True,
         "parts": True,
         "report": ("eps = 0.1 mm: diagrams for y_fp = 0.05-1 mm whose bifurcation points move "

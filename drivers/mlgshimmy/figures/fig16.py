@@ -25,7 +25,6 @@ DECLARED = {
     "fig16": {
         "help": "Fig. 16: orbit surfaces over (V, y_fp), both scalings",
         "time": "10 min",
-        "needs": ["simulator"],   # the criticality check simulates (naming.simulated)
         "regress": True,
         "parts": True,
         "report": ("Orbit surfaces over (V, y_fp) for both scalings; regions R1 = (0, r_1) and "

@@ -30,7 +30,6 @@ DECLARED = {
     "fig18": {
         "help": "Fig. 18: a, b, c continued in F*, kappa*",
         "time": "70 s",
-        "needs": ["simulator"],   # the criticality check simulates (naming.simulated)
         "regress": True,
         "report": ("a, b, c continued in F*: regions of the (y_fp/eps, F*) plane and the "
                    "envelope y_fp/eps < kappa* for F* up to 2, a value the paper withholds "
