@@ -78,17 +78,23 @@ criterion: $(CRITERION_GROUPS:%=$(CRITERION_DIR)/%.json) $(CRITERION_DIR)/auto.j
 criterion-plot:
 	$(PYTHON) -m mlgshimmy.studies.criterion report
 
+# $(call cached_study,<name>): studies.<name>, its result cached (--compute,
+# on its imports and the model's inputs) and drawn from the cache (--plot).
+define cached_study
+$(eval $(call py_deps,$(1),studies.$(1)))
+$(call result,$(1)): $$(PYDEPS_$(1)) $(MODEL_INPUTS) | auto
+	$$(PYTHON) -m mlgshimmy.studies.$(1) --compute
+.PHONY: $(1) $(1)-plot
+$(1): $(call result,$(1))
+	$$(PYTHON) -m mlgshimmy.studies.$(1) --plot
+$(1)-plot:
+	$$(PYTHON) -m mlgshimmy.studies.$(1) --plot
+endef
+
 # Oleo seal friction against the low-speed shimmy (studies.friction): the
 # critical friction moment of Fig. 10's low-frequency orbits, its v_fric
 # ladder and its freeplays; cached in $(RUN_ROOT)/friction/result.json.
-$(eval $(call py_deps,friction,studies.friction))
-$(call result,friction): $(PYDEPS_friction) $(MODEL_INPUTS) | auto
-	$(PYTHON) -m mlgshimmy.studies.friction --compute
-.PHONY: friction friction-plot
-friction: $(call result,friction)
-	$(PYTHON) -m mlgshimmy.studies.friction --plot
-friction-plot:
-	$(PYTHON) -m mlgshimmy.studies.friction --plot
+$(eval $(call cached_study,friction))
 
 # Attractor atlas over (V, F*) by time simulation (studies.atlas); axes
 # "a,b,c" or "start:stop:step", one job per cell:
@@ -135,25 +141,11 @@ report: | $(MLG_SHARED)
 # eq. (14) by eps / y_fp, with fitted orders (studies.smoothing): H1-H3 by
 # eigenvalue scans, the stable orbit and its fold S by simulation with every
 # switch located; about 6 min; the table in $(RUN_ROOT)/tables/smoothing.txt.
-$(eval $(call py_deps,smoothing,studies.smoothing))
-$(call result,smoothing): $(PYDEPS_smoothing) $(MODEL_INPUTS) $(MLG_SIMULATE) | auto
-	$(PYTHON) -m mlgshimmy.studies.smoothing --compute
-.PHONY: smoothing smoothing-plot
-smoothing: $(call result,smoothing)
-	$(PYTHON) -m mlgshimmy.studies.smoothing --plot
-smoothing-plot:
-	$(PYTHON) -m mlgshimmy.studies.smoothing --plot
+$(eval $(call cached_study,smoothing))
 
 # Eq. (17)'s kappa* for every freeplay law of c/freeplay_laws.h (studies.laws,
 # eigenvalue scans): under a minute; the table in $(RUN_ROOT)/tables/laws.txt.
-$(eval $(call py_deps,laws,studies.laws))
-$(call result,laws): $(PYDEPS_laws) $(MODEL_INPUTS) | auto
-	$(PYTHON) -m mlgshimmy.studies.laws --compute
-.PHONY: laws laws-plot
-laws: $(call result,laws)
-	$(PYTHON) -m mlgshimmy.studies.laws --plot
-laws-plot:
-	$(PYTHON) -m mlgshimmy.studies.laws --plot
+$(eval $(call cached_study,laws))
 
 # The gear's motion at one (V, F*), animated from the simulator (studies.animate):
 #   make animate V=300 FSTAR=1 [START=shimmy|rolling|yawed] [YFP=1] [RHO= MU= SET=]
