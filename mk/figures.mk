@@ -90,3 +90,8 @@ bench-figures: setup
 	$(PYTHON) tests/bench/bench_figures.py
 bench-gear: setup
 	$(PYTHON) tests/bench/bench_figures.py --gear-rows
+
+# What each cached part of a figure cost (CPU and wall seconds, most first), at the
+# gear RHO, MU, EOM and SET name (shared/jobs/costs.py).
+profile-%:
+	$(PYTHON) -m mlgshimmy.shared.jobs.costs $*

@@ -36,6 +36,7 @@ Regression and benchmarks
   bench-figures            70 min  make -j1 figures against -j2; Fig. 11 and a design-map
                                    point at RHO=15 MU=-5 against the paper's gear
   bench-gear               45 min  only those last rows
+  profile-<fig>               1 s  what each cached part of a figure cost, most CPU first
 
 Cluster (docs/cluster.md): SCHEDULER=slurm|parallel, SUBMIT_ARGS, SUBMIT_OPTIONS
   submit-<fig>                1 s  a figure: $(FIGURES_WITH_PARTS) part by part, others as one job

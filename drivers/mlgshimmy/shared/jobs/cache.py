@@ -13,7 +13,9 @@ import hashlib
 import json
 import math
 import os
+import resource
 import subprocess
+import time
 from typing import Any, Callable, Optional
 
 import numpy
@@ -130,12 +132,21 @@ def checksum(data: Any) -> str:
     return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()
 
 
+def cpu_seconds() -> float:
+    """CPU seconds of this process and of its children waited for (AUTO's
+    runs, the simulator)."""
+    used = [resource.getrusage(who) for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)]
+    return sum(u.ru_utime + u.ru_stime for u in used)
+
+
 def write(figure: str, data: Any, parameter_set: str = "figures",
-          part: Optional[str] = None) -> str:
+          part: Optional[str] = None, cost: Optional[dict] = None) -> str:
     """Store data (dicts, lists, arrays, numbers, strings, inf; a NaN is
     refused, naming where it is) with its provenance, the figure's and the
     part's names and a checksum, as the figure's result or one part of it,
-    atomically; returns the path."""
+    atomically; returns the path.  cost: what computing it took
+    ({"wall_seconds", "cpu_seconds"}, compute_once), kept beside the
+    provenance for `make profile-<fig>` (no check reads it)."""
     plain = _plain(data)
     nan = _not_a_number(plain)
     if nan:
@@ -143,7 +154,8 @@ def write(figure: str, data: Any, parameter_set: str = "figures",
                         f"{nan} is NaN")
     target = write_json(path(figure, part),
                         {"figure": figure, "part": part, "provenance": provenance(parameter_set),
-                         "sha256": checksum(plain), "data": plain})
+                         "sha256": checksum(plain), "data": plain,
+                         **({"cost": cost} if cost else {})})
     print(f"{figure}: {'part ' + part if part else 'result'} cached in "
           f"{os.path.relpath(target, paths.ROOT)}", flush=True)
     return target
@@ -168,7 +180,11 @@ def compute_once(figure: str, compute: Callable[[], Any], parameter_set: str = "
         if locks.since(path(figure, part), started):
             print(f"{what} was computed meanwhile by another process; using it", flush=True)
             return False
-        write(figure, compute(), parameter_set, part=part)
+        wall, cpu = time.monotonic(), cpu_seconds()
+        data = compute()
+        write(figure, data, parameter_set, part=part,
+              cost={"wall_seconds": round(time.monotonic() - wall, 2),
+                    "cpu_seconds": round(cpu_seconds() - cpu, 2)})
         return True
     finally:
         os.close(fd)
