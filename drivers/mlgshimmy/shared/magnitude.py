@@ -431,18 +431,34 @@ def window_point_curve(rundir, tag, yfp, Fstar, stop, dsmax=0.02, **model):
     return out
 
 
-def refined_minimum(evaluate, loads, key, points=None, finer=(10,)):
+def _least(points, key, floor):
+    """The first point of least key (as min), stopping at one that reaches
+    `floor`: no later point can lie below it, so the rest are never
+    evaluated (points may be a generator)."""
+    best = None
+    for point in points:
+        if best is None or key(point) < key(best):
+            best = point
+            if key(best) <= floor:
+                break
+    return best
+
+
+def refined_minimum(evaluate, loads, key, points=None, finer=(10,), floor=-numpy.inf):
     """The point of least key(point) over F* in the evenly spaced `loads`,
     refined around the minimum: for each k of `finer` in turn, on 2k + 1
     loads spanning one step either side, the step then divided by k.
     evaluate(F*) returns a point (a dict with "Fstar"); `points`: the points
-    of `loads` if already evaluated."""
-    best = min(points or [evaluate(F) for F in loads], key=key)
+    of `loads` if already evaluated; `floor`: no key lies below it, so a
+    point that reaches it ends the search (the same point min() would keep)."""
+    best = _least(points or (evaluate(F) for F in loads), key, floor)
     step = loads[1] - loads[0]
     for k in finer:
+        if key(best) <= floor:
+            break
         fine = numpy.linspace(max(loads[0], best["Fstar"] - step),
                               min(loads[-1], best["Fstar"] + step), 2 * k + 1)
-        best = min([best] + [evaluate(F) for F in fine], key=key)
+        best = _least([best] + [evaluate(F) for F in fine], key, floor)
         step /= k
     return best
 
@@ -452,9 +468,10 @@ def kappa_star(evaluate, loads, model, points=None, finer=(10,)):
     unstable below V_LIMIT, minimised over the loads (refined_minimum of
     evaluate(F*)["first"], the least unstable y_fp there) and the loads on
     the stage switch of the gear `model` (parameter overrides,
-    stage_switch_loads); (kappa*, the evaluation at the minimum)."""
-    best = refined_minimum(evaluate, loads, lambda p: p["first"], points, finer)
-    for Fstar in stage_switch_loads(loads, **model):
+    stage_switch_loads); (kappa*, the evaluation at the minimum).  A load
+    unstable without freeplay (y_fp = 0, kappa* = 0) ends the search."""
+    best = refined_minimum(evaluate, loads, lambda p: p["first"], points, finer, floor=0.0)
+    for Fstar in stage_switch_loads(loads, **model) if best["first"] > 0 else ():
         point = evaluate(Fstar)
         if point["first"] < best["first"]:
             best = point
@@ -543,7 +560,7 @@ def kappa_star_off_switch(evaluate, loads, model, finer=(10,)):
         if window and window[0] <= Fstar <= window[1]:
             return {"Fstar": float(Fstar), "first": numpy.inf}
         return evaluate(Fstar)
-    best = refined_minimum(outside, loads, lambda p: p["first"], finer=finer)
+    best = refined_minimum(outside, loads, lambda p: p["first"], finer=finer, floor=0.0)
     return best["first"] / EPSILON, best, window
 
 
