@@ -75,9 +75,13 @@ def auto_check(rundir, **model):
     window = mg.window_points(mg.FSTAR, **model)
     out = {}
     for name in ("a", "b"):
+        out[name] = []
+        if not numpy.isfinite(window[name]):
+            mg.progress("fig18", f"AUTO: {name} lies beyond the scan (y_fp > "
+                                 f"{mg.YFP_MAX:g} mm) at F* = {mg.FSTAR:g}: not continued")
+            continue
         curve = mg.window_point_curve(rundir, name, window[name], mg.FSTAR,
                                       (FSTARS[0], FSTARS[-1]), **model)
-        out[name] = []
         for d, run in curve.items():
             if isinstance(run, autoglue.RunError):
                 mg.progress("fig18", f"AUTO: {name} continued {d} in F* stops, left out: {run.brief}")
@@ -118,7 +122,8 @@ def numbers(points, auto, kappa, best):
                     out[f"F* = {p['Fstar']:.1f}: {k} [y_fp/eps]"] = p[k] / mg.EPSILON
     for name, runs in auto.items():
         # where the scan's point lies on V = 120 (b may lie at lower V)
-        at_limit = [p for p in points if p["V_" + name] == mg.V_LIMIT]
+        at_limit = [p for p in points
+                    if p["V_" + name] == mg.V_LIMIT and numpy.isfinite(p[name])]
         for run in runs:
             Fs, ys = numpy.asarray(run[0]["Fstar"]), numpy.asarray(run[0]["yfp"])
             order = numpy.argsort(Fs)

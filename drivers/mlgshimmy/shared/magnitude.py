@@ -374,7 +374,9 @@ def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN
     the mode `band` changes stability for some V in [V_MIN, V_LIMIT] -- a
     turning point in y_fp of its Hopf curve or its end at V_LIMIT; optimised
     on a V grid refined three times.  (inf or -inf, None) if it never does
-    (no speed: the cache refuses NaN).
+    (no speed: the cache refuses NaN).  The largest is (inf, V) where the
+    mode is still unstable at the scan's end YFP_MAX at some speed V: it
+    lies beyond the scan, and the scan's end is no value of it.
     `model`: parameter overrides, as for growth."""
     sign = -1.0 if highest else 1.0
     best = (sign * numpy.inf, None)
@@ -384,6 +386,8 @@ def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN
             best = found if found[0] < best[0] else best
         for V in speeds if highest else ():
             found = yfp_crossings(Fstar, V, band, **model)
+            if len(found) % 2:   # unstable from its last crossing to YFP_MAX
+                return numpy.inf, float(V)
             if found and found[-1] > best[0]:
                 best = (found[-1], V)
         if not numpy.isfinite(best[0]):
