@@ -28,7 +28,7 @@ def gnu_parallel():
 
 def tool(args, cwd):
     environment = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "drivers"))
-    return subprocess.run([sys.executable, "-m", "mlgshimmy.shared.jobs.submit"]
+    return subprocess.run([sys.executable, "-m", "mlgshimmy.shared.cluster"]
                           + [str(a) for a in args], cwd=cwd, env=environment,
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                           timeout=120)

@@ -94,7 +94,7 @@ def slurm():
 def tool(args, cwd, slurm, env=None, stdin=None):
     environment = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "drivers"), **slurm)
     environment.update(env or {})
-    return subprocess.run([sys.executable, "-m", "mlgshimmy.shared.jobs.submit"]
+    return subprocess.run([sys.executable, "-m", "mlgshimmy.shared.cluster"]
                           + [str(a) for a in args], cwd=cwd, env=environment, input=stdin,
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                           timeout=150)

@@ -1,4 +1,4 @@
-"""The submit tool (drivers/mlgshimmy/shared/jobs/submit.py) without a scheduler: the
+"""The submit tool (drivers/mlgshimmy/shared/cluster/) without a scheduler: the
 submission directory and its job files, the lines made self-sufficient, the sbatch
 commands of a staged pipeline (--dry-run), stages from a command, and its refusals."""
 import json
@@ -20,7 +20,7 @@ def submit(args, cwd, env=None, stdin=None):
     for variable in ("AUTO_DIR", "MLG_RUN_ROOT", "MLG_AUTO_THREADS"):
         environment.pop(variable, None)
     environment.update(env or {})
-    return subprocess.run([sys.executable, "-m", "mlgshimmy.shared.jobs.submit"]
+    return subprocess.run([sys.executable, "-m", "mlgshimmy.shared.cluster"]
                           + [str(a) for a in args], cwd=cwd, env=environment, input=stdin,
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                           timeout=60)

@@ -245,7 +245,7 @@ def test_a_finished_grid_is_done_for_status_missing_and_submit(tmp_path, monkeyp
     assert missing.returncode == 0 and missing.stdout == "", missing.stdout
     assert "design_map: 0 of 2 points without a valid result" in missing.stderr
     submitted = subprocess.run(
-        [sys.executable, "-m", "mlgshimmy.shared.jobs.submit", "submit", "--scheduler", "slurm",
+        [sys.executable, "-m", "mlgshimmy.shared.cluster", "submit", "--scheduler", "slurm",
          "--allow-empty", "--dry-run", "--name", "design_map", "--stage", "-",
          "--out", str(tmp_path / "out")], cwd=ROOT, input=missing.stdout,
         capture_output=True, text=True, env={**os.environ, "MLG_RUN_ROOT": str(tmp_path)})

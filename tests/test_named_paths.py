@@ -31,7 +31,7 @@ DOTTED = re.compile(r"(?<![\w./-])((?:mlgshimmy|shared|figures|studies)(?:\.[A-Z
 SHORT = re.compile(r"`([a-z_]\w*)((?:\.[A-Za-z_]\w*)+)")
 # the last word of a file name, not an attribute
 EXTENSIONS = {"py", "mk", "c", "h", "md", "json", "txt", "png", "pdf", "sh", "cff", "toml", "d",
-              "auto", "exe", "so", "a", "html", "log"}
+              "auto", "exe", "so", "a", "html", "log", "conf"}
 
 
 @functools.lru_cache(maxsize=None)

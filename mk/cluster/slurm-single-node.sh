@@ -19,7 +19,7 @@
 #   MEMORY_MB        its memory for sbatch --mem (default: 90 % of MemTotal)
 #   SLURMCTLD_PORT, SLURMD_PORT   ports (default 6817, 6818; refused if in use)
 #
-# Clients (sbatch, squeue, sacct, mlgshimmy.shared.jobs.submit) find this cluster through
+# Clients (sbatch, squeue, sacct, mlgshimmy.shared.cluster) find this cluster through
 # SLURM_CONF=$SLURM_STATE_DIR/slurm.conf (`start` and `env` print the export line).
 # Without slurmdbd, finished tasks are recorded by jobcomp/filetxt in
 # $SLURM_STATE_DIR/log/jobcomp.log (`sacct -c`).

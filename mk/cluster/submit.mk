@@ -26,7 +26,7 @@
 # Both option lists are split at spaces, each word reaching the submit command (or
 # sbatch, parallel) as one argument, quoted; so are the grids' axes. Each target prints
 # its submission directory; `status` and `resume` follow from there:
-#   PYTHONPATH=drivers $(PYTHON) -m mlgshimmy.shared.jobs.submit status|resume <dir>
+#   PYTHONPATH=drivers $(PYTHON) -m mlgshimmy.shared.cluster status|resume <dir>
 # The prerequisites are built here first, on the submitting host: the tasks only run.
 SCHEDULER ?= slurm
 SUBMIT_ARGS ?=
@@ -41,7 +41,7 @@ $(error SUBMIT_ALL=$(SUBMIT_ALL): give SUBMIT_ALL=1 (every job) or leave it unse
 endif
 endif
 submit_words = $(foreach word,$(1),$(call shell_quote,$(word)))
-SUBMIT = $(PYTHON) -m mlgshimmy.shared.jobs.submit submit --scheduler $(SCHEDULER) \
+SUBMIT = $(PYTHON) -m mlgshimmy.shared.cluster submit --scheduler $(SCHEDULER) \
     $(if $(SUBMIT_ALL),,--allow-empty) $(call submit_words,$(SUBMIT_ARGS))
 SUBMIT_AFTER = -- $(call submit_words,$(SUBMIT_OPTIONS))
 SUBMIT_MISSING := $(if $(SUBMIT_ALL),,--missing)
