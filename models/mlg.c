@@ -192,7 +192,7 @@ static doublereal measure(enum measure_kind kind, int state, const doublereal *u
 }
 
 /* Exit status of a run stopped at a non-finite solution (drivers read it
- * from the log line, shared/autoglue.py NON_FINITE) */
+ * from the log line, shared/runerror.py NON_FINITE) */
 #define NON_FINITE_EXIT 3
 
 int pvls(integer ndim, const doublereal *u, doublereal *par)

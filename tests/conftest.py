@@ -17,7 +17,7 @@ import pytest  # noqa: E402
 
 @pytest.fixture(autouse=True, scope="module")
 def _claims_stay_in_their_module():
-    """A run directory claimed in this process (autoglue.claim) is listed
+    """A run directory claimed in this process (rundirs.claim) is listed
     in MLG_RUN_CLAIMED for its child processes; a module's claims must not
     reach the next module's subprocesses."""
     before = os.environ.get("MLG_RUN_CLAIMED")

@@ -9,7 +9,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 def wait_until_claimed(rundir, process, seconds=120):
     """Wait until the Popen `process` holds the run directory rundir
-    (autoglue.claim writes its pid into .<dir>.lock beside it), so that a
+    (rundirs.claim writes its pid into .<dir>.lock beside it), so that a
     second process started next meets the lock however loaded the machine."""
     parent, base = os.path.split(os.path.abspath(rundir))
     lock = os.path.join(parent, f".{base}.lock")

@@ -13,7 +13,7 @@ import textwrap
 
 import pytest
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import autoglue, autosession, rundirs, runerror
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import mlgmodel
@@ -31,7 +31,7 @@ def root(tmp_path_factory):
     passed on to later tests' child processes."""
     path = tmp_path_factory.mktemp("auto-plugin")
     with pytest.MonkeyPatch.context() as mp:
-        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
         yield str(path)
 
 
@@ -45,7 +45,7 @@ def rundir(root):
 def test_constants_c_mlg_names_every_par_slot_of_the_library():
     """constants/c.mlg names every PAR slot of the library, the period and
     the measures of MLG_MEASURES, and nothing else."""
-    c = autoglue.init().parseC.parseC(ct.CONSTANTS)
+    c = autosession.init().parseC.parseC(ct.CONSTANTS)
     parnames = {int(k): v for k, v in c["parnames"]}
     ours = {k + 1: name for k, name in enumerate(mlgmodel.PARNAMES) if name is not None}
     ours[11] = "T"
@@ -59,7 +59,7 @@ def test_constants_c_mlg_names_every_par_slot_of_the_library():
 
 
 def test_constants_unames_follow_the_librarys_states():
-    c = autoglue.init().parseC.parseC(ct.CONSTANTS)
+    c = autosession.init().parseC.parseC(ct.CONSTANTS)
     unames = {int(k): v for k, v in c["unames"]}
     assert [unames.get(i + 1) for i in range(mlgmodel.NX)] == mlgmodel.UNAMES, \
         f"c.mlg {unames}, library {mlgmodel.UNAMES}"
@@ -112,8 +112,8 @@ def test_model_epsilon_as_given(values, epsilon):
 
 CLUI_RUN = textwrap.dedent("""
     import math
-    from mlgshimmy.shared import autoglue, mlgmodel
-    auto = autoglue.init()
+    from mlgshimmy.shared import autosession, mlgmodel
+    auto = autosession.init()
     m = mlgmodel.Model("figures", Fstar=1.0, V=10.0)
     par = dict(m.par(), **{bad})
     auto.run(e={model!r}, c=auto.parseC.parseC({constants!r}), PAR=par, U=m.equilibrium(),
@@ -167,7 +167,7 @@ def test_clui_steps_leaving_the_domain_are_rejected_quietly(root):
 
 
 def test_autoglue_invalid_starting_parameters_raise_run_error(root):
-    with pytest.raises(autoglue.RunError):
+    with pytest.raises(runerror.RunError):
         autoglue.run(os.path.join(root, "autoglue-bad"), "bad", constants=ct.CONSTANTS,
                      e=ct.MODEL, PAR=dict(ct.Start("figures").PAR, eom_terms=5),
                      U=ct.Start("figures").U)

@@ -8,7 +8,7 @@ import time
 
 import pytest
 
-from mlgshimmy.shared import autoglue, jobs, paths
+from mlgshimmy.shared import jobs, paths, rundirs, runerror
 
 
 def make(root, *goals):
@@ -38,7 +38,7 @@ def test_a_claim_keeps_the_cached_result(tmp_path, monkeypatch):
     monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
     jobs.write("figY", {"n": 1})
     (tmp_path / "figY" / "b.old").write_text("a run")
-    code = (f"from mlgshimmy.shared import autoglue; autoglue.claim({str(tmp_path / 'figY')!r})")
+    code = (f"from mlgshimmy.shared import rundirs; rundirs.claim({str(tmp_path / 'figY')!r})")
     subprocess.run([sys.executable, "-c", code], check=True, env=dict(os.environ))
     assert sorted(os.listdir(tmp_path / "figY")) == ["result.json"]
     assert jobs.read("figY") == {"n": 1}
@@ -51,7 +51,7 @@ def test_a_lock_planted_as_a_symlink_is_refused(tmp_path, monkeypatch):
     root.mkdir()
     os.symlink(victim, root / ".fig07.lock")
     monkeypatch.setenv("MLG_RUN_ROOT", str(root))
-    code = f"from mlgshimmy.shared import autoglue; autoglue.claim({str(root / 'fig07')!r})"
+    code = f"from mlgshimmy.shared import rundirs; rundirs.claim({str(root / 'fig07')!r})"
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert proc.returncode != 0 and "is a symbolic link" in proc.stderr, proc.stderr
     assert victim.read_text() == "precious\n"
@@ -62,6 +62,6 @@ def test_a_run_directory_that_is_a_symlink_is_refused(tmp_path):
     elsewhere.mkdir()
     (elsewhere / "keep.txt").write_text("mine")
     os.symlink(elsewhere, tmp_path / "fig07")
-    with pytest.raises(autoglue.RunError, match="symbolic link"):
-        autoglue.claim(str(tmp_path / "fig07"))
+    with pytest.raises(runerror.RunError, match="symbolic link"):
+        rundirs.claim(str(tmp_path / "fig07"))
     assert (elsewhere / "keep.txt").read_text() == "mine"

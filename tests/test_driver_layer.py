@@ -11,7 +11,7 @@ import sys
 import numpy
 import pytest
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import autosession
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
@@ -49,8 +49,8 @@ def test_module_imports_no_auto(module):
 def test_autoglue_import_loads_no_auto_and_init_names_a_missing_one():
     """Importing autoglue (and continuation, which runs AUTO) does nothing
     to the process; init() then says where it looked for AUTO."""
-    code = ("import sys; from mlgshimmy.shared import autoglue, continuation; "
-            "assert 'auto' not in sys.modules, 'auto imported'; autoglue.init()")
+    code = ("import sys; from mlgshimmy.shared import autosession, continuation; "
+            "assert 'auto' not in sys.modules, 'auto imported'; autosession.init()")
     proc = python(code, AUTO_DIR="/nonexistent")
     assert proc.returncode != 0 and "AutoMissing" in proc.stderr \
         and "AUTO_DIR=/nonexistent" in proc.stderr, proc.stderr[-400:]
@@ -69,7 +69,7 @@ def run_root(tmp_path, monkeypatch):
 def cached(run_root):
     """A reference diagram as AUTO reads it, written to the cache and read
     back: (diagram, path written, data read, branches loaded)."""
-    bd = autoglue.init().parseB.parseBR(REFERENCE)
+    bd = autosession.init().parseB.parseBR(REFERENCE)
     path = jobs.write("test", {"orbits": jobs.stored(bd, ("V", "psi_amp", "T")),
                                "inf": numpy.inf})
     data = jobs.read("test")
@@ -149,7 +149,7 @@ def test_parts_a_part_that_needs_itself_is_refused(run_root):
 
 def auto_threads(**env):
     """OMP_NUM_THREADS once autoglue has found AUTO (or the error)."""
-    code = ("import os; from mlgshimmy.shared import autoglue; autoglue.init(); "
+    code = ("import os; from mlgshimmy.shared import autosession; autosession.init(); "
             "print(os.environ['OMP_NUM_THREADS'])")
     base = {k: v for k, v in os.environ.items() if k != "MLG_AUTO_THREADS"}
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,

@@ -7,7 +7,7 @@ in for AUTO's."""
 import numpy
 import pytest
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import continuation as ct
 
 H, FREQ = 115.24, 28.8
@@ -52,7 +52,7 @@ def test_a_first_step_alone_that_jumps_is_run_again_with_a_smaller_step(monkeypa
 
 def test_a_jump_later_in_the_run_is_refused(monkeypatch):
     V = [H, H - 0.5, H - 1.0, H - 4.0] + list(numpy.arange(H - 5.0, 0.49, -1.0))
-    with pytest.raises(autoglue.RunError) as error:
+    with pytest.raises(runerror.RunError) as error:
         follow(monkeypatch, {-0.005: V})
     assert "jumped by more than 2.0 in V" in str(error.value), str(error.value)
 

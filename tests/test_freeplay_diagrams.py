@@ -6,7 +6,7 @@ import math
 import numpy
 import pytest
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import rundirs
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import spectrum
 
@@ -25,7 +25,7 @@ def rundir(tmp_path_factory):
     passed on to later tests' child processes."""
     path = tmp_path_factory.mktemp("freeplay")
     with pytest.MonkeyPatch.context() as mp:
-        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
         yield str(path)
 
 

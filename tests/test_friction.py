@@ -8,7 +8,7 @@ Run: /usr/bin/python3 -m pytest -q tests/test_friction.py
 """
 import pytest
 
-from mlgshimmy.shared import autoglue, simulator
+from mlgshimmy.shared import rundirs, simulator
 from mlgshimmy.studies import friction
 
 FIG10 = {**friction.CONDITIONS, "yfp": 1.0}
@@ -34,7 +34,7 @@ def fold(tmp_path_factory):
     """The orbit at V0 = 10 m/s (v_fric = 1 mm/s) and its fold in M_fric."""
     rundir = str(tmp_path_factory.mktemp("friction"))
     with pytest.MonkeyPatch.context() as mp:
-        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
         values = {**FIG10, "v_fric": 1e-3}
         _, _, _, orbit = friction.orbit_at_v0(rundir, "test", values)
         return orbit, friction.fold_in_friction(rundir, "test", orbit)

@@ -55,12 +55,12 @@ def started():
 
 
 def test_a_driver_stops_its_child_on_sigterm(started, tmp_path):
-    """A driver that has started AUTO (autoglue.init installs shared.children's
+    """A driver that has started AUTO (autosession.init installs shared.children's
     handler): its child, here a sleep that never writes (mlg.exe dies of a
     broken pipe only when it next prints), gets the signal too, and the driver
     still ends by it."""
-    script = ("import subprocess, sys; from mlgshimmy.shared import autoglue; "
-              "autoglue.init(); child = subprocess.Popen(['sleep', '60']); "
+    script = ("import subprocess, sys; from mlgshimmy.shared import autosession; "
+              "autosession.init(); child = subprocess.Popen(['sleep', '60']); "
               "print(child.pid, flush=True); child.wait()")
     proc = started([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
     child = int(proc.stdout.readline())

@@ -1,4 +1,4 @@
-"""Isolated runs and a quiet console (shared/autoglue.py: claim, run).
+"""Isolated runs and a quiet console (shared/rundirs.py: claim; shared/autoglue.py: run).
 
 Two processes that want the same run directory, the second started once
 the first holds it: the second waits for the first and says so, and both
@@ -17,7 +17,7 @@ import time
 import pytest
 
 import helpers
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import diagrams, guards, rundirs, runerror
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import paths
 
@@ -28,13 +28,13 @@ HOPF_V = 346.1  # m/s, zero freeplay, F* = 1 (Fig. 7, reference fig07/b.eq_F1)
 # (it still reads its run directory), then the branch read back from disk.
 JOB = """
 import os, time
-from mlgshimmy.shared import autoglue, paths
+from mlgshimmy.shared import autosession, paths
 from mlgshimmy.shared import continuation as ct
 rundir = paths.rundir("shared")
 start = ct.Start("figures", Fstar=1.0, V=0.0)
 ct.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
 time.sleep(2.0)
-branch = autoglue.init().parseB.parseBR(os.path.join(rundir, "b.eq"))[0]
+branch = autosession.init().parseB.parseBR(os.path.join(rundir, "b.eq"))[0]
 hb = [i for i in branch.labels.getIndices() if "HB" in branch.labels[i]][0]
 print(f"RESULT {len(branch)} {branch['V'][hb]:.10f} {branch['V'][-1]:.6f}")
 """
@@ -47,12 +47,12 @@ def run_root(tmp_path_factory):
     root = tmp_path_factory.mktemp("isolated")
     with pytest.MonkeyPatch.context() as mp:
         mp.setenv("MLG_RUN_ROOT", str(root))
-        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
         yield str(root)
 
 
 def job(root):
-    env = {k: v for k, v in os.environ.items() if k != autoglue.CLAIMED_ENV}
+    env = {k: v for k, v in os.environ.items() if k != rundirs.CLAIMED_ENV}
     return subprocess.Popen([sys.executable, "-c", JOB], cwd=paths.ROOT, text=True,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             env=dict(env, MLG_RUN_ROOT=root, PYTHONPATH=DRIVERS))
@@ -120,7 +120,7 @@ def failed(run_root):
     try:
         ct.equilibria(rundir, "eq", start, stop={"V": 10.0}, expect=["HB"])
         message = "no error"
-    except autoglue.RunError as exc:
+    except runerror.RunError as exc:
         message = str(exc)
     return rundir, message
 
@@ -139,8 +139,8 @@ def test_cut_short_b_file_is_an_error_naming_it(failed):
         text = f.read()
     with open(path, "w") as f:
         f.write(text[:len(text) * 2 // 3])
-    with pytest.raises(autoglue.RunError) as error:
-        autoglue.read_diagram([os.path.join(rundir, f"{k}.eq") for k in "bsd"], "cut")
+    with pytest.raises(runerror.RunError) as error:
+        diagrams.read_diagram([os.path.join(rundir, f"{k}.eq") for k in "bsd"], "cut")
     assert "cut short" in str(error.value) and path in str(error.value), str(error.value)
 
 
@@ -152,7 +152,7 @@ def test_cpu_limit_kills_a_busy_child_only(program, killed):
     computes: only the second is killed (after 1 s of CPU; the waiting one
     outlives the limit by 2.5 s of wall time)."""
     started = time.monotonic()
-    with autoglue._CPULimit(1.0) as limit:
+    with guards.CPULimit(1.0) as limit:
         status = subprocess.run([sys.executable, "-c", program], timeout=60).returncode
     seconds = time.monotonic() - started
     assert limit.fired == killed and (status != 0) == killed \

@@ -4,7 +4,7 @@ huge residual, so that AUTO's Newton iteration fails and the step is halved,
 and a non-finite solution (where that iteration overflowed instead, which
 AUTO's convergence test passes) stops the run at once with one line naming
 where; the drivers read that line as a run that did not converge
-(autoglue.RunError.kind), which the retry ladder retries.
+(runerror.RunError.kind), which the retry ladder retries.
 
 Run: /usr/bin/python3 -m pytest -q tests/test_plugin_domain.py
 """
@@ -13,7 +13,7 @@ import subprocess
 
 import pytest
 
-from mlgshimmy.shared import autoglue, paths
+from mlgshimmy.shared import autosession, paths, runerror
 
 HARNESS = r"""
 #include "mlg.c"
@@ -45,7 +45,7 @@ def harness(tmp_path_factory):
     source = where / "harness.c"
     source.write_text(HARNESS)
     exe = str(where / "harness")
-    subprocess.run(["gcc", "-I", os.path.join(autoglue.auto_dir(), "include"),
+    subprocess.run(["gcc", "-I", os.path.join(autosession.auto_dir(), "include"),
                     "-I", os.path.join(paths.ROOT, "c"), "-I", os.path.join(paths.ROOT, "models"),
                     str(source), os.path.join(paths.BUILD, "lib", "libmlg.a"), "-lm", "-o", exe],
                    check=True)
@@ -63,7 +63,7 @@ def test_a_non_finite_solution_stops_the_run_naming_where(harness, tmp_path):
     status, lines, stderr = harness
     assert status == 3 and "pvls returned" not in lines
     line, = stderr.splitlines()
-    assert line.startswith(autoglue.NON_FINITE_LINE) and "V = -0.4 m/s, F* = 1" in line
+    assert line.startswith(runerror.NON_FINITE_LINE) and "V = -0.4 m/s, F* = 1" in line
     log = tmp_path / "run.log"
     log.write_text("Starting mlg ...\n" + stderr)
-    assert autoglue.non_finite_stop(str(log)) == line
+    assert runerror.non_finite_stop(str(log)) == line

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from helpers import ROOT
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import diagrams, rundirs
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.studies import point_view
 
@@ -21,7 +21,7 @@ from mlgshimmy.studies import point_view
 def runs(tmp_path_factory):
     path = str(tmp_path_factory.mktemp("point") / "runs")
     with pytest.MonkeyPatch.context() as mp:
-        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
         start = ct.Start("figures", Fstar=0.2, V=0.0)
         eq = ct.equilibria(path, "eq", start, stop={"V": 400.0}, expect=["HB"])
         ct.periodic_from(path, "po", eq("HB1"), stop={"V": 300.0}, expect=["UZ"])
@@ -29,7 +29,7 @@ def runs(tmp_path_factory):
 
 
 def test_an_orbit_point_keeps_its_multipliers_and_a_simulation_stays_on_it(runs):
-    label = [int(s["LAB"]) for s in autoglue.read_diagram(
+    label = [int(s["LAB"]) for s in diagrams.read_diagram(
         [os.path.join(runs, f"{k}.po") for k in "bsd"], "test")() if s["TY name"] == "UZ"][0]
     found = point_view.compute(os.path.join(runs, "po"), label)
     assert found["type"] == "UZ" and found["V"] == pytest.approx(300.0, abs=1e-6)

@@ -7,7 +7,7 @@ Run: /usr/bin/python3 -m pytest -q tests/test_retry_ladder.py
 import pytest
 
 import named_points
-from mlgshimmy.shared import autoglue, continuation
+from mlgshimmy.shared import continuation, runerror
 
 
 def attempts(outcomes):
@@ -28,8 +28,8 @@ def OWN():
     return {"DS": 0.05, "DSMIN": 1e-5, "DSMAX": 1.0, "NTST": 80}
 
 
-MX = autoglue.RunError("run po3 in x: no convergence (MX) at branch -2 label 4",
-                       kind=autoglue.MX)
+MX = runerror.RunError("run po3 in x: no convergence (MX) at branch -2 label 4",
+                       kind=runerror.MX)
 
 
 def test_the_first_rung_that_completes_is_kept():
@@ -41,7 +41,7 @@ def test_the_first_rung_that_completes_is_kept():
 
 def test_every_rung_stopping_raises_the_first_stop():
     attempt, calls = attempts([MX] * (1 + len(continuation.LADDER)))
-    with pytest.raises(autoglue.RunError) as error:
+    with pytest.raises(runerror.RunError) as error:
         continuation.with_ladder(attempt, OWN, "po3")
     assert error.value is MX and len(calls) == 1 + len(continuation.LADDER)
     assert calls[-2][1] == {"NTST": 160, "DS": pytest.approx(0.005),
@@ -50,8 +50,8 @@ def test_every_rung_stopping_raises_the_first_stop():
 
 
 def test_a_non_finite_stop_goes_up_the_ladder_too():
-    stop = autoglue.RunError("run fold1- in x: non-finite solution (component 3) at V = -0.4 "
-                             "m/s, F* = 2.27: run stopped", kind=autoglue.NON_FINITE)
+    stop = runerror.RunError("run fold1- in x: non-finite solution (component 3) at V = -0.4 "
+                             "m/s, F* = 2.27: run stopped", kind=runerror.NON_FINITE)
     attempt, calls = attempts([stop, "smaller steps"])
     assert continuation.with_ladder(attempt, OWN, "fold1-") == "smaller steps"
     assert len(calls) == 2
@@ -60,8 +60,8 @@ def test_a_non_finite_stop_goes_up_the_ladder_too():
 def test_keep_last_keeps_the_last_rung_and_reports_it(capsys):
     errors = []
     for rung in range(1 + len(continuation.LADDER)):
-        error = autoglue.RunError(f"run fold1- in x: no convergence (MX) at V = {300 + rung}",
-                                  kind=autoglue.MX)
+        error = runerror.RunError(f"run fold1- in x: no convergence (MX) at V = {300 + rung}",
+                                  kind=runerror.MX)
         error.diagram = f"diagram of attempt {rung}"
         errors.append(error)
     attempt, calls = attempts(errors)
@@ -78,8 +78,8 @@ def test_a_rung_costs_its_mesh_times_its_steps():
 
 
 def test_other_errors_and_allowed_stops_are_not_retried():
-    attempt, calls = attempts([autoglue.RunError("run x: AUTO wrote no b.x")])
-    with pytest.raises(autoglue.RunError, match="wrote no"):
+    attempt, calls = attempts([runerror.RunError("run x: AUTO wrote no b.x")])
+    with pytest.raises(runerror.RunError, match="wrote no"):
         continuation.with_ladder(attempt, OWN, "x")
     attempt, calls = attempts(["kept up to its MX"])
     assert continuation.with_ladder(attempt, OWN, "x", keep_mx=True) == "kept up to its MX"

@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import autosession, diagrams, runerror
 from mlgshimmy.shared import continuation as ct
 
 REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference", "fig07")
@@ -35,7 +35,7 @@ def copy(run, tmp_path):
 
 
 def test_a_whole_run_reads(run):
-    bd = autoglue.read_diagram(outputs(*run), "eq")
+    bd = diagrams.read_diagram(outputs(*run), "eq")
     assert bd[0]("HB1")["V"] == pytest.approx(346.1, rel=1e-4)
 
 
@@ -45,18 +45,18 @@ def test_a_b_file_cut_at_a_line_end_is_an_error(run, tmp_path):
         lines = f.readlines()
     with open(files[0], "w") as f:
         f.writelines(lines[:-3])                 # whole lines, no end point
-    with pytest.raises(autoglue.RunError, match="cut short.*has no end point"):
-        autoglue.read_diagram(files, "eq")
+    with pytest.raises(runerror.RunError, match="cut short.*has no end point"):
+        diagrams.read_diagram(files, "eq")
 
 
 def test_an_s_file_without_its_last_solution_is_an_error(run, tmp_path):
     files = copy(run, tmp_path)
-    auto = autoglue.init()
+    auto = autosession.init()
     solutions = auto.parseS.parseS(files[1])
     del solutions[-1]
     solutions.writeFilename(files[1])
-    with pytest.raises(autoglue.RunError, match="holds solutions.*cut short"):
-        autoglue.read_diagram(files, "eq")
+    with pytest.raises(runerror.RunError, match="holds solutions.*cut short"):
+        diagrams.read_diagram(files, "eq")
 
 
 @pytest.mark.skipif(os.geteuid() != 0, reason="mounting a small tmpfs needs root")
@@ -81,6 +81,6 @@ def test_an_s_file_cut_at_a_line_end_inside_its_last_solution_is_an_error(run, t
         lines = f.readlines()
     with open(files[1], "w") as f:
         f.writelines(lines[:-1])             # whole lines, the last label's header kept
-    with pytest.raises(autoglue.RunError, match=f"{files[1]}: solution .* has .* values in "
+    with pytest.raises(runerror.RunError, match=f"{files[1]}: solution .* has .* values in "
                        ".* lines, its header says .*: cut short"):
-        autoglue.read_diagram(files, "eq")
+        diagrams.read_diagram(files, "eq")

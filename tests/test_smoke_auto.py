@@ -10,7 +10,7 @@ import os
 
 import pytest
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import autoglue, autosession, diagrams, runerror
 from mlgshimmy.shared import paths
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -47,7 +47,7 @@ def uz(equilibria):
 def raises_run_error(func):
     try:
         func()
-    except autoglue.RunError as exc:
+    except runerror.RunError as exc:
         return str(exc)
     return None
 
@@ -64,7 +64,7 @@ def test_auto_used_the_makefile_built_executable(equilibria):
 
 
 def test_autoglue_detects_a_missing_lp(equilibria):
-    message = raises_run_error(lambda: autoglue.check_diagram(equilibria[1], "eq", ["LP"]))
+    message = raises_run_error(lambda: diagrams.check_diagram(equilibria[1], "eq", ["LP"]))
     assert message and "LP" in message, f"RunError message: {message!r}"
 
 
@@ -82,8 +82,8 @@ def test_autoglue_detects_mx(equilibria):
     doctored = os.path.join(rundir, "b.eq-mx")
     with open(doctored, "w") as f:
         f.writelines(lines)
-    bd = autoglue.init().bifDiag.bifDiag(doctored)
-    message = raises_run_error(lambda: autoglue.check_diagram(bd, "eq-mx"))
+    bd = autosession.init().bifDiag.bifDiag(doctored)
+    message = raises_run_error(lambda: diagrams.check_diagram(bd, "eq-mx"))
     assert message and "MX" in message and "label 3" in message, \
         f"RunError message: {message!r}"
 

@@ -9,7 +9,7 @@ import math
 import numpy
 import pytest
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import rundirs
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import stationary
 
@@ -23,7 +23,7 @@ def rundir(tmp_path_factory):
     """The runs' directory, its claim kept from later tests' children."""
     path = tmp_path_factory.mktemp("stationary")
     with pytest.MonkeyPatch.context() as mp:
-        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
         yield str(path)
 
 

@@ -71,8 +71,8 @@ import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-try:   # the drivers' one way to AUTO (autoglue.init); make sets PYTHONPATH=drivers
-    from mlgshimmy.shared import autoglue
+try:   # the drivers' one way to AUTO (autosession.init); make sets PYTHONPATH=drivers
+    from mlgshimmy.shared import autosession
 except ImportError:   # exit status 2: nothing compared (1 would read "differ")
     print(f"compare_diagrams: the package mlgshimmy is not on the path: run it as "
           f"PYTHONPATH={os.path.join(ROOT, 'drivers')} {sys.executable} {sys.argv[0]} ... "
@@ -102,11 +102,11 @@ class SettingsError(DiagramFileError):
 
 def parse_b():
     """AUTO's auto.parseB, through the drivers' one way to AUTO
-    (autoglue.init: AUTO_DIR, default build/auto/07p) on first use;
+    (autosession.init: AUTO_DIR, default build/auto/07p) on first use;
     DiagramFileError if there is no AUTO-07p there."""
     try:
-        return autoglue.init().parseB
-    except autoglue.AutoMissing as exc:
+        return autosession.init().parseB
+    except autosession.AutoMissing as exc:
         raise DiagramFileError(f"{exc} (its auto.parseB reads the b-files)") from None
 
 

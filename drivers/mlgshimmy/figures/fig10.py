@@ -6,7 +6,7 @@ Panels: torsional amplitude (with a zoom on small amplitudes) and frequency."""
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import domain
@@ -101,7 +101,7 @@ def compute():
         diagram = speed_diagram(paths.rundir("fig10/table"), "table", allow_failed=True,
                                 **FREEPLAY, **at)[1]
         table = numbers(diagram, diagram.named)
-    except (autoglue.RunError, RuntimeError) as exc:
+    except (runerror.RunError, RuntimeError) as exc:
         print(f"fig10: the `table` set stops, its column stays empty: {getattr(exc, 'brief', exc)}")
         table = {}
     points = freeplay.named

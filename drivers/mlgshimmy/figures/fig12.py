@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 import numpy
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import doubling
@@ -64,7 +64,7 @@ def runs(parameter_set="figures", where="fig12", variant=0):
     steps = {"overlay": "stage_switch"} if variant else {}
     found = stationary.states(rundir, parameter_set, (F_MIN, F_MAX), steps, **values)
     if stationary.symmetric(values) and not found.pitchforks:
-        raise autoglue.RunError(f"{where}: straight rolling of the symmetric gear has no "
+        raise runerror.RunError(f"{where}: straight rolling of the symmetric gear has no "
                                 f"pitchfork (BP) in F* = {F_MIN}-{F_MAX}")
     state = rolling_states(found)
     # the orbits from each Hopf point, across the others (continuation.follow_orbits;

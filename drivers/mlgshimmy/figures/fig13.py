@@ -5,7 +5,7 @@ orbits at V = 15, 50, 80, 110 m/s continued in y_fp."""
 import matplotlib.pyplot as plt
 import numpy
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import gear
@@ -84,7 +84,7 @@ def numbers(diagrams, orbits):
             # offset does not scale): fit the stable orbits continued from the start
             piece = stable_piece(stable, int(numpy.argmin(numpy.abs(ys - ORBITS_FROM))))
             if not piece.any():
-                raise autoglue.RunError(f"fig13: the orbit at V = {V:g} is unstable where it "
+                raise runerror.RunError(f"fig13: the orbit at V = {V:g} is unstable where it "
                                         f"starts, y_fp = {ORBITS_FROM:g} mm")
             inside &= piece
             out[f"V = {V:g}: stable from y_fp [mm]"] = ys[piece].min()

@@ -15,7 +15,7 @@ import numpy
 from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
@@ -83,7 +83,7 @@ def auto_check(rundir, **model):
         curve = mg.window_point_curve(rundir, name, window[name], mg.FSTAR,
                                       (FSTARS[0], FSTARS[-1]), **model)
         for d, run in curve.items():
-            if isinstance(run, autoglue.RunError):
+            if isinstance(run, runerror.RunError):
                 mg.progress("fig18", f"AUTO: {name} continued {d} in F* stops, left out: {run.brief}")
             else:
                 out[name].append(run)

@@ -3,7 +3,7 @@ listed from /proc, and stopped with this process on SIGTERM or SIGHUP.
 
 Python's default for those signals ends the process at once and leaves its
 children running: `make` interrupted while AUTO ran left mlg.exe computing
-with nobody to read it.  stop_with_this_process() (autoglue.init,
+with nobody to read it.  stop_with_this_process() (autosession.init,
 simulator.run) installs a handler that sends the same signal to each child,
 then ends this process by that signal as before.
 """

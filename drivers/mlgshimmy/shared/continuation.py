@@ -13,7 +13,7 @@ from typing import Any, Optional, Sequence
 
 import numpy
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import autoglue, autosession, diagrams, rundirs, runerror
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import domain
 from mlgshimmy.shared import mlgmodel
@@ -97,7 +97,7 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
     that the Ends explains is kept and any other goes up the ladder
     (EDGE: the ends of the model's domain and of the orbits)."""
     files = [CONSTANTS] + [os.path.join(RUN_CONSTANTS, f"c.{k}") for k in (kind, overlay) if k]
-    rundir = autoglue.claim(rundir)           # emptied on first use: claim, then write
+    rundir = rundirs.claim(rundir)            # emptied on first use: claim, then write
     mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
     ends = kw["allow_mx"] if isinstance(kw.get("allow_mx"), Ends) else None
 
@@ -112,9 +112,9 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
         bd = autoglue.run(rundir, name, constants=files, e=MODEL, **options)
         stops = [p for p in bd("MX") if not ends.explains(p, kw["ICP"][0])] if ends else []
         if stops and not mx:
-            error = autoglue.RunError(
+            error = runerror.RunError(
                 f"run {name} in {rundir}: no convergence (MX) at {kw['ICP'][0]} = "
-                f"{stops[0][kw['ICP'][0]]:.6g}, {ends.unexplained}", kind=autoglue.MX)
+                f"{stops[0][kw['ICP'][0]]:.6g}, {ends.unexplained}", kind=runerror.MX)
             error.diagram = bd
             raise error
         if ends:
@@ -131,7 +131,7 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
                        keep_last=ends is not None and ends.keep)
 
 
-def reported(what: str, make, errors=(autoglue.RunError,)):
+def reported(what: str, make, errors=(runerror.RunError,)):
     """make() (a run or a curve), or None with one REPORTED line naming
     `what` and why when it fails: a figure draws the curves it has and says
     which it left out."""
@@ -148,12 +148,12 @@ def load(rundir: str, name: str):
     files = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
     missing = [f for f in files if not os.path.exists(f)]
     if missing:
-        raise autoglue.RunError(f"run {name} in {rundir}: missing {', '.join(missing)}")
-    bd = autoglue.init().bifDiag.bifDiag(*files)
+        raise runerror.RunError(f"run {name} in {rundir}: missing {', '.join(missing)}")
+    bd = autosession.init().bifDiag.bifDiag(*files)
     try:
-        autoglue.check_diagram(bd, f"run {name} in {rundir}")
-    except autoglue.RunError as exc:
-        if exc.kind != autoglue.MX:
+        diagrams.check_diagram(bd, f"run {name} in {rundir}")
+    except runerror.RunError as exc:
+        if exc.kind != runerror.MX:
             raise
     return bd
 
@@ -190,7 +190,7 @@ def hopf_point(rundir: str, name: str, parameter_set: str, parameter: str, value
     # (rho = -10, mu = 20 deg, Fig. 12: F* = 0.6947 and 0.6996)
     point = min(bd("HB"), key=lambda p: abs(p[parameter] - value))
     if abs(point[parameter] - value) > 1e-4 * max(abs(value), 1.0):
-        raise autoglue.RunError(f"run {name}: AUTO's HB at {parameter} = {point[parameter]:.6g}, "
+        raise runerror.RunError(f"run {name}: AUTO's HB at {parameter} = {point[parameter]:.6g}, "
                                 f"the eigenvalue scan's at {value:.6g}")
     return point
 
@@ -234,7 +234,7 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
         try:
             orbits = periodic_from(rundir, name, origin, parameter, stop={parameter: stops},
                                    allow_mx=allow_failed, **kw)
-        except autoglue.RunError as exc:
+        except runerror.RunError as exc:
             if allow_failed is not True:
                 raise
             print(f"{figure}: orbits {name} left out: {exc.brief}", flush=True)
@@ -282,7 +282,7 @@ def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_fail
         last = orbits[0]
         values = numpy.asarray(last[parameter])
         if _jumps(values, kw).any():
-            raise autoglue.RunError(f"run {name}: a step jumped by more than {2 * kw['DSMAX']} "
+            raise runerror.RunError(f"run {name}: a step jumped by more than {2 * kw['DSMAX']} "
                                     f"in {parameter} (switched to another branch)")
         # the last orbit of non-zero amplitude (an MX run may go on along
         # straight rolling after collapsing onto it)
@@ -375,7 +375,7 @@ def with_ladder(attempt, own, what, keep_mx=False, keep_last=False):
         return attempt(True)
     try:
         return attempt(False)
-    except autoglue.RunError as exc:
+    except runerror.RunError as exc:
         if not exc.unconverged:
             raise
         first = exc
@@ -385,7 +385,7 @@ def with_ladder(attempt, own, what, keep_mx=False, keep_last=False):
         constants = rung_constants(steps, factors)
         try:
             bd = attempt(False, **constants)
-        except autoglue.RunError as exc:
+        except runerror.RunError as exc:
             if not exc.unconverged:
                 raise
             last = exc
@@ -453,7 +453,7 @@ def _same_start(branch, full, index, parameter, name):
     if len(branch) != index + 1 or \
             abs(branch[parameter][-1] - full[parameter][index]) > 1e-9 * max(1.0, abs(
                 full[parameter][index])):
-        raise autoglue.RunError(f"run {name}: repeated up to point {index + 1}, it ends at "
+        raise runerror.RunError(f"run {name}: repeated up to point {index + 1}, it ends at "
                                 f"{parameter} = {branch[parameter][-1]:.9g} after {len(branch)} "
                                 f"points, not at the first run's {full[parameter][index]:.9g}")
 
@@ -529,7 +529,7 @@ def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
             try:
                 hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, state=state,
                            **values)
-            except autoglue.RunError as exc:
+            except runerror.RunError as exc:
                 print(f"{figure}: Hopf point {k} left unstored: {exc.brief}", flush=True)
             continue
         point = hopf_point(rundir, f"{tag}hb{k}", parameter_set, parameter, v, state=state,

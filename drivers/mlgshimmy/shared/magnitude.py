@@ -17,7 +17,7 @@ import os
 
 import numpy
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
@@ -133,10 +133,10 @@ def _hopf_runs(rundir, name, hb, figure):
                                        stop={"V": [V_MIN, V_MAX], "yfp": [YFP_MIN, YFP_MAX]},
                                        DS=sign * step / 5, DSMAX=step, NMX=4000)
                          for d, sign in (("a", 1), ("b", -1)))
-        except autoglue.RunError as exc:
+        except runerror.RunError as exc:
             progress(figure, f"{name}: Hopf curve with ICP {order} stops ({exc.brief})"
                      + ("; repeating with the parameters swapped" if order[0] == "yfp" else ""))
-    raise autoglue.RunError(f"{name}: Hopf curve failed with both parameter orders")
+    raise runerror.RunError(f"{name}: Hopf curve failed with both parameter orders")
 
 
 def _on_curve(curve, yfp, V):
@@ -180,7 +180,7 @@ def orbits_in_yfp(rundir, diagram, figure="magnitude", **model):
     for V in V_ORBITS:
         found = stable_orbits(diagram, V)
         if len(found) != 1:
-            raise autoglue.RunError(f"{figure}: {len(found)} stable orbits at V = {V:g} "
+            raise runerror.RunError(f"{figure}: {len(found)} stable orbits at V = {V:g} "
                                     f"(y_fp = {diagram.yfp:g}), expected one")
         run, lab = found[0]
         result[V] = orbit_in_yfp(rundir, f"orbit_V{V:g}", run(lab), diagram.scaling, V, figure,
@@ -430,7 +430,7 @@ def window_point_curve(rundir, tag, yfp, Fstar, stop, dsmax=0.02, **model):
             out[direction] = ct.hopf_curve(rundir, f"{tag}_{direction}", hb, ("Fstar", "yfp"),
                                            stop={"Fstar": list(stop)}, with_period=True, DS=ds,
                                            overlay="stage_switch", DSMAX=dsmax)
-        except autoglue.RunError as exc:
+        except runerror.RunError as exc:
             out[direction] = exc
     return out
 

@@ -20,7 +20,7 @@ import tempfile
 import numpy
 
 from mlgshimmy.shared import attractor
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import floquet
 from mlgshimmy.shared import mlgmodel
@@ -120,14 +120,14 @@ def tr_point(rundir, name, bd, v, slope, between=None):
                       UZSTOP={"V": v + 3 * h})
         if not back("UZ"):   # a rung of the retry ladder that ran out of steps first
             last = back()[-1]
-            raise autoglue.RunError(f"run {name}_back{factor}: ends ({last['TY name']}) at "
+            raise runerror.RunError(f"run {name}_back{factor}: ends ({last['TY name']}) at "
                                     f"V = {last['V']:.6g}, short of V = {v + 3 * h:.6g}")
         cross = ct.run(rundir, f"{name}_cross{factor}", "periodic", data=back("UZ")[-1],
                        ICP=["V", 11] + mlgmodel.MEASURES, DS=-2 * h, DSMIN=1e-4, DSMAX=2 * h,
                        IADS=0, NMX=4)
         if cross("TR"):
             return cross("TR")[0]
-    raise autoglue.RunError(f"run {name}: AUTO labelled no TR near V = {v:.3f} "
+    raise runerror.RunError(f"run {name}: AUTO labelled no TR near V = {v:.3f} "
                             f"(steps up to {4 * h:.3g} m/s across it)")
 
 

@@ -4,7 +4,7 @@ continue the zero-freeplay Hopf point of straight rolling at F* = 1 from the
 import os
 import sys
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
@@ -42,7 +42,7 @@ def calibrate(where="calibration"):
 def main():
     try:
         v_table, c_psi = calibrate()
-    except (autoglue.RunError, ValueError, RuntimeError) as exc:
+    except (runerror.RunError, ValueError, RuntimeError) as exc:
         sys.exit(f"calibrate_c_psi: {exc}")
     lines = [f"Hopf speed at F* = 1 with the table c_psi = 410: V = {v_table:.3f} m/s",
              f"c_psi putting it at V = {V_PAPER} m/s: {c_psi:.4f} N m s/rad",

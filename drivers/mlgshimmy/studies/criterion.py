@@ -21,7 +21,7 @@ import sys
 import matplotlib.pyplot as plt
 import numpy
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
@@ -153,11 +153,11 @@ def auto_kappa(variant, scanned):
                                   dsmax=0.005, **model)
     pieces = {}
     for direction, run in curve.items():
-        if isinstance(run, autoglue.RunError):
+        if isinstance(run, runerror.RunError):
             raise run
         end = stop[direction == "up"]
         if abs(run[0]["Fstar"][-1] - end) > 1e-4:   # UZ stops within AUTO's tolerance
-            raise autoglue.RunError(f"variant {variant}: the curve of a ended at F* = "
+            raise runerror.RunError(f"variant {variant}: the curve of a ended at F* = "
                                     f"{run[0]['Fstar'][-1]:.4f}, short of {end:g}")
         pieces[direction] = (numpy.asarray(run[0]["Fstar"]), numpy.asarray(run[0]["yfp"]))
     # one polyline in continuation order, from low F* to high
@@ -309,7 +309,7 @@ def main(argv):
         else:
             sys.exit(f"usage: criterion.py scan {{{','.join(GROUPS)}}} | auto | report | "
                      "custom NAME=VALUE ...")
-    except (autoglue.RunError, ValueError, RuntimeError) as exc:
+    except (runerror.RunError, ValueError, RuntimeError) as exc:
         sys.exit(f"criterion: {exc}")
 
 

@@ -19,7 +19,7 @@ import sys
 
 import numpy
 
-from mlgshimmy.shared import autoglue, floquet, jobs, mlgmodel, paths, simulator
+from mlgshimmy.shared import diagrams, floquet, jobs, mlgmodel, paths, simulator
 
 # What make help and make submit know of it (shared.jobs.catalogue)
 DECLARED = {
@@ -63,7 +63,7 @@ def parameters(sol, where: str) -> dict:
 
 def compute(run: str, label: int) -> dict:
     where, name, files = run_files(run)
-    diagram = autoglue.read_diagram(files, f"point: {run}")
+    diagram = diagrams.read_diagram(files, f"point: {run}")
     labels = [int(s["LAB"]) for s in diagram()]
     if label not in labels:
         raise ValueError(f"LABEL={label} is not a label of {run} (its labels: "

@@ -24,7 +24,7 @@ import sys
 
 import matplotlib.pyplot as plt
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import autoglue, diagrams, rundirs, runerror
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import mlgmodel
@@ -95,10 +95,10 @@ def attempt(name, run, notes):
     is noted."""
     try:
         bd = run()
-    except autoglue.RunError as exc:
+    except runerror.RunError as exc:
         notes.append(exc.brief)
         return None
-    if any(ty == "MX" for _, _, ty in autoglue.special_points(bd)):
+    if any(ty == "MX" for _, _, ty in diagrams.special_points(bd)):
         notes.append(f"run {name}: ends without convergence (MX), kept up to there")
     return bd
 
@@ -126,7 +126,7 @@ def load(rundir):
         index = json.load(f)["runs"]
 
     def diagram(name):
-        return autoglue.read_diagram([os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"],
+        return diagrams.read_diagram([os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"],
                                      f"cached run {name} in {rundir}")
     return {tag: (diagram(entry["eq"]), [diagram(n)("HB1") for n in entry["hopf"]],
                   [diagram(n) for n in entry["orbits"]], [diagram(n) for n in entry["curves"]],
@@ -140,7 +140,7 @@ def compute(rho_deg, mu_deg, eom_terms, key=None):
     where = starts(rho_deg, mu_deg, eom_terms)
     values = case_values(rho_deg, mu_deg, eom_terms)
     path = os.path.join(paths.run_root(), name_of(rho_deg, mu_deg))
-    rundir = autoglue.claim(path, keep=(lambda p: cached(p, key)) if key else None)
+    rundir = rundirs.claim(path, keep=(lambda p: cached(p, key)) if key else None)
     if key and cached(rundir, key):
         print(f"sidestay: {name_of(rho_deg, mu_deg)}: reusing the runs in "
               f"{os.path.relpath(rundir)} (inputs unchanged)")
@@ -252,7 +252,7 @@ def main():
     except ValueError as exc:
         sys.exit(f"sidestay: rho = {args.rho:g} deg, mu = {args.mu:g} deg, "
                  f"eom_terms = {args.eom_terms} rejected: {exc}")
-    except (autoglue.RunError, RuntimeError) as exc:
+    except (runerror.RunError, RuntimeError) as exc:
         sys.exit(f"sidestay: {exc}")
     report(name, title, result, reference)
     plot(name, title, result, reference)

@@ -32,7 +32,7 @@ import math
 import os
 import sys
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import floquet
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import paths
@@ -75,7 +75,7 @@ def compute(case):
         name = f"po_{mesh[0]}_{mesh[1]}"
         try:
             bd = orbit_branch(rundir, name, values, mesh, DSMAX[case])
-        except autoglue.RunError as exc:
+        except runerror.RunError as exc:
             if base is None:            # the first mesh must succeed
                 raise
             # a finer mesh that fails (Fig. 10's branch: MX at the fold S
@@ -127,7 +127,7 @@ def compute(case):
                 window["checks"].append(multiplier_check(
                     rundir, f"window{found.index(a) + 1}_{mesh[0]}_{mesh[1]}",
                     label(found.index(a)), v, mesh))
-        except autoglue.RunError as exc:
+        except runerror.RunError as exc:
             window["error"] = exc.brief
         g = window["checks"][-1]["auto"] if window["checks"] else None
         rate, first, last = simulated_rate(values, v, min(on_branch(bd, v, "psi_amp"), PSI0_MAX),
@@ -147,7 +147,7 @@ def compute(case):
             tr = label(k)
             entry["curves"].append({"from_V": float(tr["V"]),
                                     "parts": curve_arrays(torus_curve(rundir, f"tr{k + 1}", tr))})
-        except autoglue.RunError as exc:
+        except runerror.RunError as exc:
             entry["curves"].append({"from_V": c["value"], "error": exc.brief})
             print(f"torus: {case}: torus curve from V = {c['value']:.3f} failed: "
                   f"{exc.brief}", flush=True)
@@ -162,7 +162,7 @@ def main():
     for case in cases:
         try:
             entry = compute(case)
-        except (autoglue.RunError, RuntimeError, ValueError) as exc:
+        except (runerror.RunError, RuntimeError, ValueError) as exc:
             sys.exit(f"torus: {case}: {exc}")
         write_json(os.path.join(paths.run_root(), "torus", case, "result.json"), entry, indent=1)
     found = {}

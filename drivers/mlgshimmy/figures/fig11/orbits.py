@@ -4,7 +4,7 @@ the eigenvalue grid of straight rolling, and which orbits are stable."""
 import numpy
 
 from mlgshimmy.figures.fig11.plane import (FREEPLAY, GEOMETRY, MODEL, F_GRID, F_MAX, F_MIN, SLICES, V_GRID, V_MAX, V_MIN, V_SCAN)
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import gear
@@ -72,7 +72,7 @@ def large_upwards(Fstar, complete=True):
     rundir, name = paths.rundir("fig11/large"), large_run(Fstar, 1)
     orbits = ct.load(rundir, name)
     if complete and abs(orbits()[-1]["V"] - V_MAX) > 1e-3:   # AUTO's UZ stop: V_MAX
-        raise autoglue.RunError(f"run {name} in {rundir} stops at V = {orbits()[-1]['V']:.6g}, "
+        raise runerror.RunError(f"run {name} in {rundir} stops at V = {orbits()[-1]['V']:.6g}, "
                                 f"not V = {V_MAX:g}: its torus points are not all found")
     return orbits, torus.torus_crossings(rundir, name)
 

@@ -7,7 +7,7 @@ import numpy
 
 from mlgshimmy.figures.fig11.orbits import large_upwards, slice_rundir
 from mlgshimmy.figures.fig11.plane import MODEL, SLICES, V_MAX, V_MIN, on_curves
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
@@ -102,7 +102,7 @@ def found_curves(large_loads):
                         out[kind].append(first_torus_curve(rundir, f"{kind}{k}", found, index,
                                                            tr_name=f"tr{k}"))
                         continue
-                    except (autoglue.RunError, ValueError) as exc:
+                    except (runerror.RunError, ValueError) as exc:
                         print(f"REPORTED: fig11 {kind} curve from V = {c['value']:.4g}, "
                               f"F* = {Fstar:g} left out: {getattr(exc, 'brief', exc)}",
                               flush=True)

@@ -20,7 +20,7 @@ from typing import Any, Callable, Optional
 
 import numpy
 
-from mlgshimmy.shared import branches, gear, paths
+from mlgshimmy.shared import autosession, branches, gear, paths
 from mlgshimmy.shared.jobs import locks
 from mlgshimmy.shared.jobs.atomic import write_json
 
@@ -40,8 +40,7 @@ def path(figure: str, part: Optional[str] = None, root: Optional[str] = None) ->
 def _auto_version() -> Optional[str]:
     """The first line of the AUTO tree's CHANGELOG (a source build), else
     the Debian package's version (an installed AUTO ships none)."""
-    from mlgshimmy.shared import autoglue   # AUTO itself is not imported
-    where = autoglue.auto_dir()
+    where = autosession.auto_dir()
     try:
         with open(os.path.join(where, "CHANGELOG")) as log:
             return log.readline().strip().rstrip(":")
@@ -80,10 +79,9 @@ def provenance(parameter_set: str) -> dict:
     geometry and overlay: shared.gear), the commit, the AUTO (its tree and
     version), the model executable as linked (sha256) and the AUTO runs'
     thread count."""
-    from mlgshimmy.shared import autoglue   # AUTO itself is not imported
     return {"parameter_set": parameter_set, "model": gear.current().record(),
             "git_commit": _git_commit(),
-            "auto_version": _auto_version(), "auto_dir": autoglue.auto_dir(),
+            "auto_version": _auto_version(), "auto_dir": autosession.auto_dir(),
             "auto_threads": os.environ.get("MLG_AUTO_THREADS", "1"),
             "model_sha256": _sha256(os.path.join(paths.BUILD, "models", "mlg.exe")),
             "written": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")}

@@ -394,5 +394,5 @@ def dispatch(tool, job_command, args, points, plane, axes, *, run_job, check, su
             run_job(args.name)
         except ValueError as exc:
             sys.exit(f"{tool}: {args.name} rejected: {exc}")
-        except RuntimeError as exc:     # autoglue.RunError (a failed run, mlg.exe out of date)
+        except RuntimeError as exc:     # runerror.RunError (a failed run, mlg.exe out of date)
             sys.exit(f"{tool}: {args.name}: {exc}")
