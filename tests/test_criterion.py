@@ -9,7 +9,11 @@ import math
 import numpy
 import pytest
 
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import freeplay
+from mlgshimmy.shared import kappa_criterion
+from mlgshimmy.shared import rolling
+from mlgshimmy.shared import stage_switch
+from mlgshimmy.shared import yfp_runs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.studies import criterion
 
@@ -47,13 +51,13 @@ def first_at_reported():
 def test_kappa_first_instability_equals_fig18_scan(first_at_reported):
     """The first instability at F* = 0.295 equals Fig. 18's scan (its a, c,
     pitchfork) [mm]."""
-    bands = mg.window_points(FSTAR_REPORTED)
+    bands = kappa_criterion.window_points(FSTAR_REPORTED)
     assert math.isclose(first_at_reported["first"], bands["first"], rel_tol=1e-8), \
         f"criterion {first_at_reported['first']!r}, Fig. 18's scan {bands['first']!r}"
 
 
 def test_kappa_star_of_variant_0_is_the_documented_one(first_at_reported):
-    kappa = first_at_reported["first"] / mg.EPSILON
+    kappa = first_at_reported["first"] / freeplay.EPSILON
     assert math.isclose(kappa, KAPPA_REPORTED, rel_tol=2e-4), \
         f"kappa* {kappa!r}, docs {KAPPA_REPORTED!r}"
 
@@ -61,7 +65,7 @@ def test_kappa_star_of_variant_0_is_the_documented_one(first_at_reported):
 @pytest.mark.parametrize("F", (FSTAR_REPORTED - 0.005, FSTAR_REPORTED + 0.005))
 def test_kappa_minimum_is_local(first_at_reported, F):
     """F* = 0.290 and 0.300 need a larger y_fp/eps than F* = 0.295."""
-    other = mg.extreme_yfp_crossing(F, "any")[0]
+    other = kappa_criterion.extreme_yfp_crossing(F, "any")[0]
     assert other > first_at_reported["first"], \
         f"F* = {F:.3f}: {other:.6g} <= {first_at_reported['first']:.6g} mm"
 
@@ -91,8 +95,8 @@ def test_stage_switch_at_zero_is_variant_1_at_light_load(F):
 
 def test_stage_switch_at_zero_first_instability_is_variant_1s():
     """The first instability at F* = 0.3, eta_s = 0 against variant 1 [mm]."""
-    family = mg.extreme_yfp_crossing(0.3, "any", eta_stage=0.0)[0]
-    printed = mg.extreme_yfp_crossing(0.3, "any", strut_variant=1.0)[0]
+    family = kappa_criterion.extreme_yfp_crossing(0.3, "any", eta_stage=0.0)[0]
+    printed = kappa_criterion.extreme_yfp_crossing(0.3, "any", strut_variant=1.0)[0]
     assert math.isclose(family, printed, rel_tol=1e-3), \
         f"eta_s = 0: {family!r}, variant 1: {printed!r}"
 
@@ -113,8 +117,8 @@ def test_a_band_unstable_at_the_scan_floor_is_followed_to_zero_freeplay():
     crossing is y_fp = 0 (kappa* = 0), not the scan's first grid point
     YFP_MIN (what the scan reported before: kappa* = 0.050)."""
     model = dict(strut_variant=1.0, c_psi=410.0)
-    assert mg.growth(0.2, 0.0, 90.0, **model)["high"] > 0
-    assert mg.yfp_crossings(0.2, 90.0, "high", first_only=True, **model) == [0.0]
+    assert kappa_criterion.growth(0.2, 0.0, 90.0, **model)["high"] > 0
+    assert kappa_criterion.yfp_crossings(0.2, 90.0, "high", first_only=True, **model) == [0.0]
 
 
 def test_a_crossing_below_the_scan_floor_is_bisected():
@@ -123,21 +127,21 @@ def test_a_crossing_below_the_scan_floor_is_bisected():
     the crossing found there has the growth change sign across it
     (1e-6 relative)."""
     model = dict(rho=math.radians(10), mu=math.radians(10), eom_terms=2.0, eta_stage=0.0)
-    y, = mg.yfp_crossings(0.16, 7.5, "high", first_only=True, **model)
-    assert 0.0 < y < mg.YFP_MIN
-    assert mg.growth(0.16, y * (1 - 1e-6), 7.5, **model)["high"] < 0
-    assert mg.growth(0.16, y * (1 + 1e-6), 7.5, **model)["high"] > 0
+    y, = kappa_criterion.yfp_crossings(0.16, 7.5, "high", first_only=True, **model)
+    assert 0.0 < y < yfp_runs.YFP_MIN
+    assert kappa_criterion.growth(0.16, y * (1 - 1e-6), 7.5, **model)["high"] < 0
+    assert kappa_criterion.growth(0.16, y * (1 + 1e-6), 7.5, **model)["high"] > 0
 
 
 def test_the_stage_switch_loads_put_the_strut_on_its_switch():
     """stage_switch_loads spans the loads where eta* crosses the oleo's stage
     switch: eta* within 3 / k_stage of eta_s at its ends, below and above
     eta_s at its ends in turn (default strut, F* about 0.63-0.69)."""
-    loads = mg.stage_switch_loads(criterion.LOADS)
+    loads = stage_switch.stage_switch_loads(criterion.LOADS)
     model = mlgmodel.Model("figures")
-    eta_s, width = model["eta_stage"], mg.SWITCH_WIDTHS / model["k_stage"]
-    etas = [mg.rolling_state(F, 0.0)["eta"] for F in loads]
-    assert len(loads) == mg.SWITCH_LOADS and 0.6 < loads[0] < loads[-1] < 0.72, loads
+    eta_s, width = model["eta_stage"], stage_switch.SWITCH_WIDTHS / model["k_stage"]
+    etas = [rolling.rolling_state(F, 0.0)["eta"] for F in loads]
+    assert len(loads) == stage_switch.SWITCH_LOADS and 0.6 < loads[0] < loads[-1] < 0.72, loads
     assert math.isclose(etas[0], eta_s - width, abs_tol=1e-7), etas
     assert math.isclose(etas[-1], eta_s + width, abs_tol=1e-7), etas
 
@@ -147,14 +151,14 @@ def test_the_stage_switch_window_at_side_stay_angles_is_where_eta_crosses_its_wi
     eta* of straight rolling at its ends is eta_s -+ 10 / k_stage, and the
     window holds the 3-width one of stage_switch_loads."""
     geometry = dict(rho=math.radians(10), mu=math.radians(10), eom_terms=2.0)
-    lo, hi = mg.stage_switch_window(0.02, 3.5, 10.0, **geometry)
+    lo, hi = stage_switch.stage_switch_window(0.02, 3.5, 10.0, **geometry)
     model = mlgmodel.Model("figures", **geometry)
     eta_s, width = model["eta_stage"], 10.0 / model["k_stage"]
-    assert math.isclose(mg.zero_freeplay_eta(lo, **geometry), eta_s - width, abs_tol=1e-7)
-    assert math.isclose(mg.zero_freeplay_eta(hi, **geometry), eta_s + width, abs_tol=1e-7)
-    narrow = mg.stage_switch_loads(criterion.LOADS, **geometry)
+    assert math.isclose(stage_switch.zero_freeplay_eta(lo, **geometry), eta_s - width, abs_tol=1e-7)
+    assert math.isclose(stage_switch.zero_freeplay_eta(hi, **geometry), eta_s + width, abs_tol=1e-7)
+    narrow = stage_switch.stage_switch_loads(criterion.LOADS, **geometry)
     assert lo < narrow[0] < narrow[-1] < hi < 0.72, (lo, hi, narrow)
-    assert mg.stage_switch_window(0.8, 3.5, 10.0, **geometry) is None
+    assert stage_switch.stage_switch_window(0.8, 3.5, 10.0, **geometry) is None
 
 
 def test_on_the_stage_switch_at_side_stay_angles_kappa_is_zero_and_the_switch_decides():
@@ -162,8 +166,10 @@ def test_on_the_stage_switch_at_side_stay_angles_kappa_is_zero_and_the_switch_de
     is unstable without freeplay (kappa* = 0 there, docs/design-map.md);
     with a switch ten times less steep (k_stage = 1e4 /m) it is not."""
     geometry = dict(rho=math.radians(10), mu=math.radians(10), eom_terms=2.0)
-    middle = mg.stage_switch_loads(criterion.LOADS, **geometry)[mg.SWITCH_LOADS // 2]
-    assert mg.least_unstable(middle, **geometry)["first"] == 0.0
-    softer = mg.stage_switch_loads(criterion.LOADS, k_stage=1e4, **geometry)
+    loads = stage_switch.stage_switch_loads(criterion.LOADS, **geometry)
+    middle = loads[stage_switch.SWITCH_LOADS // 2]
+    assert kappa_criterion.least_unstable(middle, **geometry)["first"] == 0.0
+    softer = stage_switch.stage_switch_loads(criterion.LOADS, k_stage=1e4, **geometry)
     # y_fp [mm]: kappa = 0.48 there
-    assert mg.least_unstable(softer[len(softer) // 2], k_stage=1e4, **geometry)["first"] > 0.01
+    assert kappa_criterion.least_unstable(softer[len(softer) // 2], k_stage=1e4,
+                                          **geometry)["first"] > 0.01

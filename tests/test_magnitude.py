@@ -1,4 +1,4 @@
-"""Freeplay magnitude (drivers/mlgshimmy/shared/magnitude.py, Figs. 13-19),
+"""Freeplay magnitude (shared/yfp_runs.py, shared/kappa_criterion.py; Figs. 13-19),
 fast checks: with eps = 0.1 y_fp the Hopf speeds do not move with y_fp and
 the orbits scale linearly with the same frequency (low-frequency branch at
 y_fp = 0.5 and 1 mm, V = 15 m/s); with eps = 0.1 mm the y_fp thresholds a, b
@@ -11,9 +11,11 @@ import numpy
 import pytest
 
 from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import spectrum
 from mlgshimmy.figures import fig15
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion
+from mlgshimmy.shared import yfp_runs
 from mlgshimmy.shared import mlgmodel
 
 # r_1, r_2 as first reviewed (make report, fig16: F* = 1, eps = 0.1 mm, V = 120 m/s)
@@ -50,7 +52,7 @@ def test_profiles_rescaled_differ_for_fixed_eps(k_tlk):
 def thresholds():
     """a, b: the first two y_fp at which the high-frequency mode changes
     stability at V = 120 m/s (eps = 0.1 mm, eigenvalue scan)."""
-    return mg.yfp_crossings(mg.FSTAR, mg.V_LIMIT, "high")[:2]
+    return kappa_criterion.yfp_crossings(yfp_runs.FSTAR, yfp_runs.V_LIMIT, "high")[:2]
 
 
 def test_thresholds_a_and_b_at_v_120_as_reported(thresholds):
@@ -62,27 +64,28 @@ def test_thresholds_a_and_b_at_v_120_as_reported(thresholds):
 @pytest.mark.parametrize("which", ["a", "b"])
 def test_thresholds_agree_with_auto_hopf_point_in_yfp(rundir, thresholds, which):
     y = thresholds["ab".index(which)]
-    vals = {"Fstar": mg.FSTAR, "V": mg.V_LIMIT, **mg.SCALINGS["fixed"]}
+    vals = {"Fstar": yfp_runs.FSTAR, "V": yfp_runs.V_LIMIT, **freeplay.SCALINGS["fixed"]}
     hb = ct.hopf_point(rundir, f"hb_{which}", "figures", "yfp", y, width=0.05 * y, **vals)
     close(hb["yfp"], y, rel=1e-5)
 
 
 def test_thresholds_straight_rolling_stable_up_to_120_just_below_a(thresholds):
     a = thresholds[0]
-    unstable = [V for V in numpy.linspace(mg.V_MIN, mg.V_LIMIT, 25)
-                if not max(mg.growth(mg.FSTAR, 0.99 * a, V).values()) < 0]
+    unstable = [V for V in numpy.linspace(yfp_runs.V_MIN, yfp_runs.V_LIMIT, 25)
+                if not max(kappa_criterion.growth(yfp_runs.FSTAR, 0.99 * a, V).values()) < 0]
     assert not unstable, f"eps = 0.1 mm, y_fp = 0.99 a: unstable at V = {unstable}"
 
 
 def low_branch(rundir, yfp):
     """(Hopf speeds, the orbit at V = 15 m/s on the branch born at the first
     Hopf point) at this y_fp, eps = 0.1 y_fp."""
-    vals = mg.values("ratio", yfp)
-    hopf = [v for v, kind, _ in spectrum.stability_changes("figures", "V", mg.V_SCAN, **vals)
+    vals = yfp_runs.values("ratio", yfp)
+    hopf = [v for v, kind, _ in spectrum.stability_changes("figures", "V", yfp_runs.V_SCAN, **vals)
             if kind == "HB"]
     hb = ct.hopf_point(rundir, f"hb_{yfp:g}", "figures", "V", hopf[0], **vals)
     run = ct.periodic_from(rundir, f"po_{yfp:g}", hb, stop={"V": 15.5}, UZR={"V": [15.0]},
-                           expect=["UZ"], DS=1e-4, DSMAX=mg.DSMAX_V, DSMIN=1e-9, THU=mg.THU)
+                           expect=["UZ"], DS=1e-4, DSMAX=yfp_runs.DSMAX_V, DSMIN=1e-9,
+                           THU=yfp_runs.THU)
     return hopf, run("UZ1")
 
 

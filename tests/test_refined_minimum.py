@@ -1,10 +1,10 @@
-"""magnitude.refined_minimum stops at its floor: where straight rolling is
+"""kappa_criterion.refined_minimum stops at its floor: where straight rolling is
 unstable without freeplay (kappa* = 0, y_fp = 0 at some load) the search
 ends there, with the point the full search keeps, in fewer evaluations."""
 import numpy
 import pytest
 
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion
 
 LOADS = numpy.arange(0.1, 2.01, 0.1)
 
@@ -27,8 +27,9 @@ def counted(first):
 def test_the_floor_keeps_the_point_and_saves_evaluations(first):
     full, asked_full = counted(first)
     floored, asked_floored = counted(first)
-    whole = mg.refined_minimum(full, LOADS, lambda p: p["first"], finer=(5, 4))
-    stopped = mg.refined_minimum(floored, LOADS, lambda p: p["first"], finer=(5, 4), floor=0.0)
+    whole = kappa_criterion.refined_minimum(full, LOADS, lambda p: p["first"], finer=(5, 4))
+    stopped = kappa_criterion.refined_minimum(floored, LOADS, lambda p: p["first"], finer=(5, 4),
+                                              floor=0.0)
     assert stopped == whole
     if whole["first"] > 0:
         assert asked_floored == asked_full
@@ -39,6 +40,6 @@ def test_the_floor_keeps_the_point_and_saves_evaluations(first):
 
 def test_kappa_star_is_zero_at_the_first_load_unstable_without_freeplay():
     evaluate, asked = counted(lambda F: 0.0 if F >= 0.45 else 0.3)
-    kappa, best = mg.kappa_star(evaluate, LOADS, {}, finer=(5, 4))
+    kappa, best = kappa_criterion.kappa_star(evaluate, LOADS, {}, finer=(5, 4))
     assert kappa == 0.0 and best["Fstar"] == pytest.approx(0.5, abs=1e-12)
     assert len(asked) == 5

@@ -10,7 +10,8 @@ from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import yfp_runs
+from mlgshimmy.shared import yfp_stored
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 from mlgshimmy.shared.draw import magnitude as draw_magnitude
@@ -46,12 +47,12 @@ ORBITS_FROM = 1.0         # y_fp [mm] the orbits at fixed V are continued from
 def parts():
     """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one),
     each in its own run directory build/fig13/<part>/."""
-    return mg.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=ORBITS_FROM,
+    return yfp_stored.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=ORBITS_FROM,
                            **gear.parameters())
 
 
 def compute(parts):
-    diagrams, orbits = mg.diagrams_of(parts.all())
+    diagrams, orbits = yfp_stored.diagrams_of(parts.all())
     return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits}
 
 
@@ -74,7 +75,7 @@ def numbers(diagrams, orbits):
     """{quantity: value}: Hopf and fold speeds per y_fp, and per orbit speed
     the slope of psi_amp against y_fp (fit through 0), its largest relative
     residual, the intercept of a free linear fit, and the frequency range."""
-    out = mg.diagram_numbers(diagrams)
+    out = yfp_stored.diagram_numbers(diagrams)
     for V, curve in orbits:
         ys, amp, freq, stable = (numpy.asarray(curve[c]) for c in ("yfp", "psi_amp", "freq",
                                                                     "stable"))
@@ -89,7 +90,7 @@ def numbers(diagrams, orbits):
             inside &= piece
             out[f"V = {V:g}: stable from y_fp [mm]"] = ys[piece].min()
             out[f"V = {V:g}: stable up to y_fp [mm]"] = ys[piece].max()
-        s0, residual, _, c = mg.linear_fit(ys[inside], amp[inside])
+        s0, residual, _, c = yfp_runs.linear_fit(ys[inside], amp[inside])
         out[f"V = {V:g}: psi_amp/y_fp [rad/mm]"] = s0
         out[f"V = {V:g}: largest rel. residual"] = residual
         out[f"V = {V:g}: intercept of free fit [rad]"] = c
@@ -107,7 +108,7 @@ def plot(result):
         draw_magnitude.diagram_in_V(axes[0][0], d, colour, f"$y_{{fp}}$ = {y:g} mm")
         ys, force = freeplay.profile(y, "ratio", k_tlk, span=1.0 / y * 3.0)
         axes[0][1].plot(ys, force / 1e3, color=colour, label=f"$y_{{fp}}$ = {y:g} mm")
-    axes[0][0].set(xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]", xlim=(0, mg.V_MAX),
+    axes[0][0].set(xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]", xlim=(0, yfp_runs.V_MAX),
                    title="(a) diagrams in V")
     draw.legend(axes[0][0], extra=axes[0][0].get_legend_handles_labels()[0], color=draw.NEUTRAL,
                 loc="upper left", ncol=2)
@@ -119,7 +120,7 @@ def plot(result):
     axes[1][1].set_title("(d) their frequency")
     axes[1][1].set_ylim(0, None)
     for ax in axes[1]:
-        ax.set_xlim(0, mg.YFP_MAX)
+        ax.set_xlim(0, yfp_runs.YFP_MAX)
     draw.figure_title(fig, r"Fig. 13: $F^*$ = 1, $\epsilon/y_{fp}$ = 0.1")
     fig.tight_layout()
     draw.save(fig, "fig13")

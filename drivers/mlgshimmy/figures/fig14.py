@@ -9,7 +9,8 @@ from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import yfp_runs
+from mlgshimmy.shared import yfp_stored
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
@@ -32,21 +33,21 @@ FREEPLAYS = freeplay.FIG14_FREEPLAYS
 
 
 def hopf_curves():
-    curves = mg.hopf_curves(paths.rundir("fig14/hopf_curves"), "hopf", "fixed",
+    curves = yfp_runs.hopf_curves(paths.rundir("fig14/hopf_curves"), "hopf", "fixed",
                             figure="fig14", **gear.parameters())
-    return mg.stored_curves(curves, ("yfp", "V", "freq"))
+    return yfp_stored.stored_curves(curves, ("yfp", "V", "freq"))
 
 
 def parts():
     """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one)
     and the Hopf curves in (y_fp, V)."""
-    return {**mg.diagram_jobs("fig14", "fixed", FREEPLAYS, orbits_at=1.0,
+    return {**yfp_stored.diagram_jobs("fig14", "fixed", FREEPLAYS, orbits_at=1.0,
                               **gear.parameters()),
             "hopf_curves": hopf_curves}
 
 
 def compute(parts):
-    diagrams, orbits = mg.diagrams_of(parts.all())
+    diagrams, orbits = yfp_stored.diagrams_of(parts.all())
     return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits,
             "hopf_curves": parts["hopf_curves"]}
 
@@ -56,7 +57,7 @@ def lowest_orbit(curve, V):
     whether that is a Hopf point of straight rolling in y_fp ('Hopf'; AUTO
     may label the collapse there LP) or a fold in y_fp ('fold')."""
     y_min = float(min(curve["yfp"]))
-    hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V, **gear.parameters())
+    hopf = [y for y, k, _ in yfp_runs.yfp_thresholds("fixed", V, **gear.parameters())
             if k == "HB"]
     return y_min, "Hopf" if any(abs(y_min - y) < 2e-3 * y for y in hopf) else "fold"
 
@@ -64,7 +65,7 @@ def lowest_orbit(curve, V):
 def numbers(diagrams, orbits):
     """{quantity: value}: Hopf and fold speeds per y_fp; per orbit speed the
     smallest y_fp the orbits reach and the Hopf points in y_fp there."""
-    out = mg.diagram_numbers(diagrams)
+    out = yfp_stored.diagram_numbers(diagrams)
     for d in diagrams:
         for first, smallest in d["turns"]:   # whether or not AUTO labels the turn LP
             if smallest < first - 0.5:
@@ -73,7 +74,7 @@ def numbers(diagrams, orbits):
     for V, curve in orbits:
         y_min, kind = lowest_orbit(curve, V)
         out[f"V = {V:g}: orbits down to y_fp [mm] ({kind})"] = y_min
-        hopf = [y for y, k, _ in mg.yfp_thresholds("fixed", V, **gear.parameters())
+        hopf = [y for y, k, _ in yfp_runs.yfp_thresholds("fixed", V, **gear.parameters())
                 if k == "HB"]
         for k, y in enumerate(hopf):
             out[f"V = {V:g}: Hopf point {k + 1} in y_fp [mm]"] = y
@@ -92,7 +93,7 @@ def plot(result):
         ax = fig.add_subplot(grid[row, 3 * col:3 * col + 2])
         draw_magnitude.diagram_in_V(ax, d, None, None)
         diagram_axes.append(ax)
-        ax.set(xlim=(0, mg.V_MAX), xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]",
+        ax.set(xlim=(0, yfp_runs.V_MAX), xlabel="V [m/s]", ylabel=r"$\psi$ amplitude [deg]",
                title=f"({'abcdef'[n]}) $y_{{fp}}$ = {y:g} mm")
         inset = fig.add_subplot(grid[row, 3 * col + 2])
         ys, force = freeplay.profile(y, "fixed", k_tlk, span=max(3.0, 0.6 / y))

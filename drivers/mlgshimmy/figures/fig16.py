@@ -14,7 +14,9 @@ from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion
+from mlgshimmy.shared import yfp_runs
+from mlgshimmy.shared import yfp_stored
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import surfaces
@@ -52,17 +54,17 @@ FOLD_SEED = 0.15   # y_fp [mm] of the "fixed" diagram whose fold starts the fold
 def fold_seed():
     """The "fixed" diagram at FOLD_SEED and the fold curves through its folds."""
     rundir = paths.rundir(f"fig16/fixed_y{FOLD_SEED:g}_folds")
-    d = mg.diagram_in_V(rundir, f"fixed_y{FOLD_SEED:g}", "fixed", FOLD_SEED, uzr=(),
+    d = yfp_runs.diagram_in_V(rundir, f"fixed_y{FOLD_SEED:g}", "fixed", FOLD_SEED, uzr=(),
                         figure="fig16", **gear.parameters())
-    return {"diagram": mg.stored_diagram(d),
-            "fold_curves": mg.stored_curves(mg.fold_curves(rundir, "fold", [d], figure="fig16"),
-                                            ("yfp", "V", "psi_amp"))}
+    return {"diagram": yfp_stored.stored_diagram(d),
+            "fold_curves": yfp_stored.stored_curves(
+                yfp_runs.fold_curves(rundir, "fold", [d], figure="fig16"), ("yfp", "V", "psi_amp"))}
 
 
 def hopf_curves():
-    curves = mg.hopf_curves(paths.rundir("fig16/hopf_curves"), "hopf", "fixed",
+    curves = yfp_runs.hopf_curves(paths.rundir("fig16/hopf_curves"), "hopf", "fixed",
                             figure="fig16", **gear.parameters())
-    return mg.stored_curves(curves, ("yfp", "V", "freq"))
+    return yfp_stored.stored_curves(curves, ("yfp", "V", "freq"))
 
 
 def parts():
@@ -70,17 +72,17 @@ def parts():
     the Hopf curves in (y_fp, V) and the window points a, b, c."""
     work = {}
     for scaling, freeplays in FAMILY.items():
-        for name, job in mg.diagram_jobs("fig16", scaling, freeplays, f"{scaling}_",
+        for name, job in yfp_stored.diagram_jobs("fig16", scaling, freeplays, f"{scaling}_",
                                          uzr=(), **gear.parameters()).items():
             seed = scaling == "fixed" and name == f"fixed_y{FOLD_SEED:g}"
             work[name + "_folds" if seed else name] = fold_seed if seed else job
     return {**work, "hopf_curves": hopf_curves,
-            "window": lambda: mg.window_points(mg.FSTAR, **gear.parameters())}
+            "window": lambda: kappa_criterion.window_points(yfp_runs.FSTAR, **gear.parameters())}
 
 
 def compute(parts):
     done = parts.all()
-    family = {scaling: mg.diagrams_of(done, f"{scaling}_")[0] for scaling in FAMILY}
+    family = {scaling: yfp_stored.diagrams_of(done, f"{scaling}_")[0] for scaling in FAMILY}
     window = parts["window"]
     fold_curves = parts[f"fixed_y{FOLD_SEED:g}_folds"]["fold_curves"]
     return {"numbers": numbers(family, parts["hopf_curves"], window), "window": window,
@@ -100,30 +102,30 @@ def crossing(curves, V):
 
 
 def numbers(family, hopf_curves, window):
-    """{quantity: value}: r1, r2, r3 (= a, b, c of magnitude.window_points)
+    """{quantity: value}: r1, r2, r3 (= a, b, c of kappa_criterion.window_points)
     with AUTO's Hopf curves as a check, and the Hopf and fold speeds of
     every slice."""
     out = {f"r{k + 1} = {name} [mm]": window[name] for k, name in enumerate("abc")}
     out.update({f"V at {name} [m/s]": window["V_" + name] for name in "abc"})
-    for k, y in enumerate(crossing(hopf_curves, mg.V_LIMIT)):
+    for k, y in enumerate(crossing(hopf_curves, yfp_runs.V_LIMIT)):
         out[f"check: AUTO Hopf curves at V = 120, y_fp {k + 1} [mm]"] = y
     out["check: smallest y_fp of AUTO's low-frequency Hopf curve [mm]"] = min(
-        min(c["yfp"]) for c in hopf_curves if max(c["freq"]) < mg.BANDS["low"][1])
+        min(c["yfp"]) for c in hopf_curves if max(c["freq"]) < kappa_criterion.BANDS["low"][1])
     for scaling, diagrams in family.items():
-        out.update(mg.diagram_numbers(diagrams, f"{scaling} "))
+        out.update(yfp_stored.diagram_numbers(diagrams, f"{scaling} "))
     return out
 
 
 def clipped(ys, Vs):
     """A curve with the points outside the plotted box (y_fp <= Y_MAX,
     V <= V_MAX) set to NaN: mplot3d does not clip."""
-    outside = (ys > Y_MAX) | (Vs > mg.V_MAX)
+    outside = (ys > Y_MAX) | (Vs > yfp_runs.V_MAX)
     return numpy.where(outside, numpy.nan, ys), numpy.where(outside, numpy.nan, Vs)
 
 
 def band(freq):
-    """The frequency band (magnitude.BANDS) of an orbit family: "low" or "high"."""
-    return next(name for name, (lo, hi) in mg.BANDS.items() if lo <= freq < hi)
+    """The frequency band (kappa_criterion.BANDS) of an orbit family: "low" or "high"."""
+    return next(name for name, (lo, hi) in kappa_criterion.BANDS.items() if lo <= freq < hi)
 
 
 def sheets(diagram):
@@ -156,7 +158,7 @@ def orbit_surface(ax, diagrams, hopf_curves):
     and 14 on them (solid stable, dashed unstable) with their folds."""
     slices = [(d["yfp"], sheets(d)) for d in diagrams]
     largest = max(numpy.max(c["amp"]) for _, s in slices for c in s.values())
-    quads, stable = surfaces.loft(slices, apexes(hopf_curves), scale=(mg.V_MAX, largest))
+    quads, stable = surfaces.loft(slices, apexes(hopf_curves), scale=(yfp_runs.V_MAX, largest))
     quads[..., 2] *= DEG
     ax.set_zlim(0.0, 1.05 * quads[..., 2].max())
     draw.surface(ax, quads, stable)
@@ -180,7 +182,7 @@ def plot(result):
         ax = fig.add_subplot(1, 2, n + 1, projection="3d", computed_zorder=False)
         diagrams = family[scaling]
         ys = [d["yfp"] for d in diagrams]
-        ax.set(xlim=(0, mg.V_MAX), ylim=(0, Y_MAX) if scaling == "fixed" else (0, max(ys)))
+        ax.set(xlim=(0, yfp_runs.V_MAX), ylim=(0, Y_MAX) if scaling == "fixed" else (0, max(ys)))
         orbit_surface(ax, diagrams, result["hopf_curves"] if scaling == "fixed" else [])
         if scaling == "ratio":
             for k in range(3):   # the Hopf speeds do not move with y_fp
@@ -197,7 +199,8 @@ def plot(result):
                 ax.plot(Vs, ys, numpy.asarray(curve["psi_amp"]) * DEG, zorder=4, **FOLD)
             for lo, hi, name in ((0.0, window["a"], "R1"), (window["b"], window["c"], "R2")):
                 ax.add_collection3d(Poly3DCollection(
-                    [[(0, lo, 0), (mg.V_LIMIT, lo, 0), (mg.V_LIMIT, hi, 0), (0, hi, 0)]],
+                    [[(0, lo, 0), (yfp_runs.V_LIMIT, lo, 0), (yfp_runs.V_LIMIT, hi, 0),
+                      (0, hi, 0)]],
                     facecolor=draw.palette.ALLOWED, alpha=0.5, zorder=0))
                 ax.text(60, 0.5 * (lo + hi), 0, name, fontsize=8, zorder=5)
             ax.set_title(r"(b) $\epsilon$ = 0.1 mm (R1, R2: stable up to 120 m/s)", y=0.95)

@@ -6,7 +6,7 @@ inside R1.  Fig. 19 reads kappa* from its cached result.
 (build/fig18_v1/, build/figures/fig18_v1.*).
 
 a, b, c and the region map come from the eigenvalues of straight rolling
-(magnitude.window_points, magnitude.growth) on an F* grid; a and b are also
+(kappa_criterion.window_points, kappa_criterion.growth) on an F* grid; a and b are also
 continued by AUTO as curves of Hopf points at V = 120 m/s in (y_fp, F*) as a
 check.  The regions drawn are bounded by the curves a, b, c and the
 pitchfork; the cells of the eigenvalue grid only label them (shared.regions)."""
@@ -15,11 +15,13 @@ import numpy
 from matplotlib.colors import ListedColormap
 from matplotlib.patches import Patch
 
+from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import runerror
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion
+from mlgshimmy.shared import yfp_runs
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import regions
@@ -44,9 +46,9 @@ DECLARED = {
     },
 }
 
-FSTARS = mg.ENVELOPE_LOADS
+FSTARS = kappa_criterion.ENVELOPE_LOADS
 MAP_KAPPA = numpy.geomspace(0.05, 8.0, 50)
-MAP_SPEEDS = numpy.linspace(mg.V_MIN, mg.V_LIMIT, 30)
+MAP_SPEEDS = numpy.linspace(yfp_runs.V_MIN, yfp_runs.V_LIMIT, 30)
 REGIONS = ("R1", "R2", "gentle oscillations", "high-frequency shimmy", "static yaw")
 COLOURS = (draw.palette.ALLOWED, draw.palette.ALLOWED, draw.palette.ATTRACTOR["low"],
            draw.palette.ATTRACTOR["high"], draw.palette.ATTRACTOR["yaw"])
@@ -57,37 +59,39 @@ CURVES = (("a", draw.STABLE, "-"), ("b", draw.STABLE, "--"), ("c", draw.palette.
 
 def region(Fstar, kappa, b, **model):
     """Index in REGIONS of what straight rolling does for V <= 120 m/s."""
-    worst = {band: max(mg.growth(Fstar, kappa * mg.EPSILON, V, **model)[band]
+    worst = {band: max(kappa_criterion.growth(Fstar, kappa * freeplay.EPSILON, V, **model)[band]
                        for V in MAP_SPEEDS)
-             for band in mg.BANDS}
+             for band in kappa_criterion.BANDS}
     if worst["high"] > 0:
         return 3
     if worst["real"] > 0:
         return 4
     if worst["low"] > 0:
         return 2
-    return 0 if b is None or kappa * mg.EPSILON < b else 1
+    return 0 if b is None or kappa * freeplay.EPSILON < b else 1
 
 
 def auto_check(rundir, **model):
     """a and b continued by AUTO in (y_fp, F*) at V = 120 from F* = 1:
     {name: [runs]}; a run that fails is reported and left out."""
-    window = mg.window_points(mg.FSTAR, **model)
+    window = kappa_criterion.window_points(yfp_runs.FSTAR, **model)
     out = {}
     for name in ("a", "b"):
         out[name] = []
         if not numpy.isfinite(window[name]):
-            mg.progress("fig18", f"AUTO: {name} lies beyond the scan (y_fp > "
-                                 f"{mg.YFP_MAX:g} mm) at F* = {mg.FSTAR:g}: not continued")
+            yfp_runs.progress("fig18", f"AUTO: {name} lies beyond the scan (y_fp > "
+                                       f"{yfp_runs.YFP_MAX:g} mm) at F* = "
+                                       f"{yfp_runs.FSTAR:g}: not continued")
             continue
-        curve = mg.window_point_curve(rundir, name, window[name], mg.FSTAR,
+        curve = yfp_runs.window_point_curve(rundir, name, window[name], yfp_runs.FSTAR,
                                       (FSTARS[0], FSTARS[-1]), **model)
         for d, run in curve.items():
             if isinstance(run, runerror.RunError):
-                mg.progress("fig18", f"AUTO: {name} continued {d} in F* stops, left out: {run.brief}")
+                yfp_runs.progress("fig18", f"AUTO: {name} continued {d} in F* stops, left out: "
+                                           f"{run.brief}")
             else:
                 out[name].append(run)
-                mg.progress("fig18", f"AUTO: {name} continued {d} in F*")
+                yfp_runs.progress("fig18", f"AUTO: {name} continued {d} in F*")
     return out
 
 
@@ -96,21 +100,22 @@ def runs(where="fig18", **model):
     rundir = paths.rundir(where)
     points = []
     for Fstar in FSTARS:
-        points.append(mg.window_points(Fstar, **model))
+        points.append(kappa_criterion.window_points(Fstar, **model))
         p = points[-1]
-        mg.progress(where, f"F* = {Fstar:.2f}: a {p['a']}, b {p['b']}, c {p['c']:.5g} "
+        yfp_runs.progress(where, f"F* = {Fstar:.2f}: a {p['a']}, b {p['b']}, c {p['c']:.5g} "
                            f"(V {'-' if p['V_c'] is None else format(p['V_c'], '.3g')}), "
                            f"pitchfork {p['p']:.5g}")
     grid = numpy.array([[region(p["Fstar"], k, p["b"], **model) for k in MAP_KAPPA]
                         for p in points])
-    mg.progress(where, "region map done")
+    yfp_runs.progress(where, "region map done")
     return points, grid, auto_check(rundir, **model)
 
 
 def kappa_star(points, **model):
     """min over F* of the smallest y_fp/eps with unstable straight rolling:
     the grid minimum, refined on a grid 10 times finer around it."""
-    return mg.kappa_star(lambda F: mg.window_points(F, **model), FSTARS, model, points)
+    return kappa_criterion.kappa_star(lambda F: kappa_criterion.window_points(F, **model), FSTARS,
+                                      model, points)
 
 
 def numbers(points, auto, kappa, best):
@@ -119,11 +124,11 @@ def numbers(points, auto, kappa, best):
         if round(p["Fstar"] * 10, 6) % 2 == 0:
             for k in "abcp":
                 if p[k] is not None and numpy.isfinite(p[k]):
-                    out[f"F* = {p['Fstar']:.1f}: {k} [y_fp/eps]"] = p[k] / mg.EPSILON
+                    out[f"F* = {p['Fstar']:.1f}: {k} [y_fp/eps]"] = p[k] / freeplay.EPSILON
     for name, runs in auto.items():
         # where the scan's point lies on V = 120 (b may lie at lower V)
         at_limit = [p for p in points
-                    if p["V_" + name] == mg.V_LIMIT and numpy.isfinite(p[name])]
+                    if p["V_" + name] == yfp_runs.V_LIMIT and numpy.isfinite(p[name])]
         for run in runs:
             Fs, ys = numpy.asarray(run[0]["Fstar"]), numpy.asarray(run[0]["yfp"])
             order = numpy.argsort(Fs)
@@ -139,7 +144,7 @@ def compute(name="fig18", variant=0):
     model.update(gear.parameters())   # the side-stay geometry ({} at the paper's)
     points, grid, auto = runs(name, **model)
     kappa, best = kappa_star(points, **model)
-    mg.progress(name, "kappa* refined")
+    yfp_runs.progress(name, "kappa* refined")
     return {"name": name, "variant": variant, "numbers": numbers(points, auto, kappa, best),
             "kappa_star": kappa,
             "kappa_star_Fstar": best["Fstar"], "points": points, "grid": grid,
@@ -158,7 +163,7 @@ def edge_curves(points):
     placed beyond the plot's right edge, so the curve leaves through it."""
     Fs = [p["Fstar"] for p in points]
     return {name: ([BEYOND * MAP_KAPPA[-1] if p[name] is None or not numpy.isfinite(p[name])
-                    else p[name] / mg.EPSILON for p in points], Fs) for name in EDGES}
+                    else p[name] / freeplay.EPSILON for p in points], Fs) for name in EDGES}
 
 
 def painted_regions(points, grid, raster_F):
@@ -186,14 +191,14 @@ def plot(result):
                   vmax=len(REGIONS) - 0.5, alpha=0.8, shading="nearest", rasterized=True)
     Fs = [p["Fstar"] for p in points]
     for name, colour, line in CURVES:
-        ys = numpy.array([numpy.nan if p[name] is None else p[name] / mg.EPSILON
+        ys = numpy.array([numpy.nan if p[name] is None else p[name] / freeplay.EPSILON
                           for p in points])
         if numpy.isfinite(ys).any():   # a curve with no point (no pitchfork at a geometry)
             ax.plot(ys, Fs, color=colour, ls=line, lw=1.6,
                     label=name if name != "p" else "pitchfork")
     for run in auto:
-        ax.plot(numpy.asarray(run["yfp"]) / mg.EPSILON, run["Fstar"], color=draw.palette.ON_FILL,
-                ls=":", lw=1)
+        ax.plot(numpy.asarray(run["yfp"]) / freeplay.EPSILON, run["Fstar"],
+                color=draw.palette.ON_FILL, ls=":", lw=1)
     ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
                                FSTARS[-1] - FSTARS[0], fill=False, hatch="//", lw=1.2))
     handles = ax.get_legend_handles_labels()[0] + [

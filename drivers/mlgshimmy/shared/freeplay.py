@@ -1,7 +1,7 @@
 """The torque-link stiffness profile of eq. (15), or of the gear's freeplay
 law (shared.gear: FREEPLAY=), under the two ways of varying the freeplay
 y_fp (section III), with no AUTO import: Fig. 15 draws from it alone, the
-magnitude figures (shared.magnitude) run AUTO on it.
+magnitude figures (shared.yfp_runs) run AUTO on it.
 
 Scalings: "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1, eps_abs = 0),
 "fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).

@@ -21,11 +21,13 @@ import sys
 import matplotlib.pyplot as plt
 import numpy
 
+from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import runerror
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion
+from mlgshimmy.shared import yfp_runs
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paths
 
@@ -54,7 +56,7 @@ VARIANTS = (0, 1)
 STAGE_SWITCHES = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.34)
 C_PSI = (410.0, 567.0)               # table value and halfway to `figures`
 TYRE_LOADS = (15e3, 30e3, 45e3, 60e3)  # F_tyre_min [N]; 0 is the paper's laws
-LOADS = mg.CRITERION_LOADS
+LOADS = kappa_criterion.CRITERION_LOADS
 
 
 def base_assumption():
@@ -80,14 +82,14 @@ AXES = {"strut": "strut variant", "stage": r"stage switch $\eta_s$ [m] (variant 
 def first_unstable(Fstar, **overrides):
     """At one load: the smallest y_fp [mm] with straight rolling unstable for
     some V <= V_LIMIT, that speed, and the static compression eta* [m]
-    (magnitude.least_unstable)."""
-    return mg.least_unstable(Fstar, **overrides)
+    (kappa_criterion.least_unstable)."""
+    return kappa_criterion.least_unstable(Fstar, **overrides)
 
 
 def kappa_star(overrides):
     """{kappa, Fstar, V, eta, mode} at the minimum over the envelope's loads,
     for the run's gear (shared.gear) with the overrides."""
-    return mg.criterion({**overrides, **gear.parameters()})
+    return kappa_criterion.criterion({**overrides, **gear.parameters()})
 
 
 def write(name, data):
@@ -117,7 +119,7 @@ def scan(group):
     results = []
     for item in GROUPS[group]:
         results.append({**item, **kappa_star(item["overrides"])})
-        mg.progress("criterion", f"{group} {item['x']:g} (variant {item['variant']}): "
+        yfp_runs.progress("criterion", f"{group} {item['x']:g} (variant {item['variant']}): "
                                  f"kappa* = {results[-1]['kappa']:.4f} at F* = "
                                  f"{results[-1]['Fstar']:.3f}")
     write(group, results)
@@ -144,12 +146,12 @@ def auto_kappa(variant, scanned):
     The curve stays off the oleo's stage switch (F* ~ 0.63-0.70), where at
     side-stay angles it stops (MX) with steps of 1e-10.  Only valid where
     the scan's minimum lies on V = V_LIMIT (checked by auto())."""
-    low, high = mg.ENVELOPE_LOADS[0], mg.ENVELOPE_LOADS[-1]
+    low, high = kappa_criterion.ENVELOPE_LOADS[0], kappa_criterion.ENVELOPE_LOADS[-1]
     here = scanned["Fstar"]
     stop = (max(low, here - AUTO_SPAN), min(high, here + AUTO_SPAN))
     model = {"strut_variant": float(variant), **gear.parameters()}
-    curve = mg.window_point_curve(paths.rundir(os.path.join("criterion", "auto")),
-                                  f"a_v{variant}", scanned["kappa"] * mg.EPSILON, here, stop,
+    curve = yfp_runs.window_point_curve(paths.rundir(os.path.join("criterion", "auto")),
+                                  f"a_v{variant}", scanned["kappa"] * freeplay.EPSILON, here, stop,
                                   dsmax=0.005, **model)
     pieces = {}
     for direction, run in curve.items():
@@ -164,7 +166,7 @@ def auto_kappa(variant, scanned):
     F = numpy.r_[pieces["down"][0][:0:-1], pieces["up"][0]]
     y = numpy.r_[pieces["down"][1][:0:-1], pieces["up"][1]]
     Fmin, ymin = parabola_minimum(F, y)
-    kappa = ymin / mg.EPSILON
+    kappa = ymin / freeplay.EPSILON
     return {"variant": variant, "kappa": kappa, "Fstar": Fmin, "points": len(F),
             "scan": scanned["kappa"], "relative difference": kappa / scanned["kappa"] - 1}
 
@@ -175,15 +177,15 @@ def auto():
     the speed limit, e.g. kappa* = 0 at side-stay angles) the reason."""
     results = []
     for item in read("strut"):
-        if item["V"] != mg.V_LIMIT:
+        if item["V"] != yfp_runs.V_LIMIT:
             results.append({"variant": item["variant"], "scan": item["kappa"],
                             "skipped": f"the scan's minimum lies at V = {item['V']:.3f} m/s, "
-                                       f"not on V = {mg.V_LIMIT:g} (no point a to continue)"})
-            mg.progress("criterion", f"AUTO, variant {item['variant']}: no check: "
+                                       f"not on V = {yfp_runs.V_LIMIT:g} (no point a to continue)"})
+            yfp_runs.progress("criterion", f"AUTO, variant {item['variant']}: no check: "
                                      f"{results[-1]['skipped']}")
             continue
         results.append(auto_kappa(item["variant"], item))
-        mg.progress("criterion", f"AUTO, variant {item['variant']}: kappa* = "
+        yfp_runs.progress("criterion", f"AUTO, variant {item['variant']}: kappa* = "
                                  f"{results[-1]['kappa']:.4f} at F* = {results[-1]['Fstar']:.3f} "
                                  f"(scan {item['kappa']:.4f})")
     write("auto", results)

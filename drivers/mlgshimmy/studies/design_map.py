@@ -16,10 +16,10 @@ version, parameter set, settings()), at the complete equations (eom_terms =
     (stable straight rolling beside stable large shimmy);
   kappa* (eq. 17, eps = 0.1 mm, V <= 120 m/s, F* in [0.1, 2]) with the load,
     speed and mode where it is set (the criterion's recipe,
-    magnitude.least_unstable and kappa_star), the freeplay it allows,
+    kappa_criterion.least_unstable and kappa_star), the freeplay it allows,
     kappa* x eps in mm, and whether it is set on the oleo's stage switch,
     with kappa* over the loads off the switch beside it
-    (magnitude.kappa_star_off_switch);
+    (kappa_criterion.kappa_star_off_switch);
   the static torque-link position y_tlk/y_fp of straight rolling at F* = 1
     (y_fp = 1 mm) and at kappa*'s point (whether the links sit against one
     side of the freeplay).
@@ -59,7 +59,7 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import geometry
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import naming
 from mlgshimmy.shared import paths
@@ -95,7 +95,7 @@ PSI_AMP_STOP = 0.01          # rad: the branch from H3 is followed to here, past
 # that reached it (S within 2e-5 m/s of DSMAX 1's at four geometries, for
 # 60-75 % of the CPU)
 ORBIT_STEPS = {"DS": 0.05, "DSMAX": 3.0, "NMX": 2000, "DSMIN": 1e-9}
-KAPPA_LOADS = mg.ENVELOPE_LOADS[::2]        # as studies.criterion
+KAPPA_LOADS = kappa_criterion.ENVELOPE_LOADS[::2]        # as studies.criterion
 KAPPA_FINER = (5, 4)
 HOPF_NAMES = ("H1", "H2", "H3")   # the paper's points, by mode (shared.naming)
 # the quantities of a point: (key, table heading, unit or "", format)
@@ -207,9 +207,9 @@ def kappa(values, loads=KAPPA_LOADS, finer=KAPPA_FINER):
     """kappa* over the envelope's loads (the criterion's recipe), the
     freeplay it allows (kappa_yfp = kappa* eps [mm]), whether its load lies
     in the oleo's stage-switch window, and kappa* over the loads off it."""
-    least = functools.lru_cache(maxsize=None)(lambda F: mg.least_unstable(F, **values))
-    value, best = mg.kappa_star(least, loads, values, finer=finer)
-    off, off_best, window = mg.kappa_star_off_switch(least, loads, values, finer=finer)
+    least = functools.lru_cache(maxsize=None)(lambda F: kappa_criterion.least_unstable(F, **values))
+    value, best = kappa_criterion.kappa_star(least, loads, values, finer=finer)
+    off, off_best, window = kappa_criterion.kappa_star_off_switch(least, loads, values, finer=finer)
     return {"kappa": value, "kappa_Fstar": best["Fstar"], "kappa_V": best["V"],
             "kappa_mode": best["mode"], "kappa_eta": best["eta"], "kappa_yfp": best["first"],
             "switch_window": list(window) if window else None,
@@ -262,8 +262,9 @@ def compute(rho, mu, rundir):
     out["ytlk_ratio"] = stage("links", lambda: link_position(
         values, FSTAR, FREEPLAY["yfp"], {k: FREEPLAY[k] for k in ("eps_abs", "eps_rel")}))
     # no freeplay to sit in where kappa* = 0 (unstable without freeplay)
-    out["ytlk_ratio_kappa"] = link_position(values, out["kappa_Fstar"], out["kappa_yfp"],
-                                            mg.SCALINGS["fixed"]) if out["kappa_yfp"] else None
+    out["ytlk_ratio_kappa"] = link_position(
+        values, out["kappa_Fstar"], out["kappa_yfp"], freeplay.SCALINGS["fixed"]) \
+        if out["kappa_yfp"] else None
     out["cpu_seconds"] = seconds
     return out
 
@@ -389,7 +390,7 @@ def summary(points, results, provenance, mark=None):
     jobs.write_json(os.path.join(tables, "design_map.json"),
                     {"grid": {"rho_deg": sorted({c["rho_deg"] for c in cells}),
                               "mu_deg": sorted({c["mu_deg"] for c in cells})},
-                     "eom_terms": EOM, "freeplay": FREEPLAY, "epsilon_mm": mg.EPSILON,
+                     "eom_terms": EOM, "freeplay": FREEPLAY, "epsilon_mm": freeplay.EPSILON,
                      "mark": None if yours is None else
                      {"rho_deg": mark[0], "mu_deg": mark[1], "nearest":
                       [yours["rho_deg"], yours["mu_deg"]]},

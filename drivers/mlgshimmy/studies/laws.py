@@ -1,5 +1,5 @@
 """Eq. (17)'s allowed freeplay kappa* for every freeplay law of
-c/freeplay_laws.h, by the criterion's recipe (shared.magnitude.criterion:
+c/freeplay_laws.h, by the criterion's recipe (shared.kappa_criterion.criterion:
 eigenvalue scans, no AUTO): the largest y_fp / eps with straight rolling
 stable up to 120 m/s at every load, eps = 0.1 mm.  With eq. (14), which
 has no eps, the number read is the freeplay y_fp itself that first
@@ -8,8 +8,10 @@ destabilises straight rolling, over 0.1 mm.
     make laws          # under a minute; the table in build/tables/laws.txt
     make laws-plot     # the table again from the cache
 """
+from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import gear, jobs, mlgmodel, paths
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion
+from mlgshimmy.shared import yfp_runs
 
 DECLARED = {
     "laws": {
@@ -29,11 +31,11 @@ FIGURE = "laws"
 def compute():
     out = {}
     for law, name in enumerate(mlgmodel.LAWS):
-        found = mg.criterion({**gear.parameters(), "freeplay_law": law})
+        found = kappa_criterion.criterion({**gear.parameters(), "freeplay_law": law})
         print(f"laws: {name}: kappa* = {found['kappa']:.6g} at F* = {found['Fstar']:g}, "
               f"V = {found['V']} m/s ({found['mode']} mode)")
         out[name] = found
-    return {"kappa": out, "eps_mm": mg.EPSILON}
+    return {"kappa": out, "eps_mm": freeplay.EPSILON}
 
 
 def plot(result):
@@ -44,7 +46,7 @@ def plot(result):
                      str(k["mode"])))
     widths = [max(len(r[c]) for r in rows) for c in range(len(rows[0]))]
     text = (f"laws: eq. (17)'s kappa* by freeplay law (eps = {result['eps_mm']:g} mm; "
-            f"straight rolling stable up to {mg.V_LIMIT:g} m/s at every load)"
+            f"straight rolling stable up to {yfp_runs.V_LIMIT:g} m/s at every load)"
             + (f" at {gear.describe()}" if not gear.current().baseline else "") + "\n"
             + "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip()
                         for r in rows) + "\n")

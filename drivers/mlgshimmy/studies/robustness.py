@@ -1,7 +1,7 @@
 """Robustness of the answers to a changed model: one parameter at a time
 at x0.8, x0.9, x1.1 and x1.2 of its value, every target made for that gear
 (`make <target> SET='<name>=<value>'`, shared.gear), and kappa* (eq. 17,
-magnitude.criterion).  A job completes when every target does with every
+kappa_criterion.criterion).  A job completes when every target does with every
 named point reported (a point that no longer exists is reported as
 vanished; one whose branch could not be followed is not).
 
@@ -25,7 +25,7 @@ import sys
 import time
 
 from mlgshimmy.shared import children, gear, mlgmodel, overlay, paths
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion
 from mlgshimmy.shared.jobs import grid as jobgrid
 from mlgshimmy.shared.jobs.atomic import write_text
 
@@ -166,7 +166,7 @@ def run_job(name):
                  f"{log})") + f" in {seconds:g} s", flush=True)
     started = time.monotonic()
     try:
-        kappa = mg.criterion(model.parameters())["kappa"]
+        kappa = kappa_criterion.criterion(model.parameters())["kappa"]
         done = True
     except (RuntimeError, ValueError) as exc:
         kappa, done = None, False
@@ -207,7 +207,7 @@ def summary(points, results, provenance):
     widths = [max(len(row[k]) for row in rows) for k in range(len(head))]
     lines += ["  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip() for row in rows]
     lines.append("speeds in m/s; in brackets the change against the baseline row; kappa* "
-                 "by eq. (17), magnitude.criterion")
+                 "by eq. (17), kappa_criterion.criterion")
     for result in results:
         for target, t in result["targets"].items():
             if not t["complete"]:

@@ -11,10 +11,10 @@ from mlgshimmy.figures.fig11.plane import (GEOMETRY, MODEL, F_MAX, F_MIN, SLICES
                                            on_curves)
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import magnitude
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import stationary
+from mlgshimmy.shared.stage_switch import stage_switch_window
 
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
 
@@ -50,7 +50,7 @@ FOLD_ENDS = ct.Ends(fold_end_explained, "neither inside the stage switch nor on 
 @functools.lru_cache(maxsize=None)
 def stage_switch():
     """The stage-switch window of the plane's loads (ends.inside)."""
-    return magnitude.stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
+    return stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
 
 
 def curves(rundir, parameter_set="figures"):

@@ -9,7 +9,7 @@ from mlgshimmy.figures.fig11.plane import (F_MAX, F_MIN, FREEPLAY, GEOMETRY, V_M
                                            on_curves)
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import magnitude
+from mlgshimmy.shared import kappa_criterion
 
 # MX ends of two curves of one kind closer than this (in V/V_MAX and
 # F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
@@ -60,7 +60,7 @@ def mx_ends(drawn):
 
 # The stage switch as Fig. 11 marks it: eta* of straight rolling within
 # this many 1/k_stage of eta_s, where the switch's stiffness is above 1 %
-# of its peak (magnitude.stage_switch_window; F* 0.627-0.700 at the three
+# of its peak (stage_switch.stage_switch_window; F* 0.627-0.700 at the three
 # geometries run).  AUTO's step falls below DSMIN there: the H3 Hopf curve
 # stops at F* = 0.6949 (rho = mu = 10 deg, |eta* - eta_s| = 3.0 / k_stage)
 SWITCH_WIDTHS = 10.0
@@ -86,7 +86,7 @@ FOLD_TOL = 0.002
 def on_hopf_locus(stop):
     """Whether straight rolling at the end's (V, F*) has a complex pair of
     eigenvalues within GH_RATE of the imaginary axis."""
-    rates = magnitude.growth(stop["Fstar"], FREEPLAY["yfp"], stop["V"], scaling="ratio",
+    rates = kappa_criterion.growth(stop["Fstar"], FREEPLAY["yfp"], stop["V"], scaling="ratio",
                              **GEOMETRY)
     return min(abs(rates["low"]), abs(rates["high"])) < GH_RATE
 

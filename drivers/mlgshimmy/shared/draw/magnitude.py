@@ -1,11 +1,11 @@
 """Drawing the freeplay-magnitude results of Figs. 13-19 (section IV.D):
 orbits continued in y_fp and diagrams in V, from their cached records
-(magnitude.stored_orbits, magnitude.stored_diagram)."""
+(yfp_stored.stored_orbits, yfp_stored.stored_diagram)."""
 import numpy
 from matplotlib.lines import Line2D
 
 from mlgshimmy.shared import draw, jobs
-from mlgshimmy.shared.magnitude import V_ORBITS
+from mlgshimmy.shared.yfp_runs import V_ORBITS
 
 ORBIT_COLOURS = dict(zip(V_ORBITS, draw.sequence(len(V_ORBITS))))
 

@@ -1,0 +1,85 @@
+"""The cached forms of the freeplay-magnitude runs (yfp_runs): diagrams in V,
+orbits in y_fp and curves in (y_fp, V) as plain data, the parts of a figure
+made of diagrams, and the numbers they print."""
+import os
+
+from mlgshimmy.shared import jobs, paths
+from mlgshimmy.shared.yfp_runs import V_ORBITS, curve_points, diagram_in_V, orbit_curve, orbits_in_yfp
+
+
+def stored_orbits(orbits):
+    """The orbits of orbits_in_yfp for the cache: [(V, {"yfp", "psi_amp",
+    "freq", "stable"})], each joined by orbit_curve."""
+    out = []
+    for V, runs in orbits.items():
+        ys, amp, stable = orbit_curve(runs, "psi_amp")
+        out.append((V, {"yfp": ys, "psi_amp": amp, "freq": orbit_curve(runs, "freq")[1],
+                        "stable": stable}))
+    return out
+
+
+COLUMNS = ("V", "psi_amp", "freq")
+
+
+def stored_diagram(diagram):
+    """A Diagram in V for the cache: y_fp, scaling, Hopf points, folds
+    (V, psi_amp), the orbit branches (jobs.stored) and per orbit run its
+    first and smallest V (a turn AUTO may not label LP)."""
+    return {"yfp": diagram.yfp, "scaling": diagram.scaling, "hopf": diagram.hopf,
+            "hopf_names": [p["name"] for p in diagram.named],
+            "folds": [(V, amp) for _, _, V, amp in diagram.folds()],
+            "branches": [b for run in diagram.branches for b in jobs.stored(run, COLUMNS)],
+            "turns": [(run[0]["V"][0], min(run[0]["V"])) for run in diagram.branches]}
+
+
+def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_ORBITS, **model):
+    """The parts of a figure made of diagrams in V (jobs.Parts): one per
+    y_fp, named <prefix>y<y_fp>, computing the stored diagram (runs
+    <prefix>y<y_fp>_hb<i>, _po<i>, in the part's own run directory
+    $MLG_RUN_ROOT/<figure>/<part>/); the one at y_fp = orbits_at (named
+    ..._orbits) also continues its stable orbits at V_ORBITS in y_fp."""
+    def job(y, name):
+        def run():
+            rundir = paths.rundir(os.path.join(figure, name))
+            d = diagram_in_V(rundir, f"{prefix}y{y:g}", scaling, y, uzr=uzr, figure=figure,
+                             **model)
+            out = {"diagram": stored_diagram(d)}
+            if y == orbits_at:
+                out["orbits"] = stored_orbits(orbits_in_yfp(rundir, d, figure, **model))
+            return out
+        return run
+    names = {y: f"{prefix}y{y:g}" + ("_orbits" if y == orbits_at else "") for y in freeplays}
+    return {names[y]: job(y, names[y]) for y in freeplays}
+
+
+def diagrams_of(done, prefix=""):
+    """(stored diagrams in order, stored orbits or None) from the computed
+    parts {name: data} of diagram_jobs(..., prefix)."""
+    done = [data for name, data in done.items() if name.startswith(prefix + "y")]
+    orbits = [p["orbits"] for p in done if "orbits" in p]
+    return [p["diagram"] for p in done], (orbits[0] if orbits else None)
+
+
+def diagram_numbers(diagrams, prefix=""):
+    """{quantity: value}: the Hopf and fold speeds of stored diagrams, as
+    "<prefix>y_fp = <y>: <name> [m/s]" (the Hopf points named by their mode,
+    shared.naming) and "...: S<k> [m/s]"."""
+    out = {}
+    for d in diagrams:
+        for name, (V, _) in zip(d["hopf_names"], d["hopf"]):
+            out[f"{prefix}y_fp = {d['yfp']:g}: {name} [m/s]"] = V
+        for k, (V, _) in enumerate(d["folds"]):
+            out[f"{prefix}y_fp = {d['yfp']:g}: S{k + 1} [m/s]"] = V
+    return out
+
+
+def stored_curves(curves, columns=("yfp", "V")):
+    """Curves (pairs of runs) for the cache: [{column: polyline}]
+    (curve_points); "freq" is 1/T along a curve with the period printed."""
+    out = []
+    for curve in curves:
+        line = {c: curve_points(curve, "yfp", c)[1] for c in columns if c != "freq"}
+        if "freq" in columns:
+            line["freq"] = 1.0 / curve_points(curve, "yfp", "T")[1]
+        out.append(line)
+    return out
