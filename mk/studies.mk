@@ -121,14 +121,14 @@ $(eval $(call job_grid,atlas,$(ATLAS_ARGS),$$(PYDEPS_atlas) $(MLG_SIMULATE) $(ML
 torus: $(AUTO_DRIVER_DEPS) $(MLG_SIMULATE)
 	$(PYTHON) -m mlgshimmy.studies.torus_check
 
-# The reproduction report (studies.report): one HTML page from the cached
+# The reproduction report (mlgshimmy.report): one HTML page from the cached
 # results, tables and PNGs of what has been made -- it computes nothing, so
 # make the figures first (make figures) -- in $(RUN_ROOT)/report/index.html,
 # and report.pdf beside it when Chromium is installed (headless print).
 REPORT_DIR := $(RUN_ROOT)/report
 .PHONY: report
 report: | $(MLG_SHARED)
-	$(PYTHON) -m mlgshimmy.studies.report --out $(REPORT_DIR)
+	$(PYTHON) -m mlgshimmy.report --out $(REPORT_DIR)
 	@set -e; if command -v chromium >/dev/null 2>&1; then \
 	    timeout 120 chromium --headless --no-sandbox --disable-gpu --no-pdf-header-footer \
 	        --print-to-pdf=$(REPORT_DIR)/report.pdf file://$(REPORT_DIR)/index.html \

@@ -10,7 +10,7 @@ import pytest
 
 from helpers import ROOT
 from mlgshimmy.shared import checks
-from mlgshimmy.studies import report
+from mlgshimmy import report
 
 ENTRIES = sorted({(feature, test) for _, found in checks.CHECKS.values() for feature, test in found})
 

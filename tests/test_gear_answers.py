@@ -1,4 +1,4 @@
-"""make gear's page (shared.gear_answers through studies.report): at a
+"""make gear's page (shared.gear_answers through mlgshimmy.report): at a
 changed gear the report opens with the design answers read from the
 cached Figs. 10 and 18, the paper's gear beside each; a vanished Hopf
 point and a figure not made say so."""

@@ -1,4 +1,4 @@
-"""make report (mlgshimmy.studies.report) from a small fake run root in
+"""make report (mlgshimmy.report) from a small fake run root in
 tmp_path: the page names every figure, every <img> it shows exists beside
 it, the scorecard has one row per number the paper prints (shared.paper
 PAPER) and per held-out value (HELD_OUT) with the status the tables give,
@@ -21,7 +21,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
 
 from mlgshimmy.shared import paper  # noqa: E402
-from mlgshimmy.studies import report  # noqa: E402
+from mlgshimmy import report  # noqa: E402
 
 OURS = {"fig07": {"H, F* = 1 [m/s]": 346.1000001},
         "fig10": {"H1 [m/s]": 1.45816, "H2 [m/s]": 28.3067, "H3 [m/s]": 144.27,

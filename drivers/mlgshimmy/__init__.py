@@ -4,6 +4,8 @@
   figures  one module (or package) per figure of the paper
   studies  the studies beyond the paper's figures
 
+and, beside them, report (make report: one page from what they cached).
+
 Figures and studies import the shared layer, never each other; the shared
 layer imports neither (tests/test_rooms.py).  drivers/README.md has the map.
 """

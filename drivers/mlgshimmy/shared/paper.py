@@ -1,6 +1,6 @@
 """The paper's printed numbers next to ours: one table per figure, printed
 and stored as build/tables/<fig>.txt, and as <fig>.json for the
-reproduction report (studies.report).
+reproduction report (mlgshimmy.report).
 
     paper.report("fig10", ours_figures, ours_table)
 

@@ -14,7 +14,6 @@ import json
 import math
 import os
 import resource
-import subprocess
 import time
 from typing import Any, Callable, Optional
 
@@ -23,6 +22,7 @@ import numpy
 from mlgshimmy.shared import autosession, branches, gear, paths
 from mlgshimmy.shared.jobs import locks
 from mlgshimmy.shared.jobs.atomic import write_json
+from mlgshimmy.shared.provenance import auto_version, git_commit
 
 
 class MissingResult(RuntimeError):
@@ -35,35 +35,6 @@ def path(figure: str, part: Optional[str] = None, root: Optional[str] = None) ->
     where = [figure] if part is None else [figure, "parts"]
     name = "result.json" if part is None else f"{part}.json"
     return os.path.join(root, *where, name) if root else paths.under_root(*where, name)
-
-
-def _auto_version() -> Optional[str]:
-    """The first line of the AUTO tree's CHANGELOG (a source build), else
-    the Debian package's version (an installed AUTO ships none)."""
-    where = autosession.auto_dir()
-    try:
-        with open(os.path.join(where, "CHANGELOG")) as log:
-            return log.readline().strip().rstrip(":")
-    except OSError:
-        pass
-    proc = subprocess.run(["dpkg-query", "-S", where], capture_output=True, text=True)
-    package = proc.stdout.split(":")[0].strip() if proc.returncode == 0 else ""
-    if not package:
-        return None
-    version = subprocess.run(["dpkg-query", "-W", "-f=${Version}", package],
-                             capture_output=True, text=True).stdout.strip()
-    return f"{package} {version}" if version else None
-
-
-def _git_commit() -> Optional[str]:
-    """HEAD, with "+dirty" if the drivers, constants, C sources or models
-    differ from it."""
-    def git(*args):
-        return subprocess.run(["git", "-C", paths.ROOT, *args], capture_output=True,
-                              text=True).stdout.strip()
-    head = git("rev-parse", "HEAD")
-    dirty = git("status", "--porcelain", "--", "drivers", "constants", "c", "models")
-    return (head + ("+dirty" if dirty else "")) or None
 
 
 def _sha256(path: str) -> Optional[str]:
@@ -80,8 +51,8 @@ def provenance(parameter_set: str) -> dict:
     version), the model executable as linked (sha256) and the AUTO runs'
     thread count."""
     return {"parameter_set": parameter_set, "model": gear.current().record(),
-            "git_commit": _git_commit(),
-            "auto_version": _auto_version(), "auto_dir": autosession.auto_dir(),
+            "git_commit": git_commit(),
+            "auto_version": auto_version(), "auto_dir": autosession.auto_dir(),
             "auto_threads": os.environ.get("MLG_AUTO_THREADS", "1"),
             "model_sha256": _sha256(os.path.join(paths.BUILD, "models", "mlg.exe")),
             "written": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")}

@@ -6,7 +6,7 @@ and their PNGs (figures/<fig>.png, copied beside the page).  It computes
 nothing and imports no figure module: a figure not yet made shows as
 missing, with the command that makes it.
 
-    make report            # or: python3 -m mlgshimmy.studies.report [--out DIR]
+    make report            # or: python3 -m mlgshimmy.report [--out DIR]
 
 A sidebar links every part. The page opens with the scorecard (every
 number the paper prints, shared.paper.PAPER, once, beside ours, the
@@ -28,7 +28,7 @@ import shutil
 import subprocess
 import sys
 
-from mlgshimmy.shared import checks, gear_answers, paper
+from mlgshimmy.shared import autosession, checks, gear_answers, paper, provenance
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs import catalogue
 from mlgshimmy.shared.jobs.atomic import write_text
@@ -112,37 +112,13 @@ def read_summary(figure, root):
     return rows or None
 
 
-def auto_version():
-    """The AUTO-07p the drivers would use now: its CHANGELOG's first line
-    (a source build) or its Debian package's version."""
-    where = os.environ.get("AUTO_DIR")
-    if not where:
-        try:
-            with open(os.path.join(paths.BUILD, "auto-dir")) as chosen:
-                where = chosen.read().strip()
-        except OSError:
-            where = os.path.join(paths.BUILD, "auto", "07p")
-    try:
-        with open(os.path.join(where, "CHANGELOG")) as log:
-            return f"{log.readline().strip().rstrip(':')} ({where})"
-    except OSError:
-        pass
-    owner = _run("dpkg-query", "-S", where)
-    package = owner.split(":")[0].strip() if owner else ""
-    version = _run("dpkg-query", "-W", "-f=${Version}", package) if package else None
-    return f"{package} {version} ({where})" if version else f"unknown ({where})"
-
-
 def tools():
     """[(tool, version)] of what made and drew the results, read now."""
     import matplotlib
     import numpy
     first = lambda text: text.splitlines()[0] if text else "not found"   # noqa: E731
-    head = _run("git", "-C", paths.ROOT, "rev-parse", "HEAD")
-    dirty = _run("git", "-C", paths.ROOT, "status", "--porcelain", "--", "drivers", "c",
-                 "models", "constants")
-    return [("commit (now)", (head or "unknown") + ("+dirty" if dirty else "")),
-            ("AUTO-07p", auto_version()),
+    return [("commit (now)", provenance.git_commit() or "unknown"),
+            ("AUTO-07p", f"{provenance.auto_version() or 'unknown'} ({autosession.auto_dir()})"),
             ("C compiler", first(_run("cc", "--version"))),
             ("Fortran compiler", first(_run("gfortran", "--version"))),
             ("Python", f"{platform.python_version()} ({sys.executable})"),
@@ -472,7 +448,7 @@ def build(out=None, root=None):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(prog="python3 -m mlgshimmy.studies.report",
+    parser = argparse.ArgumentParser(prog="python3 -m mlgshimmy.report",
                                      description=__doc__.splitlines()[0])
     parser.add_argument("--out", help="directory of the page (default $MLG_RUN_ROOT/report)")
     args = parser.parse_args(argv)
