@@ -75,6 +75,12 @@ def _name(value: float) -> str:
     return f"{value:.12g}"
 
 
+def model_angles(rho_deg: float, mu_deg: float, eom_terms: float) -> Dict[str, float]:
+    """The model parameters of side-stay angles in degrees: rho and mu in
+    radians, and the eom_terms level (the one place degrees become them)."""
+    return {"rho": math.radians(rho_deg), "mu": math.radians(mu_deg), "eom_terms": eom_terms}
+
+
 class Geometry:
     """Side-stay angles in degrees and the eom_terms level."""
 
@@ -125,8 +131,7 @@ class Geometry:
         every baseline run is made exactly as before)."""
         if self.baseline:
             return {}
-        return {"rho": math.radians(self.rho_deg), "mu": math.radians(self.mu_deg),
-                "eom_terms": float(self.eom_terms)}
+        return model_angles(self.rho_deg, self.mu_deg, float(self.eom_terms))
 
     def simulator_params(self) -> Dict[str, str]:
         """--param NAME=VALUE of the simulator (shared.simulator.run's params)."""

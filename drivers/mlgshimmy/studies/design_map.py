@@ -133,26 +133,22 @@ def axes(args):
 def at(rho, mu):
     """The geometry of a grid point and its model parameters (eom_terms = 2
     at every point, rho = mu = 0 included)."""
-    g = geometry.Geometry(rho, mu, EOM)
-    return g, {"rho": g.parameters()["rho"], "mu": g.parameters()["mu"],
-               "eom_terms": float(EOM)}
+    return geometry.Geometry(rho, mu, EOM), geometry.model_angles(rho, mu, float(EOM))
 
 
-def check(points):
-    bad = []
-    for rho, mu in points:
-        try:
-            _, values = at(rho, mu)
-            for case in ({"yfp": 0.0}, FREEPLAY):
-                mlgmodel.Model("figures", V=ct.V_MIN, Fstar=FSTAR, **case, **values).check()
-        except geometry.GeometryError:
-            bad.append(f"rho = {rho:g} deg, mu = {mu:g} deg: the angles must lie within "
-                       "(-90, 90) degrees (DESIGN_RHO, DESIGN_MU)")
-        except ValueError as exc:
-            bad.append(f"rho = {rho:g} deg, mu = {mu:g} deg: {exc}")
-    if bad:
-        sys.exit("design_map: grid rejected before any run:\n  " + "\n  ".join(bad))
-    print(f"design_map: {len(points)} grid points valid")
+def problem(point):
+    """Why the grid point (rho, mu) cannot be run, or None."""
+    rho, mu = point
+    try:
+        _, values = at(rho, mu)
+        for case in ({"yfp": 0.0}, FREEPLAY):
+            mlgmodel.Model("figures", V=ct.V_MIN, Fstar=FSTAR, **case, **values).check()
+    except geometry.GeometryError:
+        return (f"rho = {rho:g} deg, mu = {mu:g} deg: the angles must lie within "
+                "(-90, 90) degrees (DESIGN_RHO, DESIGN_MU)")
+    except ValueError as exc:
+        return f"rho = {rho:g} deg, mu = {mu:g} deg: {exc}"
+    return None
 
 
 def speeds(values):
@@ -408,6 +404,7 @@ def plot(cells, mark=None):
     from matplotlib.patches import Patch, Rectangle
 
     from mlgshimmy.shared import draw
+    from mlgshimmy.shared.draw.angle_map import angle_map
     rhos = sorted({c["rho_deg"] for c in cells})
     mus = sorted({c["mu_deg"] for c in cells})
     yours = nearest(cells, mark)
@@ -420,19 +417,11 @@ def plot(cells, mark=None):
         finite = values[numpy.isfinite(values)]
         diverging = key.startswith("ytlk")
         limit = max(numpy.max(numpy.abs(finite)), 1e-12) if finite.size else 1.0
-        mesh = ax.imshow(values, origin="lower", aspect="auto",
-                         cmap=draw.palette.DIVERGING_MAP if diverging
-                         else draw.palette.SEQUENCE_MAP,
-                         vmin=-limit if diverging else None, vmax=limit if diverging else None,
-                         extent=(-0.5, len(rhos) - 0.5, -0.5, len(mus) - 0.5))
-        low, high = (numpy.nanmin(values), numpy.nanmax(values)) if finite.size else (0, 1)
-        for i in range(len(mus)):
-            for j in range(len(rhos)):
-                v = values[i, j]
-                fill = mesh.cmap(mesh.norm(v)) if numpy.isfinite(v) else "white"
-                missing = "vanished" if key in HOPF_NAMES else "none"
-                ax.text(j, i, missing if not numpy.isfinite(v) else format(v, fmt.lstrip("+")),
-                        ha="center", va="center", fontsize=8, color=draw.palette.text_on(fill))
+        missing = "vanished" if key in HOPF_NAMES else "none"
+        mesh = angle_map(ax, rhos, mus, values,
+                         lambda v: format(v, fmt.lstrip("+")) if numpy.isfinite(v) else missing,
+                         draw.palette.DIVERGING_MAP if diverging else draw.palette.SEQUENCE_MAP,
+                         vmin=-limit if diverging else None, vmax=limit if diverging else None)
         for c in cells:
             j, i = rhos.index(c["rho_deg"]), mus.index(c["mu_deg"])
             if key in SWITCH_FLAGGED and c["on_switch"]:
@@ -444,11 +433,6 @@ def plot(cells, mark=None):
         if 0.0 in rhos and 0.0 in mus:     # the paper's geometry
             ax.add_patch(Rectangle((rhos.index(0.0) - 0.5, mus.index(0.0) - 0.5), 1, 1,
                                    fill=False, lw=2.2, ec=draw.NEUTRAL))
-        ax.set_xticks(range(len(rhos)), [f"{r:g}" for r in rhos])
-        ax.set_yticks(range(len(mus)), [f"{m:g}" for m in mus])
-        ax.set_xlabel(r"$\rho$ [deg]")
-        ax.set_ylabel(r"$\mu$ [deg]")
-        ax.grid(False)
         ax.set_title(heading + (f" [{unit}]" if unit else ""), fontsize=9)
         fig.colorbar(mesh, ax=ax, fraction=0.046, pad=0.03)
     for ax in axes_.flat[len(QUANTITIES):]:
@@ -491,7 +475,7 @@ def main(argv=None):
     jobgrid.main("design_map", __doc__.splitlines()[0], "point", POINTS,
                  [("--rho", DEFAULT_GRID, "rho values [deg]: a,b,c or start:stop:step"),
                   ("--mu", DEFAULT_GRID, "mu values [deg]: a,b,c or start:stop:step")],
-                 axes, run_job=run_point, check=check,
+                 axes, run_job=run_point, problem=problem,
                  summary=lambda points, results, provenance: summary(points, results,
                                                                       provenance, mark),
                  argv=rest)

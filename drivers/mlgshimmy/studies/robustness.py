@@ -21,7 +21,6 @@ ROBUST_PARAMETERS=k_tlk ROBUST_FACTORS=0.9,1.1` a part of it.
 """
 import os
 import subprocess
-import sys
 import time
 
 from mlgshimmy.shared import children, gear, mlgmodel, overlay, paths
@@ -103,17 +102,14 @@ def varied(name, factor):
     return gear.Gear(base.geometry, base.overlay + ((name, value),))
 
 
-def check(points):
-    bad = []
-    for name, factor in points:
-        model = varied(name, factor)
-        try:
-            mlgmodel.Model("figures", **model.parameters()).check()
-        except ValueError as exc:
-            bad.append(f"{name} x{factor:g}: {exc}")
-    if bad:
-        sys.exit("robustness: rejected before any run:\n  " + "\n  ".join(bad))
-    print(f"robustness: {len(points)} variations valid")
+def problem(point):
+    """Why the variation (parameter, factor) cannot be run, or None."""
+    name, factor = point
+    try:
+        mlgmodel.Model("figures", **varied(name, factor).parameters()).check()
+    except ValueError as exc:
+        return f"{name} x{factor:g}: {exc}"
+    return None
 
 
 def make_target(target, model, log):
@@ -223,7 +219,7 @@ def main():
     jobgrid.main("robustness", __doc__.splitlines()[0], "job", JOBS,
                  [("--parameters", ",".join(PARAMETERS), "parameters varied, comma-separated"),
                   ("--factors", FACTORS, "factors of each, comma-separated")],
-                 grid, run_job=run_job, check=check, summary=summary)
+                 grid, run_job=run_job, problem=problem, summary=summary)
 
 
 if __name__ == "__main__":

@@ -24,13 +24,13 @@ import sys
 
 import matplotlib.pyplot as plt
 
-from mlgshimmy.shared import autoglue, diagrams, rundirs, runerror
+from mlgshimmy.shared import diagrams, rundirs, runerror
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
-from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared import geometry
 from mlgshimmy.shared import paths
-from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared.jobs import depends
 
 # What make, make help, make submit and the report know of this study
 # (shared.jobs.catalogue reads it as text: literals only).
@@ -58,12 +58,12 @@ CASES = (("zero freeplay", "zero freeplay", "fp0", {"yfp": 0.0}),
          ("$y_{fp}$ = 1 mm, $\\epsilon$ = 0.1 mm", "y_fp = 1 mm, eps = 0.1 mm", "fp1",
           {"yfp": 1.0, "eps_abs": 0.0, "eps_rel": 0.1}))
 CACHE = "cache.json"
-# What the rho = mu = 0 runs depend on besides eom_terms (cache key).
+# What the rho = mu = 0 runs depend on besides eom_terms (cache key): the
+# model, the constants and this driver's import closure, as make reads it.
 INPUTS = [os.path.join(paths.BUILD, "models", "mlg.exe"),
           os.path.join(paths.BUILD, "lib", "libmlg.so"), ct.CONSTANTS,
           *sorted(os.path.join(ct.RUN_CONSTANTS, f) for f in os.listdir(ct.RUN_CONSTANTS)),
-          os.path.abspath(__file__), ct.__file__, spectrum.__file__, mlgmodel.__file__,
-          autoglue.__file__]
+          *depends.closure(["mlgshimmy.studies.sidestay"])]
 
 
 def name_of(rho_deg, mu_deg):
@@ -72,7 +72,7 @@ def name_of(rho_deg, mu_deg):
 
 def case_values(rho_deg, mu_deg, eom_terms):
     """{case tag: parameter values}."""
-    angles = {"rho": math.radians(rho_deg), "mu": math.radians(mu_deg), "eom_terms": eom_terms}
+    angles = geometry.model_angles(rho_deg, mu_deg, eom_terms)
     return {tag: {"Fstar": 1.0, **angles, **values} for _, _, tag, values in CASES}
 
 

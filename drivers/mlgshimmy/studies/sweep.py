@@ -21,9 +21,7 @@ comma-separated; the default grid is 3 x 3):
 
 `make sweep` (with -j N for N jobs at once) runs check, every point, summary.
 """
-import math
 import os
-import sys
 import time
 
 from mlgshimmy.shared import continuation as ct
@@ -71,20 +69,17 @@ def grid(args):
 
 
 def parameters(rho, mu, eom_terms=2):
-    return {"Fstar": 1.0, "yfp": 0.0, "rho": math.radians(rho), "mu": math.radians(mu),
-            "eom_terms": eom_terms}
+    return {"Fstar": 1.0, "yfp": 0.0, **geometry.model_angles(rho, mu, eom_terms)}
 
 
-def check(points):
-    bad = []
-    for rho, mu in points:
-        try:
-            mlgmodel.Model("figures", V=V_START, **parameters(rho, mu)).check()
-        except ValueError as exc:
-            bad.append(f"rho = {rho:g} deg, mu = {mu:g} deg: {exc}")
-    if bad:
-        sys.exit("sweep: grid rejected before any AUTO run:\n  " + "\n  ".join(bad))
-    print(f"sweep: {len(points)} grid points valid")
+def problem(point):
+    """Why the grid point (rho, mu) cannot be run, or None."""
+    rho, mu = point
+    try:
+        mlgmodel.Model("figures", V=V_START, **parameters(rho, mu)).check()
+    except ValueError as exc:
+        return f"rho = {rho:g} deg, mu = {mu:g} deg: {exc}"
+    return None
 
 
 def run_point(name):
@@ -108,6 +103,7 @@ def summary(points, results, provenance):
     import numpy
 
     from mlgshimmy.shared import draw
+    from mlgshimmy.shared.draw.angle_map import angle_map
     rhos = sorted({rho for rho, _ in points})
     mus = sorted({mu for _, mu in points})
     speed = numpy.full((len(mus), len(rhos)), numpy.nan)
@@ -117,19 +113,8 @@ def summary(points, results, provenance):
         print(f"sweep: rho = {rho:6g} deg, mu = {mu:6g} deg: critical speed "
               + (f"{value:.3f} m/s" if value is not None else f"> {V_STOP:g} m/s"))
     fig, ax = plt.subplots(figsize=(5.5, 4.5))
-    mesh = ax.imshow(speed, origin="lower", cmap=draw.palette.SEQUENCE_MAP, aspect="auto",
-                     extent=(-0.5, len(rhos) - 0.5, -0.5, len(mus) - 0.5))
-    for i in range(len(mus)):
-        for j in range(len(rhos)):
-            text = "> 600" if numpy.isnan(speed[i, j]) else f"{speed[i, j]:.1f}"
-            fill = mesh.cmap(mesh.norm(speed[i, j])) if numpy.isfinite(speed[i, j]) else "white"
-            ax.text(j, i, text, ha="center", va="center", color=draw.palette.text_on(fill),
-                    fontsize=8)
-    ax.set_xticks(range(len(rhos)), [f"{r:g}" for r in rhos])
-    ax.set_yticks(range(len(mus)), [f"{m:g}" for m in mus])
-    ax.set_xlabel(r"$\rho$ [deg]")
-    ax.set_ylabel(r"$\mu$ [deg]")
-    ax.grid(False)
+    mesh = angle_map(ax, rhos, mus, speed,
+                     lambda v: "> 600" if numpy.isnan(v) else f"{v:.1f}")
     fig.colorbar(mesh, label="critical shimmy speed [m/s]")
     ax.set_title("First Hopf point of straight rolling\n"
                  "zero freeplay, F* = 1, our calibrated parameter set,\n"
@@ -141,7 +126,7 @@ def main():
     jobgrid.main("sweep", __doc__.splitlines()[0], "point", POINTS,
                  [("--rho", DEFAULT_GRID, "rho values [deg], comma-separated"),
                   ("--mu", DEFAULT_GRID, "mu values [deg], comma-separated")],
-                 grid, run_job=run_point, check=check, summary=summary)
+                 grid, run_job=run_point, problem=problem, summary=summary)
 
 
 if __name__ == "__main__":

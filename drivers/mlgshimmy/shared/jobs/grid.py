@@ -294,7 +294,7 @@ def mixed_provenance(tool, groups, noun="points"):
 
 # --- the command line ----------------------------------------------------------
 
-def main(tool, description, job_command, plane, options, grid, *, run_job, check, summary,
+def main(tool, description, job_command, plane, options, grid, *, run_job, problem, summary,
          argv=None):
     """The command line of a job-grid study mlgshimmy.studies.<tool>:
     `check|targets|jobs [--missing]|status|summary [--mixed-provenance]|
@@ -326,11 +326,21 @@ def main(tool, description, job_command, plane, options, grid, *, run_job, check
         sys.exit(f"{tool}: grid rejected: {exc}")
     axes = " ".join(f"{flag}={shlex.quote(getattr(args, flag.lstrip('-')))}"
                     for flag, _, _ in options)
-    dispatch(tool, job_command, args, points, plane, axes, run_job=run_job, check=check,
+    dispatch(tool, job_command, args, points, plane, axes, run_job=run_job, problem=problem,
              summary=summary)
 
 
-def dispatch(tool, job_command, args, points, plane, axes, *, run_job, check, summary):
+def validate(tool, points, problem, noun):
+    """Every point checked before any job runs: problem(point) says why one
+    is rejected (None: valid); any rejected point ends the process, each
+    listed."""
+    bad = [why for why in map(problem, points) if why]
+    if bad:
+        sys.exit(f"{tool}: grid rejected before any run:\n  " + "\n  ".join(bad))
+    print(f"{tool}: {len(points)} {noun} valid")
+
+
+def dispatch(tool, job_command, args, points, plane, axes, *, run_job, problem, summary):
     """The commands every job-grid study has: check, targets, jobs (one
     shell line per job, for make, GNU parallel or Slurm; --missing: only
     those without a valid result), status (every point without one, with
@@ -361,7 +371,7 @@ def dispatch(tool, job_command, args, points, plane, axes, *, run_job, check, su
                      f"`{missing_jobs}` prints their jobs")
         print(f"{tool}: all {len(found)} {plane.noun} have a valid result")
     elif args.command == "check":
-        check(points)
+        validate(tool, points, problem, plane.noun)
     elif args.command == "summary":
         found = survey(plane, points)
         bad = [point for point in found if point.state != DONE]
