@@ -1,5 +1,6 @@
 """Helpers shared by the Python tests (plain functions; pytest finds the
 tests themselves)."""
+import math
 import os
 import subprocess
 import time
@@ -33,3 +34,10 @@ def make_variable(name):
                            "print-test-variable"], cwd=ROOT, capture_output=True, text=True)
     assert proc.returncode == 0, f"make cannot print {name}: {proc.stderr.strip()}"
     return proc.stdout.strip()
+
+
+def assert_close(value, expected, rel=0.0, abs=0.0):
+    """The tests' one tolerance check: |value - expected| <= max(rel *
+    max(|value|, |expected|), abs), naming both values when it fails."""
+    assert math.isclose(value, expected, rel_tol=rel, abs_tol=abs), \
+        f"got {value!r}, expected {expected!r} (rel {rel}, abs {abs})"

@@ -8,7 +8,6 @@ points are at 28.3 and 144.3 m/s), the low-frequency orbit at V = 20, F* = 1
 V = 450, F* = 0.3 (the issue's run: psi amplitude 0.120-0.121 rad, ~40 Hz),
 whose slowly growing modulation must not be called settled after 20 s.
 """
-import math
 import os
 import subprocess
 import sys
@@ -16,6 +15,7 @@ import sys
 import numpy as np
 import pytest
 
+import helpers
 from mlgshimmy.shared import attractor
 from mlgshimmy.shared import paths
 from mlgshimmy.studies.atlas import cell as atlas_cell
@@ -27,11 +27,6 @@ PSI_FP = 2.088e-3                           # freeplay angle at F* = 1 [rad]
 SR = 0.0                                    # psi of straight rolling at the paper's gear
 W = atlas_cell.WINDOW
 DRIVERS = os.path.join(paths.ROOT, "drivers")
-
-
-def close(value, expected, rel=0.0, abs=0.0):
-    """|value - expected| <= max(rel * max(|value|, |expected|), abs)."""
-    return math.isclose(value, expected, rel_tol=rel, abs_tol=abs)
 
 
 def carrier(modulation):
@@ -48,15 +43,15 @@ def test_classify_synthetic_40_hz_sine_high():
     sine = 0.12 * np.sin(2 * np.pi * 40.0 * T)
     r = attractor.classify(T, sine, W, PSI_FP, SR)
     assert r["kind"] == "high", r
-    assert close(r["amplitude_rad"], 0.12, rel=1e-4), r["amplitude_rad"]
-    assert close(r["frequency_hz"], 40.0, rel=1e-4), r["frequency_hz"]
+    helpers.assert_close(r["amplitude_rad"], 0.12, rel=1e-4)
+    helpers.assert_close(r["frequency_hz"], 40.0, rel=1e-4)
     assert r["peak_spread"] < 1e-6, f"peak spread {r['peak_spread']} (quartic fit)"
 
 
 def test_classify_synthetic_3_hz_sine_low():
     r = attractor.classify(T, 2e-3 * np.sin(2 * np.pi * 3.0 * T + 0.3), W, PSI_FP, SR)
     assert r["kind"] == "low", r
-    assert close(r["frequency_hz"], 3.0, rel=1e-3), r["frequency_hz"]
+    helpers.assert_close(r["frequency_hz"], 3.0, rel=1e-3)
 
 
 @pytest.mark.parametrize("amplitude, f, psi_fp, kind", (
@@ -80,7 +75,7 @@ def test_classify_steady_modulation_quasi():
     r = attractor.classify(T40, carrier(0.03 * np.sin(2 * np.pi * 1.03 * T40)), W, PSI_FP, SR)
     assert r["kind"] == "quasi" and r["trend"] == "steady" and not r["growing"], r
     assert abs(r["spread_rate"]) < attractor.RATE_MIN, r["spread_rate"]
-    assert close(r["modulation_hz"] or 0, 1.03, rel=0.05), r["modulation_hz"]
+    helpers.assert_close(r["modulation_hz"] or 0, 1.03, rel=0.05)
 
 
 def test_classify_growing_modulation_quasi_growing():
@@ -88,7 +83,7 @@ def test_classify_growing_modulation_quasi_growing():
     quasi, growing, the fitted rate 0.02 /s."""
     r = attractor.classify(T40, GROWING, W, PSI_FP, SR)
     assert r["kind"] == "quasi" and r["growing"] and r["trend"] == "growing", r
-    assert close(r["spread_rate"], 0.02, rel=0.05), r["spread_rate"]
+    helpers.assert_close(r["spread_rate"], 0.02, rel=0.05)
 
 
 def test_classify_decaying_modulation_high():
@@ -96,7 +91,7 @@ def test_classify_decaying_modulation_high():
     decaying = carrier(2e-2 * np.exp(-0.016 * T40) * np.sin(2 * np.pi * 0.8 * T40))
     r = attractor.classify(T40, decaying, W, PSI_FP, SR)
     assert r["kind"] == "high" and r["trend"] == "decaying", r
-    assert close(r["spread_rate"], -0.016, rel=0.05), r["spread_rate"]
+    helpers.assert_close(r["spread_rate"], -0.016, rel=0.05)
 
 
 def test_classify_slowly_growing_modulation_unsettled():
@@ -108,8 +103,7 @@ def test_classify_slowly_growing_modulation_unsettled():
 
 def test_spread_trend_first_spread_and_too_short_a_fit():
     fit = attractor.spread_trend(T40, GROWING, 20.0, 40.0)
-    assert close(fit["first"], 2e-3 * np.exp(0.02 * 21.0), rel=0.05), \
-        f"first spread {fit['first']}, expected 2e-3 exp(0.02 * 21) (two-sided, 1 s into the fit)"
+    helpers.assert_close(fit["first"], 2e-3 * np.exp(0.02 * 21.0), rel=0.05)
     assert attractor.spread_trend(T40, GROWING, 34.0, 40.0) is None, \
         "fewer than 4 spreads gave a fit"
 
@@ -117,8 +111,8 @@ def test_spread_trend_first_spread_and_too_short_a_fit():
 def test_mode_shape_amplitude_ratio_and_phase():
     lateral = 0.2 * 0.12 * np.sin(2 * np.pi * 39.8 * T40 - np.radians(60.0))
     ratio = attractor.mode_shape(T40[-5000:], carrier(0)[-5000:], lateral[-5000:], 39.8)
-    assert close(abs(ratio), 0.2, rel=1e-3), abs(ratio)
-    assert close(np.degrees(np.angle(ratio)), -60.0, abs=0.1), np.degrees(np.angle(ratio))
+    helpers.assert_close(abs(ratio), 0.2, rel=1e-3)
+    helpers.assert_close(np.degrees(np.angle(ratio)), -60.0, abs=0.1)
 
 
 def test_classify_decay_unsettled_not_straight():
@@ -132,7 +126,7 @@ def test_classify_rest_straight_or_yaw():
     assert r["kind"] == "straight", f"rest at psi = 0: {r}"
     r = attractor.classify(T, np.full_like(T, 1.7e-3), W, PSI_FP, SR)
     assert r["kind"] == "yaw", f"rest at psi = 1.7e-3: {r}"
-    assert close(r["mean_rad"], 1.7e-3, rel=1e-9), r["mean_rad"]
+    helpers.assert_close(r["mean_rad"], 1.7e-3, rel=1e-9)
 
 
 @pytest.mark.parametrize("rest, psi_straight, kind", (
@@ -216,7 +210,7 @@ LINE = {"name": "hopf", "kind": "hopf", "V": [300.0, 300.0], "Fstar": [0.0, 3.5]
 def test_compare_curve_distance_to_a_segment():
     """The vertical line V = 300 m/s: distance (V - 300) / 600 at any F*."""
     d, name = atlas_compare.curve_distance([LINE], 330.0, 1.75)
-    assert close(d, 0.05, rel=1e-12), d
+    helpers.assert_close(d, 0.05, rel=1e-12)
     assert name == "hopf", name
 
 
@@ -239,7 +233,7 @@ def test_compare_with_a_stub_region_map():
             (550, "high + yaw", "yaw")], \
         (f"V = 500 (straight + high in the high region), 150 (not settled) and 550 (a yawed "
          f"end where Fig. 11 has no stable yawed equilibrium): {r['disagree']}")
-    assert close(r["fraction"], 0.4, rel=1e-12), r["fraction"]
+    helpers.assert_close(r["fraction"], 0.4, rel=1e-12)
     assert sum("disagree V" in line for line in atlas_compare.report(r)) == 3, \
         atlas_compare.report(r)
 
@@ -253,8 +247,8 @@ def test_compare_yaw_edge_counts_as_a_curve():
     code = np.where(V[None, :] < 125.0, 9, 1) * (F[:, None] <= 0.35) + (F[:, None] > 0.35)
     stub = {"region_map": {"V": V, "Fstar": F, "code": code.tolist(), "names": {}},
             "edge_curves": []}
-    assert close(atlas_compare.yaw_edge_distance(stub["region_map"], 100.0, 0.2), 25 / 600,
-                 rel=1e-9), atlas_compare.yaw_edge_distance(stub["region_map"], 100.0, 0.2)
+    helpers.assert_close(atlas_compare.yaw_edge_distance(stub["region_map"], 100.0, 0.2), 25 / 600,
+                 rel=1e-9)
     cells = [stub_cell(122, 0.2, "yaw"), stub_cell(100, 0.2, "straight", "yaw"),
              stub_cell(100, 0.1, "straight"), stub_cell(150, 0.2, "straight")]
     r = atlas_compare.compare(cells, stub)
@@ -315,8 +309,7 @@ def test_simulated_straight_rolling_at_100_m_s(rundir):
 def test_simulated_low_frequency_orbit_at_20_m_s(rundir):
     r = atlas_cell.run_stage(20.0, 1.0, atlas_cell.STARTS["shimmy"], 20.0, rundir)
     assert r["kind"] == "low", f"V = 20, F* = 1 from 0.05 rad: {r}"
-    assert close(r["frequency_hz"], 4.70, rel=0.01), \
-        f"frequency {r['frequency_hz']} (Fig. 10's 1.7-4.7 Hz branch)"
+    helpers.assert_close(r["frequency_hz"], 4.70, rel=0.01)
     assert 1.5e-3 < r["amplitude_rad"] < 2.2e-3, \
         f"amplitude {r['amplitude_rad']} not inside the freeplay angle (2.1e-3 rad)"
     left_empty(rundir)
@@ -324,8 +317,8 @@ def test_simulated_low_frequency_orbit_at_20_m_s(rundir):
 
 def test_simulated_high_frequency_orbit_at_450_m_s_still_growing(rundir):
     r = atlas_cell.run_stage(450.0, 0.3, 0.05, 20.0, rundir)
-    assert close(r["amplitude_rad"], 0.120, abs=0.002), r["amplitude_rad"]
-    assert close(r["frequency_hz"], 39.8, abs=0.2), r["frequency_hz"]
+    helpers.assert_close(r["amplitude_rad"], 0.120, abs=0.002)
+    helpers.assert_close(r["frequency_hz"], 39.8, abs=0.2)
     assert r["kind"] == "quasi" and r["growing"], \
         f"V = 450, F* = 0.3 after 20 s: not a growing modulation (quasi, growing): {r}"
     assert 0.005 < r["spread_rate"] < 0.1, \

@@ -10,6 +10,7 @@ import math
 import numpy
 import pytest
 
+import helpers
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import spectrum
@@ -20,12 +21,6 @@ from mlgshimmy.shared import mlgmodel
 
 # r_1, r_2 as first reviewed (make report, fig16: F* = 1, eps = 0.1 mm, V = 120 m/s)
 A_REPORTED, B_REPORTED = 0.054242, 0.213609
-
-
-def close(value, expected, rel=0.0, abs=0.0):
-    """The old check_close: |value - expected| <= max(rel * max(|a|, |b|), abs)."""
-    assert math.isclose(value, expected, rel_tol=rel, abs_tol=abs), \
-        f"got {value!r}, expected {expected!r} (rel {rel}, abs {abs})"
 
 
 @pytest.fixture(scope="module")
@@ -57,8 +52,8 @@ def thresholds():
 
 def test_thresholds_a_and_b_at_v_120_as_reported(thresholds):
     a, b = thresholds
-    close(a, A_REPORTED, rel=2e-5)
-    close(b, B_REPORTED, rel=2e-5)
+    helpers.assert_close(a, A_REPORTED, rel=2e-5)
+    helpers.assert_close(b, B_REPORTED, rel=2e-5)
 
 
 @pytest.mark.parametrize("which", ["a", "b"])
@@ -66,7 +61,7 @@ def test_thresholds_agree_with_auto_hopf_point_in_yfp(rundir, thresholds, which)
     y = thresholds["ab".index(which)]
     vals = {"Fstar": yfp_runs.FSTAR, "V": yfp_runs.V_LIMIT, **freeplay.SCALINGS["fixed"]}
     hb = ct.hopf_point(rundir, f"hb_{which}", "figures", "yfp", y, width=0.05 * y, **vals)
-    close(hb["yfp"], y, rel=1e-5)
+    helpers.assert_close(hb["yfp"], y, rel=1e-5)
 
 
 def test_thresholds_straight_rolling_stable_up_to_120_just_below_a(thresholds):
@@ -105,9 +100,9 @@ def test_linear_scaling_hopf_speeds_do_not_move_with_yfp(low_branches):
 
 def test_linear_scaling_psi_amplitude_at_v_15_doubles_from_yfp_half_to_1(low_branches):
     (_, half), (_, one) = low_branches
-    close(one["psi_amp"] / half["psi_amp"], 2.0, rel=1e-4)
+    helpers.assert_close(one["psi_amp"] / half["psi_amp"], 2.0, rel=1e-4)
 
 
 def test_linear_scaling_frequency_at_v_15_independent_of_yfp(low_branches):
     (_, half), (_, one) = low_branches
-    close(one["freq"], half["freq"], rel=1e-4)
+    helpers.assert_close(one["freq"], half["freq"], rel=1e-4)

@@ -10,6 +10,7 @@ import os
 
 import pytest
 
+import helpers
 from mlgshimmy.shared import autoglue, autosession, diagrams, runerror
 from mlgshimmy.shared import paths
 
@@ -17,12 +18,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 MODEL = os.path.join(paths.BUILD, "tests", "smoke", "smoke")
 CONSTANTS = os.path.join(HERE, "smoke", "c.smoke")
 HOPF = math.sqrt(2.0)
-
-
-def close(value, expected, rel=0.0, abs=0.0):
-    """The old check_close: |value - expected| <= max(rel * max(|a|, |b|), abs)."""
-    assert math.isclose(value, expected, rel_tol=rel, abs_tol=abs), \
-        f"got {value!r}, expected {expected!r} (rel {rel}, abs {abs})"
 
 
 @pytest.fixture(scope="module")
@@ -55,7 +50,7 @@ def raises_run_error(func):
 def test_equilibria_hb_at_sqrt_2(equilibria):
     """The run ends without MX and finds the HB (autoglue.run raises
     otherwise), at p = sqrt(2)."""
-    close(equilibria[1]("HB1")["p"], HOPF, abs=1e-6)
+    helpers.assert_close(equilibria[1]("HB1")["p"], HOPF, abs=1e-6)
 
 
 def test_auto_used_the_makefile_built_executable(equilibria):
@@ -91,18 +86,18 @@ def test_autoglue_detects_mx(equilibria):
 def test_orbits_uz_at_p(uz):
     """The orbit run ends without MX and finds the UZ (autoglue.run raises
     otherwise), at p = sqrt(2) + 1."""
-    close(uz["p"], HOPF + 1.0, abs=1e-6)
+    helpers.assert_close(uz["p"], HOPF + 1.0, abs=1e-6)
 
 
 def test_orbits_radius_1_at_p_sqrt_2_plus_1(uz):
     # On the circle of radius 1 the L2 norm is exactly the radius; PAR(21)
     # (getp MAX, PVLS) is a maximum over mesh points, so slightly below 1.
-    close(uz["L2-NORM"], 1.0, abs=1e-6)
+    helpers.assert_close(uz["L2-NORM"], 1.0, abs=1e-6)
 
 
 def test_orbits_pvls_measure_max_x(uz):
-    close(uz["xmax"], 1.0, abs=1e-3)
+    helpers.assert_close(uz["xmax"], 1.0, abs=1e-3)
 
 
 def test_orbits_period_2_pi(uz):
-    close(uz["period"], 2 * math.pi, abs=1e-5)
+    helpers.assert_close(uz["period"], 2 * math.pi, abs=1e-5)
