@@ -122,7 +122,11 @@ def envelope_frequency(tp, p):
 def window_numbers(t, psi):
     """Mean, amplitude, frequency and peak statistics of one window.  The
     mean is taken over whole periods (first to last upward crossing), so
-    that a part-period at the window's ends does not move it."""
+    that a part-period at the window's ends does not move it.  Not the
+    simulator's own summary (c/simulate/mlg_simulate.c: raw extremes and
+    the plain mean of its last second): the classifier compares two windows
+    of its own width and needs peaks fitted between samples, which that
+    one fixed window does not give."""
     tp, p = peaks(t, psi)
     top = float(numpy.max(numpy.abs(p))) if len(p) else 0.0
     spread = float(numpy.ptp(p)) / top if len(p) > 1 and top > 0 else 0.0
