@@ -12,7 +12,7 @@
 #
 # Variables other makefiles (c/c.mk, ...) append to:
 #   TEST_DEPS       files the tests need built first (C test programs, the
-#                   model .exe); the tests themselves are pytest's tests/test_*.py
+#                   model .exe); the tests themselves are pytest's tests/*/test_*.py
 #   FIGURES         make targets (e.g. fig05) built by `make figures`
 #   BENCH_PROGRAMS  programs run by `make bench` (executables or .py scripts)
 #   BENCH_DEPS      other files the benchmarks need built first
@@ -138,7 +138,7 @@ build/tests/smoke/libshift.a: tests/smoke/shift.c tests/smoke/shift.h | packages
 $(eval $(call auto_equations,$(SMOKE),tests/smoke/smoke.c,build/tests/smoke/libshift.a,-Itests/smoke))
 TEST_DEPS += $(SMOKE).exe
 
-# Every test, Python and C (tests/test_c_programs.py runs the C programs),
+# Every test, Python and C (tests/model/test_c_programs.py runs the C programs),
 # on pytest: `make test PYTEST_ARGS='-k jacobian'` selects by name.
 test: setup $(TEST_PACKAGES_STAMP) $(TEST_DEPS)
 	MLG_REQUIRE_CHROMIUM=1 $(PYTHON) -m pytest -n $(TEST_JOBS) --dist loadfile $(PYTEST_ARGS)

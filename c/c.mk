@@ -45,7 +45,7 @@ TEST_DEPS += $(MLG_TESTS)
 
 # The same tests once more with the library and the tests built under UBSan
 # (undefined behaviour, and a double cast to an int it does not fit: not in
-# -fsanitize=undefined): a report stops the program (tests/test_c_programs.py).
+# -fsanitize=undefined): a report stops the program (tests/model/test_c_programs.py).
 # -O1: a few seconds to build; the results are the same (no contraction either way).
 MLG_UBSAN_FLAGS := -O1 -fsanitize=undefined,float-cast-overflow -fno-sanitize-recover=all
 MLG_UBSAN_LIB := build/ubsan/lib/libmlg.a
@@ -146,7 +146,7 @@ uninstall:
 	-rmdir $(DESTDIR)$(INCLUDEDIR)/mlg
 
 # The example program (c/examples/evaluate.c), built here against the
-# in-tree library so that `make test` keeps it compiling; tests/test_c_library.py
+# in-tree library so that `make test` keeps it compiling; tests/release/test_c_library.py
 # builds it against an installed copy through pkg-config.
 MLG_EXAMPLE := build/examples/evaluate
 $(MLG_EXAMPLE): c/examples/evaluate.c $(MLG_PUBLIC_HEADERS) $(MLG_LIB)

@@ -8,7 +8,7 @@
  *   PAR(13-20)  MLG_SWITCHES with an AUTO slot, and MLG_PAR_CONSTANTS_FILE.
  *   PAR(21-28)  MLG_MEASURES, written by PVLS (models/mlg.c).
  * This file is the single definition of these indices; constants/c.mlg
- * repeats the names in `parnames` and tests/test_auto_plugin.py checks that
+ * repeats the names in `parnames` and tests/model/test_auto_plugin.py checks that
  * the two agree.
  * MLG_CONSTANTS lists every fixed constant of the paper (Table 1, II.A, II.B)
  * under the paper's symbol, with its `table` value.

@@ -3,7 +3,7 @@
  * c/c.mk reads MLG_VERSION_MAJOR/MINOR/PATCH from here (the shared
  * library's file name libmlg.so.MAJOR.MINOR.PATCH, its SONAME libmlg.so.MAJOR
  * and the Version of mlg.pc); CITATION.cff repeats the version and
- * tests/test_c_library.py checks that the two agree.  MAJOR changes when the
+ * tests/release/test_c_library.py checks that the two agree.  MAJOR changes when the
  * library's interface changes incompatibly (a program built against the old
  * headers would misbehave with the new library), MINOR when it grows, PATCH
  * for fixes.  mlg_version() returns the version the library was built as,

@@ -2,7 +2,7 @@
 # time, measured on a built tree (AUTO and the library built) on one core of
 # this project's 2-core machine; -j2 where it helps. Included by ../Makefile.
 # The figures' and studies' lines come from their declarations (DECLARED,
-# mk/figures.mk's catalogue); tests/test_help.py checks that every figure
+# mk/figures.mk's catalogue); tests/jobs/test_help.py checks that every figure
 # and regression target of the makefiles is listed and every listed target
 # exists.
 define MLG_HELP

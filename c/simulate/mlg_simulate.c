@@ -615,7 +615,7 @@ int main(int argc, char **argv)
     for (int i = MLG_PSI; i <= MLG_ETA; i++)
         osc[i] = tail_oscillation(&settled, i);
 
-    /* key value lines, read by mlgshimmy.figures.fig08 and tests/test_simulate.py */
+    /* key value lines, read by mlgshimmy.figures.fig08 and tests/model/test_simulate.py */
     printf("V %.10g\nFstar %.10g\nyfp %.10g\nc_psi %.10g\n", o.p.V, o.p.Fstar, o.p.yfp, o.p.c_psi);
     printf("epsilon_mm %.10g\n", 1e3 * mlg_epsilon_m(&o.p));
     printf("t_end %.10g\n", o.t_end);

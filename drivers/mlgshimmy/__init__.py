@@ -7,6 +7,6 @@
 and, beside them, report (make report: one page from what they cached).
 
 Figures and studies import the shared layer, never each other; the shared
-layer imports neither (tests/test_rooms.py).  drivers/README.md has the map.
+layer imports neither (tests/jobs/test_rooms.py).  drivers/README.md has the map.
 """
-__version__ = "0.1.0"   # as c/mlg_version.h (tests/test_release_files.py)
+__version__ = "0.1.0"   # as c/mlg_version.h (tests/release/test_release_files.py)

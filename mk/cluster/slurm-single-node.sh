@@ -1,6 +1,6 @@
 #!/bin/bash
 # A private one-node Slurm on this machine (Debian 12, Slurm 22.05, root, no systemd),
-# for trying the cluster path (docs/cluster.md) and for tests/test_cluster_slurm.py:
+# for trying the cluster path (docs/cluster.md) and for tests/cluster/test_cluster_slurm.py:
 # munge + slurmctld + slurmd on this host, one partition "debug", every file in one
 # state directory. Nothing under /etc/slurm, /etc/munge or /run is written or read, so
 # an existing Slurm or munge set-up on the machine is left as it is.

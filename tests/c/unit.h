@@ -1,5 +1,5 @@
 /* Minimal check helpers for the C tests: one line per check,
- * "ok <name>" or "not ok <name> - <detail>" (read by tests/test_c_programs.py). */
+ * "ok <name>" or "not ok <name> - <detail>" (read by tests/model/test_c_programs.py). */
 #ifndef MLG_UNIT_H
 #define MLG_UNIT_H
 

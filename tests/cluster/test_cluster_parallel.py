@@ -10,7 +10,9 @@ import sys
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 SCRIPT = os.path.join(ROOT, "mk", "cluster", "slurm-single-node.sh")
 
 

@@ -20,7 +20,9 @@ import time
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 SCRIPT = os.path.join(ROOT, "mk", "cluster", "slurm-single-node.sh")
 WRAPPER = os.path.join(ROOT, "mk", "cluster", "array-task.sh")
 DAEMONS = (("slurmd.pid", "slurmd"), ("slurmctld.pid", "slurmctld"),

@@ -11,7 +11,9 @@ import sys
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 WRAPPER = os.path.join(ROOT, "mk", "cluster", "array-task.sh")
 
 
@@ -298,7 +300,7 @@ def test_a_figure_without_parts_is_submitted_as_one_job(tmp_path):
 
 def test_a_figure_without_parts_runs_as_one_job_under_parallel(tmp_path):
     if shutil.which("parallel") is None:
-        pytest.skip("GNU parallel is not installed (tests/test_cluster_parallel.py installs it)")
+        pytest.skip("GNU parallel is not installed (tests/cluster/test_cluster_parallel.py installs it)")
     environment = {k: v for k, v in os.environ.items()
                    if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL", "MAKEOVERRIDES")}
     proc = subprocess.run(["make", "--no-print-directory", "submit-fig06", "SCHEDULER=parallel",

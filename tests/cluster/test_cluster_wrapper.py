@@ -5,7 +5,9 @@ list)."""
 import os
 import subprocess
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 WRAPPER = os.path.join(ROOT, "mk", "cluster", "array-task.sh")
 
 

@@ -9,9 +9,10 @@ import os
 import numpy as np
 import pytest
 
+import helpers
 from mlgshimmy.shared import lyapunov, mlgmodel, spectrum
 
-REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference")
+REFERENCE = os.path.join(helpers.ROOT, "tests", "reference")
 OMEGA, LAM = 2.0, 0.7
 # an orthogonal change of coordinates (l1 is invariant under it, as <q, q> = 1 is)
 ROTATION = np.linalg.qr(np.random.default_rng(35).normal(size=(3, 3)))[0]

@@ -2,7 +2,7 @@
 its gear, H3 alone at (rho, mu) = (20, 5) deg, and criticality from the
 side of the orbit branch.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_naming.py
+Run: /usr/bin/python3 -m pytest -q tests/continuation/test_naming.py
 """
 import math
 

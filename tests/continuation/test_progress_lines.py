@@ -4,7 +4,7 @@ same part, last time), never "?"; a run that stops is worded as a stop,
 since its caller may retry or do without it; a part's line counts the
 figure's parts.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_progress_lines.py
+Run: /usr/bin/python3 -m pytest -q tests/continuation/test_progress_lines.py
 """
 import os
 import re

@@ -2,7 +2,7 @@
 (continuation.with_ladder), and the named points a regression reports
 first (tests/regression/named_points.py).
 
-Run: /usr/bin/python3 -m pytest -q tests/test_retry_ladder.py
+Run: /usr/bin/python3 -m pytest -q tests/continuation/test_retry_ladder.py
 """
 import pytest
 

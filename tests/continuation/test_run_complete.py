@@ -9,10 +9,11 @@ import sys
 
 import pytest
 
+import helpers
 from mlgshimmy.shared import autosession, diagrams, runerror
 from mlgshimmy.shared import continuation as ct
 
-REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference", "fig07")
+REFERENCE = os.path.join(helpers.ROOT, "tests", "reference", "fig07")
 
 
 @pytest.fixture(scope="module")

@@ -14,7 +14,7 @@ import helpers
 from mlgshimmy.shared import autoglue, autosession, diagrams, runerror
 from mlgshimmy.shared import paths
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+HERE = os.path.join(helpers.ROOT, "tests")
 MODEL = os.path.join(paths.BUILD, "tests", "smoke", "smoke")
 CONSTANTS = os.path.join(HERE, "smoke", "c.smoke")
 HOPF = math.sqrt(2.0)

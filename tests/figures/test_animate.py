@@ -2,7 +2,7 @@
 what a start settles on, the frames it keeps, the stated scales, and one-line
 refusals of bad input.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_animate.py   (about 30 s)
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_animate.py   (about 30 s)
 """
 import subprocess
 
@@ -41,7 +41,7 @@ def test_a_large_start_at_300_settles_on_high_frequency_shimmy(shimmy):
 
 
 def test_the_yawed_start_stays_yawed_at_50_and_light_load(tmp_path):
-    # the yawed state at F* = 0.2 is stable at 50 m/s (tests/test_yawed.py)
+    # the yawed state at F* = 0.2 is stable at 50 m/s (tests/model/test_yawed.py)
     found = motion.settle(50.0, 0.2, freeplay.NOMINAL, "yawed", 12.0, str(tmp_path))
     assert found["kind"] == "yaw" and found["frequency_hz"] == 0.0
     assert len(found["frames"]["t"]) == motion.STILL_FRAMES

@@ -6,7 +6,7 @@ the freeplay kappa* allows in mm, a kappa* set on the oleo's stage switch
 flagged with the value off it, Hopf points named by mode, and the user's
 geometry marked.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_design_map.py
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_design_map.py
 """
 import json
 import os
@@ -17,11 +17,12 @@ import sys
 import matplotlib
 import pytest
 
+import helpers
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared.draw import palette
 from mlgshimmy.studies import design_map
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(helpers.ROOT)
 GEOMETRY = (-10.0, 20.0)      # the issue's second geometry, against (10, -20)
 
 

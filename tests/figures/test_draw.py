@@ -3,7 +3,7 @@ of special points placed without overlaps and merged when they coincide,
 the smooth curve through stored points, the paper style without titles,
 the stability legend, and the status of a number against the paper.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_draw.py
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_draw.py
 """
 import json
 

@@ -5,7 +5,7 @@ shared.draw), saves through draw.save, and draws no text over other text.
 The quick figures are drawn here from scratch (fig06, fig07, fig08, fig09,
 fig15: about 40 s); draw.save reports any overlap in every figure `make`
 draws as well.
-Run: /usr/bin/python3 -m pytest -q tests/test_figure_style.py
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_figure_style.py
 """
 import os
 import re

@@ -3,7 +3,7 @@ spectrum.root), checked against the plain search it replaces: a bisection to
 1e-10 mm of each speed's first change of stability on the y_fp grid
 (kappa_criterion.yfp_crossings), the least over the speeds.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_first_crossing.py
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_first_crossing.py
 """
 import math
 

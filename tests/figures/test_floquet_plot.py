@@ -1,7 +1,7 @@
 """The Floquet-multiplier plot's crossings (studies.floquet_plot) and
 AUTO's Fortran numbers in d-files (shared.floquet).
 
-Run: /usr/bin/python3 -m pytest -q tests/test_floquet_plot.py
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_floquet_plot.py
 """
 import numpy
 import pytest

@@ -4,7 +4,7 @@ damper M_fric r_seal / v_fric it linearises to; the fold of the
 low-frequency orbit in M_fric, continued by AUTO, is where the simulator's
 shimmy stops (orbit kept 2 % below it, rest 2 % above).
 
-Run: /usr/bin/python3 -m pytest -q tests/test_friction.py
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_friction.py
 """
 import pytest
 

@@ -3,7 +3,7 @@ multipliers as AUTO's d-file has them and a simulation from it.  An orbit
 run (Fig. 8's case: V = 300 m/s, F* = 0.2, zero freeplay) and the
 equilibria it starts from, made here by AUTO.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_point_view.py   (about 20 s)
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_point_view.py   (about 20 s)
 """
 import os
 import subprocess

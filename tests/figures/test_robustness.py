@@ -1,8 +1,8 @@
 """The robustness suite's job list and its sensitivity table
 (studies.robustness), without running it: `make robustness` itself is
-exercised by tests/test_changed_gear.py's smaller run of fig10.
+exercised by tests/figures/test_changed_gear.py's smaller run of fig10.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_robustness.py
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_robustness.py
 """
 import argparse
 

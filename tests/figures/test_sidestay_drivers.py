@@ -17,7 +17,7 @@ import pytest
 
 import helpers
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = helpers.ROOT
 DRIVERS = os.path.join(ROOT, "drivers")
 
 

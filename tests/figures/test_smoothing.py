@@ -5,7 +5,7 @@ y = 0, (k_tlk / pi) (2 atan r - 2 r / (1 + r^2)) = (4 / 3 pi) r^3 k_tlk
 (1 - 6 r^2 / 5 + O(r^4)), r = eps / y_fp.  The orbits' order (2) is measured by the
 study itself (make smoothing: about 3 min).
 
-Run: /usr/bin/python3 -m pytest -q tests/test_smoothing.py
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_smoothing.py
 """
 import numpy
 import pytest

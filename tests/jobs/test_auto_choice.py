@@ -5,7 +5,7 @@ invalid one is refused and not remembered; make forget-auto returns to the
 source build; make clean keeps the choice. Each test works in a scratch
 copy of the Makefile and mk/ (the repository's build/ is not touched).
 
-Run: /usr/bin/python3 -m pytest -q tests/test_auto_choice.py
+Run: /usr/bin/python3 -m pytest -q tests/jobs/test_auto_choice.py
 """
 import os
 import pathlib
@@ -14,7 +14,9 @@ import subprocess
 
 import pytest
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import helpers
+
+ROOT = pathlib.Path(helpers.ROOT)
 DEBIAN_AUTO = pathlib.Path("/usr/lib/auto-07p")
 
 

@@ -11,7 +11,9 @@ import tarfile
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 SCRIPT = os.path.join(ROOT, "mk", "build-auto.sh")
 SOURCES = "/etc/apt/sources.list.d/mlg-shimmy-src.sources"
 ORIG, DSC = "auto-07p_0.9.2+dfsg.orig.tar.gz", "auto-07p_0.9.2+dfsg-3.dsc"

@@ -3,7 +3,7 @@ shared.jobs.catalogue without importing anything: a figure added as its
 module and its docs section is seen by make, make help, the report and
 make submit; a declaration that cannot be read is refused naming its file.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_catalogue.py
+Run: /usr/bin/python3 -m pytest -q tests/jobs/test_catalogue.py
 """
 import os
 import pathlib
@@ -16,11 +16,11 @@ import pytest
 
 import helpers
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(helpers.ROOT)
 sys.path.insert(0, str(ROOT / "drivers" / "mlgshimmy" / "shared" / "jobs"))
 import catalogue  # noqa: E402  (a file of the standard library only, as make runs it)
 
-THROWAWAY = '''"""Fig. 99: a throwaway figure, added by tests/test_catalogue.py."""
+THROWAWAY = '''"""Fig. 99: a throwaway figure, added by tests/jobs/test_catalogue.py."""
 from mlgshimmy.shared import jobs
 
 DECLARED = {

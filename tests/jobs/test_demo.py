@@ -6,7 +6,7 @@ c.mlg, both with the executable make built (AUTO must not rebuild it: its
 own link line has no room for the library). AUTO's launcher exits 0 even
 when the script fails, so the test reads the files it writes.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_demo.py   (about 10 s)
+Run: /usr/bin/python3 -m pytest -q tests/jobs/test_demo.py   (about 10 s)
 """
 import os
 import pathlib
@@ -15,9 +15,10 @@ import subprocess
 
 import pytest
 
+import helpers
 from mlgshimmy.shared import mlgmodel
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(helpers.ROOT)
 V_HOPF = 346.1          # m/s, the paper's Fig. 7 (the `figures` set is calibrated to it)
 HB, EP, UZ = 3, 9, -4   # AUTO's point types in b-files
 

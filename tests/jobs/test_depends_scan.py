@@ -7,7 +7,9 @@ import shutil
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 SCRIPT = os.path.join("drivers", "mlgshimmy", "shared", "jobs", "depends.py")
 ARGS = ["PYDEPS_fig07", "build/deps/fig07.d", "mlgshimmy.figures.fig07"]
 

@@ -2,7 +2,7 @@
 modules stay AUTO-free, a cached result reads back as the AUTO branches it
 was made from, a figure's parts run in stages, and AUTO's thread count is
 ours.  (That figures and studies import only the shared layer is
-tests/test_rooms.py's.)"""
+tests/jobs/test_rooms.py's.)"""
 import os
 import re
 import subprocess

@@ -14,9 +14,10 @@ import sys
 
 import pytest
 
+import helpers
 from mlgshimmy.shared.jobs import grid
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = helpers.ROOT
 SWEEP = ["--rho=0,10,20", "--mu=0"]
 ATLAS = ["--V=100,300", "--Fstar=0.5,1"]
 

@@ -2,14 +2,16 @@
 makefiles is listed, every listed target exists, and each line has a
 typical time.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_help.py
+Run: /usr/bin/python3 -m pytest -q tests/jobs/test_help.py
 """
 import os
 import pathlib
 import re
 import subprocess
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import helpers
+
+ROOT = pathlib.Path(helpers.ROOT)
 
 
 def make(*args):

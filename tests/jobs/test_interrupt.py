@@ -11,9 +11,10 @@ import time
 
 import pytest
 
+import helpers
 from mlgshimmy.shared import children
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = helpers.ROOT
 
 
 def session(sid):

@@ -3,14 +3,16 @@ value that would have run a command inside the old `$(shell [[ "..." =~ ]])`
 check is refused naming it, and runs nothing, even with `make -n`; whole
 numbers >= 1 pass, anything else is refused in one line.
 
-Run with: python3 -m pytest -q tests/test_make_auto_threads.py
+Run with: python3 -m pytest -q tests/jobs/test_make_auto_threads.py
 """
 import os
 import subprocess
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 
 
 def make_n(value):

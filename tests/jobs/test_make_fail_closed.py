@@ -10,7 +10,7 @@
   c/simulate/simulate.mk, models/models.mk and mk/**/*.mk that runs more than
   one shell command starts with `set -e` (a static check of the files).
 
-Run with: python3 -m pytest -q tests/test_make_fail_closed.py
+Run with: python3 -m pytest -q tests/jobs/test_make_fail_closed.py
 (after `make setup`: the regress/refs targets need its stamps)
 """
 import contextlib
@@ -22,7 +22,9 @@ import subprocess
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 REFERENCE = os.path.join(ROOT, "tests", "reference", "fig07")
 MAKEFILES = ["Makefile", "tests/regression/regression.mk", "c/c.mk", "c/simulate/simulate.mk",
              "models/models.mk"] + sorted(

@@ -7,7 +7,7 @@ rule to make target ..."):
   AUTO_DIR, AUTO_SRC, REGRESS_ROOT, REFS_ROOT);
 - `make -n fig07` in a clone whose path has a space.
 
-Run with: python3 -m pytest -q tests/test_make_paths.py
+Run with: python3 -m pytest -q tests/jobs/test_make_paths.py
 """
 import os
 import shutil
@@ -15,7 +15,9 @@ import subprocess
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 
 
 def make(*args, cwd=ROOT, env=None):

@@ -8,7 +8,9 @@ import subprocess
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 MAKEFILES = [os.path.join(ROOT, "Makefile")] + sorted(
     glob.glob(os.path.join(ROOT, "mk", "**", "*.mk"), recursive=True)
     + glob.glob(os.path.join(ROOT, "c", "**", "*.mk"), recursive=True)

@@ -11,7 +11,9 @@ import subprocess
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 SOURCES = sorted(glob.glob(os.path.join(ROOT, "tests", "c", "test_*.c")))
 
 

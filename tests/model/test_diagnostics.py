@@ -2,7 +2,7 @@
 is the library's (c/mlg_model.h MLG_DIAGNOSTICS), so every field is read
 at its own place, the first, a tyre pair in the middle and the last.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_diagnostics.py
+Run: /usr/bin/python3 -m pytest -q tests/model/test_diagnostics.py
 """
 import math
 

@@ -20,7 +20,7 @@ Fig. 10's gear (F* = 1) at V = 100 m/s on the stable high-frequency orbit,
 y_fp = 0.5 and 1 mm; runs started at psi = 0.01 rad y_fp / 1 mm, so that a
 scaled run is the scaled trajectory throughout.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_freeplay_invariance.py
+Run: /usr/bin/python3 -m pytest -q tests/model/test_freeplay_invariance.py
 """
 import numpy
 import pytest

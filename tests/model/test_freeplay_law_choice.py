@@ -3,7 +3,7 @@ freeplay_law=<name>): one table in c/freeplay_laws.h, read by the drivers
 as text and by the library; part of the gear's identity, tree, provenance
 and title; drawn by Figs. 6 and 15.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_freeplay_law_choice.py
+Run: /usr/bin/python3 -m pytest -q tests/model/test_freeplay_law_choice.py
 """
 import os
 import pathlib
@@ -12,9 +12,10 @@ import subprocess
 import numpy
 import pytest
 
+import helpers
 from mlgshimmy.shared import freeplay, gear, mlgmodel, overlay
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(helpers.ROOT)
 GEAR_ENV = ("MAKEFLAGS", "MAKELEVEL", "MFLAGS", "MAKEOVERRIDES", "MLG_RUN_ROOT",
             "MLG_BASE_RUN_ROOT", "MLG_RHO_DEG", "MLG_MU_DEG", "MLG_EOM", "MLG_SET")
 

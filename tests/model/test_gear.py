@@ -2,7 +2,7 @@
 overlay of any constant per run, validated up front, in its own tree, and
 recorded in every cached result, which is refused for another gear.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_gear.py
+Run: /usr/bin/python3 -m pytest -q tests/model/test_gear.py
 """
 import json
 import os
@@ -11,9 +11,10 @@ import subprocess
 
 import pytest
 
+import helpers
 from mlgshimmy.shared import gear, geometry, jobs, mlgmodel, overlay
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(helpers.ROOT)
 GEAR_ENV = ("MAKEFLAGS", "MAKELEVEL", "MFLAGS", "MAKEOVERRIDES", "MLG_RUN_ROOT",
             "MLG_BASE_RUN_ROOT", "MLG_RHO_DEG", "MLG_MU_DEG", "MLG_EOM", "MLG_SET")
 

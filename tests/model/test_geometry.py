@@ -3,7 +3,7 @@ mk/gear.mk): the environment read and checked, the tree of a geometry,
 the parameters reaching the model and the simulator, straight rolling at
 side-stay angles (shared.rolling) and the torque-link position y_tlk.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_geometry.py
+Run: /usr/bin/python3 -m pytest -q tests/model/test_geometry.py
 """
 import math
 import os
@@ -12,9 +12,10 @@ import subprocess
 
 import pytest
 
+import helpers
 from mlgshimmy.shared import gear, geometry, mlgmodel, rolling, simulator
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(helpers.ROOT)
 TEN = {"rho": math.radians(10), "mu": math.radians(10), "eom_terms": 2.0}
 
 

@@ -6,7 +6,7 @@ AUTO's convergence test passes) stops the run at once with one line naming
 where; the drivers read that line as a run that did not converge
 (runerror.RunError.kind), which the retry ladder retries.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_plugin_domain.py
+Run: /usr/bin/python3 -m pytest -q tests/model/test_plugin_domain.py
 """
 import os
 import subprocess

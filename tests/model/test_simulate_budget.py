@@ -13,7 +13,7 @@ sample, at most 1024 MB unless --max-output / MLG_SIMULATE_MAX_OUTPUT_MB):
   the one the simulator printed before the budgets (same numbers to 1e-9
   relative, same sample counts) and its CSV has every sample.
 
-Run with: python3 -m pytest -q tests/test_simulate_budget.py
+Run with: python3 -m pytest -q tests/model/test_simulate_budget.py
 (after `make build/bin/mlg_simulate`)
 """
 import os
@@ -23,7 +23,9 @@ import time
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 SIMULATOR = os.path.join(ROOT, "build", "bin", "mlg_simulate")
 LIMIT = 2 * 1024 ** 3  # the 2 GB ulimit of the report
 

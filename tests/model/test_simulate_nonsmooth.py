@@ -4,10 +4,11 @@ the new mode; the settled orbit is the limit of the smoothed model's as
 eps -> 0.  Fig. 10's gear (F* = 1, y_fp = 1 mm) at V = 100 m/s, on the
 high-frequency orbit (23.6 Hz), 10 s from psi = 0.01 rad.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_simulate_nonsmooth.py
+Run: /usr/bin/python3 -m pytest -q tests/model/test_simulate_nonsmooth.py
 """
 import pytest
 
+import helpers
 from mlgshimmy.shared import mlgmodel, simulator
 
 RUN = ("--V", 100, "--Fstar", 1, "--yfp", 1, "--t-end", 10, "--psi0", 0.01,
@@ -53,7 +54,7 @@ def test_the_fold_by_simulation_is_auto_s_fold():
     the slow passage past the fold, at most 3e-3 m/s (measured 1.1e-3)."""
     import json
     import pathlib
-    named = pathlib.Path(__file__).parent / "reference" / "fig10" / "named.json"
+    named = pathlib.Path(helpers.ROOT, "tests", "reference", "fig10", "named.json")
     auto_s = json.loads(named.read_text())["numbers"]["S1 [m/s]"]
     s = simulator.fold_speed(40.0, 43.0, 1e-3, {"Fstar": 1.0, "yfp": 1.0, "eps_abs": 0.0,
                                                  "eps_rel": 0.1})

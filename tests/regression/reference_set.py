@@ -40,7 +40,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 REFERENCE_ROOT = os.path.join(ROOT, "tests", "reference")
 MANIFEST = "MANIFEST"
 SELECTION = "runs.json"
-# Test hook (tests/test_reference_sets.py): SIGKILL this process when it
+# Test hook (tests/regression/test_reference_sets.py): SIGKILL this process when it
 # reaches the named step, as an interrupt there would.
 STOP_AT = os.environ.get("MLG_REFS_KILL_AT")
 

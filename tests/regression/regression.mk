@@ -17,11 +17,11 @@
 # A figure <fig> of REGRESS_FIGURES is a make target whose driver writes its
 # runs to $MLG_RUN_ROOT/<fig>/ (shared.paths.rundir; default build/).
 # REGRESS_QUICK lists the fast ones that `make test` also compares
-# (tests/test_regression_quick.py). REGRESS_WITH_<fig> names figures drawn
+# (tests/regression/test_regression_quick.py). REGRESS_WITH_<fig> names figures drawn
 # from <fig>'s cached result that run no AUTO of their own (fig16: fig17):
 # regress-<fig> and refs-<fig> make them too, from the same private runs, so
 # a change that breaks them fails there; <fig>'s set holds their curves.
-# tests/test_reference_sets.py checks that REGRESS_FIGURES and the sets in
+# tests/regression/test_reference_sets.py checks that REGRESS_FIGURES and the sets in
 # tests/reference/ name the same figures. A failed figure run keeps its private
 # directory (named in the message) for its logs.
 # Only the refs recipes write into tests/reference/.

@@ -11,7 +11,7 @@ a diagram means, run as a command on edited copies of tests/reference/fig07:
   exist, and a tolerances.json with an unknown key;
 - every stored reference set agrees with itself (exit 0).
 
-Run with: python3 -m pytest -q tests/test_compare_meaning.py
+Run with: python3 -m pytest -q tests/regression/test_compare_meaning.py
 """
 import glob
 import hashlib
@@ -22,7 +22,9 @@ import sys
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 COMPARE = os.path.join(ROOT, "tests", "regression", "compare_diagrams.py")
 REFERENCE_ROOT = os.path.join(ROOT, "tests", "reference")
 FIG07 = os.path.join(REFERENCE_ROOT, "fig07")

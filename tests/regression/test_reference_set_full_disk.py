@@ -4,7 +4,7 @@ one line (exit 2) naming the set and what was full, its partial copy
 (.<fig>.new-<pid>/) is removed, no *.part file is left, and an old set is
 left byte for byte as it was.
 
-Run with: python3 -m pytest -q tests/test_reference_set_full_disk.py
+Run with: python3 -m pytest -q tests/regression/test_reference_set_full_disk.py
 """
 import os
 import shutil
@@ -13,7 +13,9 @@ import sys
 
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import helpers
+
+ROOT = helpers.ROOT
 REFERENCE_SET = os.path.join(ROOT, "tests", "regression", "reference_set.py")
 FIG07 = os.path.join(ROOT, "tests", "reference", "fig07")   # 184 kB of files
 

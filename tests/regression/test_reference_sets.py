@@ -19,7 +19,7 @@ import compare_diagrams as cd
 import reference_set as rs
 import helpers
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+HERE = os.path.join(helpers.ROOT, "tests")
 FIGURE = "fig07"
 STEPS = ("copying", "manifest", "verified", "exchanged")
 SETS = sorted(glob.glob(os.path.join(cd.REFERENCE_ROOT, "*")))

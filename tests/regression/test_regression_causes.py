@@ -2,7 +2,7 @@
 from it under it (tests/regression/causes.py): which run starts from which,
 and the folding, on stand-in branches; and on Fig. 10's reference set.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_regression_causes.py
+Run: /usr/bin/python3 -m pytest -q tests/regression/test_regression_causes.py
 """
 import os
 

@@ -2,14 +2,16 @@
 pkg-config and the example program c/examples/evaluate.c built against the
 installed copy (docs/c-library.md).
 
-Run: /usr/bin/python3 -m pytest -q tests/test_c_library.py
+Run: /usr/bin/python3 -m pytest -q tests/release/test_c_library.py
 """
 import os
 import pathlib
 import re
 import subprocess
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import helpers
+
+ROOT = pathlib.Path(helpers.ROOT)
 
 
 def header_version():

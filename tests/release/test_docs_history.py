@@ -2,12 +2,14 @@
 the history.  A phrase that narrates it ("used to", "first version",
 "earlier run", "this session", ...) fails here, naming file and line.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_docs_history.py
+Run: /usr/bin/python3 -m pytest -q tests/release/test_docs_history.py
 """
 import pathlib
 import re
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import helpers
+
+ROOT = pathlib.Path(helpers.ROOT)
 HISTORY = re.compile(r"\b(used to|first version|earlier run|before this|this session|same session|"
                      r"was found|at first|previously|no longer a band|as it was drawn)\b", re.I)
 

@@ -6,7 +6,7 @@ drivers/mlgshimmy/, and a dotted module name of the package
 the longest module must be defined in that module).  A renamed or removed
 module then fails here instead of leaving the reader a dead pointer.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_named_paths.py
+Run: /usr/bin/python3 -m pytest -q tests/release/test_named_paths.py
 """
 import ast
 import functools
@@ -16,7 +16,9 @@ import re
 import subprocess
 import tokenize
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import helpers
+
+ROOT = pathlib.Path(helpers.ROOT)
 PACKAGE = ROOT / "drivers" / "mlgshimmy"
 ROOMS = ("shared", "figures", "studies")
 

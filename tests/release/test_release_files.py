@@ -1,14 +1,16 @@
 """LICENSE and CITATION.cff: present, and the software version they state
 is the one of c/mlg_version.h (the one source of the version).
 
-Run: /usr/bin/python3 -m pytest -q tests/test_release_files.py
+Run: /usr/bin/python3 -m pytest -q tests/release/test_release_files.py
 """
 import pathlib
 import re
 
 import pytest
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import helpers
+
+ROOT = pathlib.Path(helpers.ROOT)
 
 
 def header_version():

@@ -7,7 +7,7 @@ to a screenshot, its sidebar beside the text (`make test` installs Chromium
 and sets MLG_REQUIRE_CHROMIUM: there a missing Chromium fails; by hand it
 skips, with the reason).
 
-Run: /usr/bin/python3 -m pytest -q tests/test_report.py
+Run: /usr/bin/python3 -m pytest -q tests/release/test_report.py
 """
 import html.parser
 import json
@@ -135,7 +135,7 @@ def test_the_page_from_cached_results(run_root, capsys):
     docs = os.path.relpath(os.path.join(report.paths.ROOT, "docs", "reproduction.md"), out)
     assert f"{docs}#fig-10--f--1-with-1-mm-of-freeplay-diagram-in-v" in page.links
     assert os.path.isfile(os.path.join(out, docs))
-    assert "tests/test_naming.py::test_the_paper_s_gear_has_its_three_named_points" in text
+    assert "tests/continuation/test_naming.py::test_the_paper_s_gear_has_its_three_named_points" in text
     assert "No figure yet: run <code>make fig11</code>" in text
     assert "numpy" in text and "matplotlib" in text and "abc123" in text
     assert "missing: fig06" in capsys.readouterr().out

@@ -4,7 +4,7 @@ c/mlg_parameters.h by its name, e.g. `make fig10 SET='k_tlk=3.51e7 I_psi=160'`
 anything is installed or built.
 
 The names and units come from the X-macro tables of c/mlg_parameters.h,
-read as text (tests/test_gear.py checks them against the built library),
+read as text (tests/model/test_gear.py checks them against the built library),
 so a typo gets "did you mean" without a build.  Ranges are the library's
 own check (mlg_params_check), which shared.gear.check() runs before a
 driver starts.  What a figure sets itself (its speed, load, freeplay and

@@ -1,7 +1,7 @@
 """Text that overlaps other text in a drawn figure: titles, axis labels,
 tick labels, names of points, annotations and legend entries, compared by
 their bounding boxes as rendered.  draw.save reports every overlap it finds
-(one line each); tests/test_figure_style.py requires none."""
+(one line each); tests/figures/test_figure_style.py requires none."""
 from typing import List, Tuple
 
 import matplotlib

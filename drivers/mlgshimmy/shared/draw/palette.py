@@ -4,7 +4,7 @@ grey scale as well; families of curves from viridis (sequence); maps of a
 quantity from viridis, or cividis where the sign matters (a difference
 from the paper's gear).  mlg.mplstyle beside this file puts CYCLE, the
 fonts and the number formats into every figure (shared.draw applies it).
-tests/test_figure_style.py holds figures and studies to it: no colour is
+tests/figures/test_figure_style.py holds figures and studies to it: no colour is
 named anywhere else.
 """
 from typing import List, Tuple
