@@ -11,7 +11,7 @@ import pytest
 
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import kappa_criterion
-from mlgshimmy.shared import rolling
+from mlgshimmy.shared import rolling_state
 from mlgshimmy.shared import stage_switch
 from mlgshimmy.shared import yfp_runs
 from mlgshimmy.shared import mlgmodel
@@ -140,7 +140,7 @@ def test_the_stage_switch_loads_put_the_strut_on_its_switch():
     loads = stage_switch.stage_switch_loads(criterion.LOADS)
     model = mlgmodel.Model("figures")
     eta_s, width = model["eta_stage"], stage_switch.SWITCH_WIDTHS / model["k_stage"]
-    etas = [rolling.rolling_state(F, 0.0)["eta"] for F in loads]
+    etas = [rolling_state.rolling_state(F, 0.0)["eta"] for F in loads]
     assert len(loads) == stage_switch.SWITCH_LOADS and 0.6 < loads[0] < loads[-1] < 0.72, loads
     assert math.isclose(etas[0], eta_s - width, abs_tol=1e-7), etas
     assert math.isclose(etas[-1], eta_s + width, abs_tol=1e-7), etas

@@ -13,7 +13,7 @@ import subprocess
 import pytest
 
 import helpers
-from mlgshimmy.shared import gear, geometry, mlgmodel, rolling, simulator
+from mlgshimmy.shared import gear, geometry, mlgmodel, rolling, rolling_state, simulator
 
 ROOT = pathlib.Path(helpers.ROOT)
 TEN = {"rho": math.radians(10), "mu": math.radians(10), "eom_terms": 2.0}
@@ -184,7 +184,7 @@ def test_straight_rolling_is_continued_from_zero_freeplay():
     assert max(abs(f) for f in rolling._residual(model, list(w.values()))[0]) < 1e-6
     assert 0.5 < geometry.y_tlk(model, w) / 1.5e-3 < 1.0
     # at rho = mu = 0 it is solved once per load, as before
-    assert rolling.rolling_state(0.3, 1.5) is rolling.rolling_state(0.3, 0.2)
+    assert rolling_state.rolling_state(0.3, 1.5) is rolling_state.rolling_state(0.3, 0.2)
 
 
 def test_the_geometry_reaches_the_simulator(tmp_path):

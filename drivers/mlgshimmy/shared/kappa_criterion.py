@@ -7,7 +7,7 @@ import numpy
 
 from mlgshimmy.shared import mlgmodel, rolling, spectrum
 from mlgshimmy.shared.freeplay import EPSILON
-from mlgshimmy.shared.rolling import rolling_state
+from mlgshimmy.shared.rolling_state import rolling_state
 from mlgshimmy.shared.stage_switch import stage_switch_loads, stage_switch_window
 from mlgshimmy.shared.yfp_runs import V_LIMIT, V_MIN, YFP_MAX, YFP_MIN, values
 

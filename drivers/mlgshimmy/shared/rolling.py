@@ -19,13 +19,11 @@ no straight rolling beyond: NoRollingState.
 """
 import bisect
 import ctypes
-import functools
 from typing import Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy
 
 from mlgshimmy.shared import mlgmodel
-from mlgshimmy.shared.freeplay import SCALINGS
 
 # Newton-Kantorovich: corrections shrinking by 1/4 or more (h <= 1/2) make the
 # state reached the only equilibrium within twice the first of the prediction.
@@ -204,25 +202,3 @@ def state(parameter_set: str, Fstar: float, yfp: float, epsilon: Dict[str, float
         us[k + 1:k + 1] = [u for _, u in found]
         u0 = us[k + len(found)]
     return dict(zip(mlgmodel.UNAMES, u0))
-
-
-@functools.lru_cache(maxsize=1024)
-def straight_rolling(parameter_set, Fstar, overrides):
-    """The straight-rolling state at load F* with the parameter overrides
-    ((name, value) pairs).  It is the same for every V > 0 (docs/model.md
-    4.20), and at rho = mu = 0 for every freeplay (the torque links carry
-    no load at psi = 0), so the scans below solve it once per load there
-    (rolling_state)."""
-    return mlgmodel.Model(parameter_set, Fstar=Fstar, **dict(overrides)).equilibrium()
-
-
-def rolling_state(Fstar, yfp, scaling="fixed", parameter_set="figures", **model):
-    """straight_rolling at this freeplay.  At rho = mu = 0 it is solved once
-    per load.  With side-stay angles (rho or mu in `model` non-zero)
-    straight rolling twists the links (docs/model.md 8.7): its state depends
-    on the freeplay, and at light load several equilibria coexist, so it is
-    the one continued from zero freeplay (shared.rolling; NoRollingState
-    beyond a fold in y_fp)."""
-    if model.get("rho", 0.0) or model.get("mu", 0.0):
-        return state(parameter_set, Fstar, yfp, SCALINGS[scaling], **model)
-    return straight_rolling(parameter_set, Fstar, tuple(sorted(model.items())))

@@ -4,7 +4,7 @@ kappa* minimum must also evaluate (its stiffness is steepest there)."""
 import numpy
 
 from mlgshimmy.shared import mlgmodel, spectrum
-from mlgshimmy.shared.rolling import rolling_state
+from mlgshimmy.shared.rolling_state import rolling_state
 
 SWITCH_WIDTHS = 3.0    # the stage switch: eta* within this many 1/k_stage of eta_stage
 SWITCH_LOADS = 5       # loads evaluated across it
