@@ -6,20 +6,21 @@ restabilises at about 1.144 mm at F* = 1."""
 import numpy
 
 from mlgshimmy.shared import gear, geometry
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion as kc
+from mlgshimmy.shared import yfp_runs
 
 MODEL = gear.Gear(geometry.Geometry(15.0, -5.0, 2)).parameters()
 
 
 def test_b_beyond_the_scan_is_infinite():
-    b, V = mg.extreme_yfp_crossing(1.9, "high", highest=True, **MODEL)
-    assert b == numpy.inf and mg.V_MIN <= V <= mg.V_LIMIT
+    b, V = kc.extreme_yfp_crossing(1.9, "high", highest=True, **MODEL)
+    assert b == numpy.inf and yfp_runs.V_MIN <= V <= yfp_runs.V_LIMIT
     # ... because at that speed the mode is unstable at the scan's end
-    assert mg.growth(1.9, mg.YFP_MAX, V, **MODEL)["high"] > 0
+    assert kc.growth(1.9, yfp_runs.YFP_MAX, V, **MODEL)["high"] > 0
 
 
 def test_b_inside_the_scan_is_its_crossing():
-    b, V = mg.extreme_yfp_crossing(1.0, "high", highest=True, **MODEL)
-    assert abs(b - 1.1439) < 1e-3 and V == mg.V_LIMIT, (b, V)
-    below, above = (mg.growth(1.0, y, V, **MODEL)["high"] for y in (0.99 * b, 1.01 * b))
+    b, V = kc.extreme_yfp_crossing(1.0, "high", highest=True, **MODEL)
+    assert abs(b - 1.1439) < 1e-3 and V == yfp_runs.V_LIMIT, (b, V)
+    below, above = (kc.growth(1.0, y, V, **MODEL)["high"] for y in (0.99 * b, 1.01 * b))
     assert below > 0 > above
