@@ -3,8 +3,9 @@ shared/draw/palette.py and its style from shared/draw/mlg.mplstyle (through
 shared.draw), saves through draw.save, and draws no text over other text.
 
 The quick figures are drawn here from scratch (fig06, fig07, fig08, fig09,
-fig15: about 40 s); draw.save reports any overlap in every figure `make`
-draws as well.
+fig15: about 40 s), Fig. 11 from a made-up result by
+tests/figures/test_fig11_legend.py; draw.save reports any overlap in every figure
+`make` draws as well.
 Run: /usr/bin/python3 -m pytest -q tests/figures/test_figure_style.py
 """
 import os
@@ -22,12 +23,8 @@ from mlgshimmy.shared import draw  # noqa: E402
 from mlgshimmy.shared.draw import overlap, palette  # noqa: E402
 
 PACKAGE = os.path.join(ROOT, "drivers", "mlgshimmy")
-# where colours may be named: the palette itself; Fig. 11's drawing and its
-# region colours, until its plot moves to the palette with its short legend
-# (the lead's work on figures/fig11)
-NAMED_HERE = {os.path.join("shared", "draw", "palette.py"),
-              os.path.join("figures", "fig11", "regions.py"),
-              os.path.join("figures", "fig11", "plot.py")}
+# where colours may be named: the palette itself
+NAMED_HERE = {os.path.join("shared", "draw", "palette.py")}
 COLOUR = re.compile(
     r"""["']#[0-9a-fA-F]{3,8}["']"""                           # "#0b3d91"
     r"""|["']tab:\w+["']"""                                    # "tab:blue"

@@ -17,12 +17,11 @@ from mlgshimmy.shared import kappa_criterion
 # sides (3e-4 m/s apart); a tongue's two edges stop short of where they
 # meet (2.5 m/s apart at F* = 0.863)
 JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
-JOIN_LABELS = {"hopf": "two Hopf curves meet inside the oleo stage\n"
-                       "switch (AUTO stops both; at the paper's gear H1's and H2's)",
-               "hopf_elsewhere": "two Hopf curves meet where AUTO stops both\n"
-                                 "(outside the stage switch; not resolved)",
-               "tongue": "a tongue's two edges meet: its tip\n"
-                         "(AUTO stops both there)"}
+JOIN_LABELS = {"hopf": "two Hopf curves meet inside the oleo's stage switch (at the "
+                       "paper's gear those from H1 and H2)",
+               "hopf_elsewhere": "two Hopf curves meet outside the stage switch, where "
+                                 "AUTO stops both (not resolved)",
+               "tongue": "the two edges of a tongue meet: its tip"}
 
 
 def in_plane(point):

@@ -1,4 +1,11 @@
-"""Fig. 11 drawn from its cached result."""
+"""Fig. 11 drawn from its cached result: the regions by what the gear
+settles on, the curves that bound them, a short legend in the reader's
+words, and the rest (the reference curves, where each curve ends and why)
+in a caption written beside the PNG, $MLG_RUN_ROOT/figures/fig11_caption.txt,
+which the report shows under the figure."""
+import os
+from typing import Any, Dict, List, Sequence, Tuple
+
 import numpy
 
 from mlgshimmy.figures.fig11.ends import JOIN_LABELS, SWITCH_WIDTHS
@@ -6,110 +13,132 @@ from mlgshimmy.figures.fig11.plane import F_MAX, SLICES, V_MAX
 from mlgshimmy.figures.fig11.regions import shade
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paper
+from mlgshimmy.shared import paths
+from mlgshimmy.shared.jobs.atomic import write_text
 
-STYLES = {"hopf": ("k-", "Hopf (y_fp = 1 mm)"), "fold": ("b--", "fold of periodic orbits"),
-          "zero": ("k:", "Hopf, zero freeplay")}
+CAPTION = "fig11_caption.txt"
+# the curves of the legend: (result["curves"] key, legend text, line style)
+CURVES = (("hopf", "Hopf curve: straight rolling's stability changes", "-"),
+          ("fold", "fold of shimmy orbits (S in Fig. 10)", "--"),
+          ("torus", "torus curve: quasi-periodic shimmy beyond", "-"),
+          ("tongue", "tongue edge: large shimmy unstable inside", "--"))
+# where a curve ends inside the plane: (result key, join kind or None, why)
+ENDS = (("mx_joins", "hopf", JOIN_LABELS["hopf"]),
+        ("mx_joins", "hopf_elsewhere", JOIN_LABELS["hopf_elsewhere"]),
+        ("mx_joins", "tongue", JOIN_LABELS["tongue"]),
+        ("stage_switch_ends", None, "the curve stops inside the oleo's stage switch"),
+        ("generalised_hopf_ends", None, "a fold curve ends on the Hopf curve (a generalised "
+                                        "Hopf point: its orbits shrink to straight rolling)"),
+        ("on_fold_ends", None, "a torus curve ends on a fold curve (its Floquet pair meets "
+                               "the fold's multiplier 1)"),
+        ("liftoff_ends", None, "the curve ends at the lift-off edge (a wheel lifts off beyond)"),
+        ("mx_stops", None, "AUTO stopped the continuation (MX) for no reason found"))
 
 
-def plot(result):
+def curve_colours(palette: Any) -> Dict[str, str]:
+    """The colour of each curve kind of CURVES."""
+    return {"hopf": palette.HOPF, "fold": palette.FOLD, "torus": palette.TORUS,
+            "tongue": palette.TORUS}
+
+
+def ends_found(result: Dict[str, Any]) -> List[Tuple[float, float, str]]:
+    """[(V, F*, why)] of every curve end inside the plane that the result
+    records, in ENDS' order."""
+    out = []
+    for key, kind, why in ENDS:
+        for point in result.get(key, []):
+            if kind is None or point["kind"] == kind:
+                out.append((float(point["V"]), float(point["Fstar"]), " ".join(why.split())))
+    return out
+
+
+def caption(result: Dict[str, Any], ends: Sequence[Tuple[float, float, str]]) -> str:
+    """The caption: what the figure holds beyond its legend."""
+    lines = ["Fig. 11: the (V, F*) plane with ±1 mm of torque-link freeplay (y_fp = 1 mm, "
+             "eps = 0.1 mm). Each region is labelled by what the gear settles on there, "
+             f"found on diagrams in V at the loads F* = {SLICES[0]:g}, {SLICES[1]:g}, ..., "
+             f"{SLICES[-1]:g}; where two attractors are named, a disturbance decides "
+             "between them.", ""]
+    if result["curves"].get("zero"):
+        lines.append("- Grey dotted: the Hopf curve without freeplay (Fig. 9), for reference.")
+    if result["pitchfork"][1] or result.get("stationary_folds"):
+        lines.append("- Hatched, between the dash-dotted lines: stable yawed (off-centre) "
+                     "rolling; the lines are the pitchforks where it begins and ends (with "
+                     "side-stay angles, the folds of the yawed states).")
+    if result["torus_points"]:
+        lines.append("- Small open circles: torus points of the large shimmy found on the "
+                     "diagrams in V that no continued tongue edge passes through.")
+    if result.get("liftoff"):
+        lines.append(f"- Lift-off edge: beyond it a wheel lifts off within "
+                     f"{result['liftoff']['t_end']:g} s of a disturbed straight rolling "
+                     "(simulated, bisected in V and on V = 600 m/s in F*).")
+    if result.get("stage_switch_ends"):
+        lines.append(f"- Thin grey lines: the oleo's stage switch, where straight rolling's "
+                     f"strut compression is within {SWITCH_WIDTHS:g}/k_stage of the switch.")
+    if ends:
+        lines += ["", "Where a curve ends inside the plane (the open diamonds), and why:"]
+        lines += [f"- V = {V:.4g} m/s, F* = {F:.4g}: {why}" for V, F, why in ends]
+    return "\n".join(lines) + "\n"
+
+
+def plot(result: Dict[str, Any]) -> None:
     # matplotlib is loaded here only: each of the ~40 part jobs would spend
     # 0.5 s loading it
     import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
     from mlgshimmy.shared import draw
-    region = result["region_map"]
-    found = numpy.asarray(region["code"])
+    palette = draw.palette
     fig, ax = plt.subplots(figsize=(8, 6.5))
+    regions = shade(ax, numpy.asarray(result["region_map"]["code"]))
+    colours = curve_colours(palette)
     handles = []
-    for kind, (style, label) in STYLES.items():
-        for diagram in result["curves"][kind]:
+    for kind, text, style in CURVES:
+        diagrams = result["curves"].get(kind, [])
+        for diagram in diagrams:
             for branch in jobs.loaded(diagram):
-                ax.plot(branch["V"], branch["Fstar"], style, lw=1.4)
-        handles.append(plt.Line2D([], [], color=style[0], ls=style[1:], label=label))
-    for f in result["pitchfork"][1]:
-        ax.axhline(f, color="g", lw=1.4, ls="-.")
-    if result["pitchfork"][1]:
-        handles.append(plt.Line2D([], [], color="g", ls="-.", label="pitchfork"))
-    for f in result.get("stationary_folds", []):
-        ax.axhline(f, color="g", lw=1.4, ls=":")
-    if result.get("stationary_folds"):
-        handles.append(plt.Line2D([], [], color="g", ls=":", label=(
-            "fold of yawed equilibria (the imperfect\npitchforks of the gear with side-stay angles)")))
-    for diagram in result["curves"]["torus"]:
+                ax.plot(branch["V"], branch["Fstar"], color=colours[kind], ls=style, lw=1.4)
+        if diagrams:
+            handles.append(Line2D([], [], color=colours[kind], ls=style, lw=1.4, label=text))
+    for diagram in result["curves"].get("zero", []):
         for branch in jobs.loaded(diagram):
-            ax.plot(branch["V"], branch["Fstar"], color="m", lw=1.4)
-    handles.append(plt.Line2D([], [], color="m", label="torus (Neimark-Sacker) curve:\n"
-                              "large orbit loses stability, quasi-periodic\nshimmy beyond "
-                              "(AUTO, ISW = 2)"))
-    for diagram in result["curves"].get("tongue", []):
-        for branch in jobs.loaded(diagram):
-            ax.plot(branch["V"], branch["Fstar"], color="m", lw=1.2, ls="--")
-    if result["curves"].get("tongue"):
-        handles.append(plt.Line2D([], [], color="m", ls="--", label=(
-            "torus curve of another Floquet pair: edge of a\n"
-            "tongue where the large orbit is unstable (AUTO)")))
+            ax.plot(branch["V"], branch["Fstar"], color=palette.GUIDE, ls=":", lw=1.2)
     for point in result["torus_points"]:
-        ax.plot(point["V"], point["Fstar"], "o", mfc="none", mec="m", ms=5)
-    if result["torus_points"]:
-        handles.append(plt.Line2D([], [], color="m", marker="o", mfc="none", ls="",
-                                  label="tongue torus points on no continued\n"
-                                        "curve (located on diagrams in V)"))
-    lift = [c for c in result["edge_curves"] if c["kind"] == "liftoff"]
-    if lift:
+        ax.plot(point["V"], point["Fstar"], "o", mfc="none", mec=palette.TORUS, ms=4)
+    if result.get("liftoff"):
+        lift = [c for c in result["edge_curves"] if c["kind"] == "liftoff"]
         V, F = numpy.array(result["liftoff"]["points"]).T
-        ax.plot(lift[0]["V"], lift[0]["Fstar"], color="navy", lw=1.4)
-        ax.plot(V, F, "o", color="navy", ms=3)
-        handles.append(plt.Line2D([], [], color="navy", marker="o", ms=3, label=(
-            f"wheel lift-off within {result['liftoff']['t_end']:g} s from straight\n"
-            "rolling (bisection in V and on V = 600 in F*)")))
-    for kind, colour in (("hopf", "k"), ("hopf_elsewhere", "0.5"), ("tongue", "m")):
-        joins = [j for j in result["mx_joins"] if j["kind"] == kind]
-        for join in joins:
-            ax.plot(join["V"], join["Fstar"], "o", color=colour, ms=4)
-        if joins:
-            handles.append(plt.Line2D([], [], color=colour, marker="o", ms=4, ls="",
-                                      label=JOIN_LABELS[kind]))
-    switch_ends = result.get("stage_switch_ends", [])
-    if switch_ends:
+        ax.plot(lift[0]["V"], lift[0]["Fstar"], color=palette.LIFTOFF, lw=1.6)
+        ax.plot(V, F, "o", color=palette.LIFTOFF, ms=2.5)
+        handles.append(Line2D([], [], color=palette.LIFTOFF, lw=1.6,
+                              label="lift-off edge: a wheel lifts off beyond"))
+    yawed = list(result["pitchfork"][1]) + list(result.get("stationary_folds", []))
+    for f in yawed:
+        ax.axhline(f, color=palette.PITCHFORK, lw=1.0, ls="-.")
+    if result.get("stage_switch_ends"):
         for f in result["stage_switch"]:
-            ax.axhline(f, color="0.45", lw=0.7)
-        for stop in switch_ends:
-            ax.plot(stop["V"], stop["Fstar"], "D", mfc="none", mec="k", ms=5)
-        handles.append(plt.Line2D([], [], color="0.45", lw=0.7, marker="D", mfc="none",
-                                  mec="k", ms=5, label=(
-            f"oleo stage switch (|eta* - eta_s| < {SWITCH_WIDTHS:g}/k_stage)\n"
-            "and where AUTO stops a curve inside it")))
-    for stop in result.get("generalised_hopf_ends", []):
-        ax.plot(stop["V"], stop["Fstar"], "*", color="b", ms=8)
-    if result.get("generalised_hopf_ends"):
-        handles.append(plt.Line2D([], [], color="b", marker="*", ls="", ms=8,
-                                  label="a fold curve ends on the Hopf locus (generalised\n"
-                                        "Hopf point: its orbits shrink to straight rolling)"))
-    for stop in result.get("on_fold_ends", []):
-        ax.plot(stop["V"], stop["Fstar"], "^", mfc="none", mec="m", ms=6)
-    if result.get("on_fold_ends"):
-        handles.append(plt.Line2D([], [], color="m", marker="^", mfc="none", ls="", ms=6,
-                                  label="a torus curve ends on a fold curve (its Floquet\n"
-                                        "pair meets the fold's multiplier 1)"))
-    for stop in result.get("liftoff_ends", []):
-        ax.plot(stop["V"], stop["Fstar"], "s", mfc="none", mec="navy", ms=5)
-    if result.get("liftoff_ends"):
-        handles.append(plt.Line2D([], [], color="navy", marker="s", mfc="none", ls="", ms=5,
-                                  label="a curve ends at the lift-off edge\n"
-                                        "(AUTO stops; the wheel lifts off beyond)"))
-    for stop in result["mx_stops"]:
-        ax.plot(stop["V"], stop["Fstar"], "rx", ms=8)
-    if result["mx_stops"]:
-        handles.append(plt.Line2D([], [], color="r", marker="x", ls="",
-                                  label="continuation stopped (MX)"))
-    patches = shade(ax, found)
-    ax.legend(handles=handles + patches, fontsize=7, loc="upper left",
-              bbox_to_anchor=(1.01, 1.0), framealpha=0.9)
+            ax.axhline(f, color=palette.GUIDE, lw=0.6)
+    ends = ends_found(result)
+    for V, F, _ in ends:
+        ax.plot(V, F, "D", mfc=palette.OPEN, mec=palette.NEUTRAL, ms=4.5, zorder=6)
+    # special points marked with draw.mark (e.g. codimension-two points on
+    # the curves) follow under their own names
+    handles += draw.point_handles(draw.marked_kinds(ax))
     ax.set_xlim(0, V_MAX)
     ax.set_ylim(0, F_MAX)
     ax.set_xlabel("V [m/s]")
     ax.set_ylabel(r"$F_z^*$")
-    draw.figure_title(ax, r"Fig. 11: $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm; regions bounded by the "
-                          "curves, labelled from diagrams in V at "
-                          f"F* = {SLICES[0]:g}, {SLICES[1]:g}, ..., {SLICES[-1]:g}", fontsize=8)
+    if yawed:
+        regions.append(Patch(facecolor="none", edgecolor=palette.NEUTRAL, hatch="///",
+                             label="hatched: yawed rolling too"))
+    # figure legends, which the saved figure's bounds take in, beside the axes
+    for items, title, corner, y in ((handles, "curves", "upper left", 1.0),
+                                    (regions, "the gear settles on", "lower left", 0.0)):
+        fig.legend(handles=items, title=title, loc=corner, bbox_to_anchor=(1.02, y),
+                   bbox_transform=ax.transAxes)
+    draw.figure_title(ax, r"Fig. 11: $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm: what the gear "
+                          "settles on, and the curves that bound it")
+    write_text(os.path.join(paths.figures_dir(), CAPTION), caption(result, ends))
     draw.save(fig, "fig11")
     paper.report("fig11", result["numbers"])

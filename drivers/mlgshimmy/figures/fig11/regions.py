@@ -1,5 +1,7 @@
 """Fig. 11's region map: the plane cut by the curves, each piece labelled
 by the attractors the slices' samples find there (shared.regions)."""
+from typing import Any, List, Tuple
+
 import numpy
 
 from mlgshimmy.figures.fig11.plane import F_GRID, FREEPLAY, GEOMETRY, V_GRID, V_MAX, V_MIN
@@ -11,6 +13,7 @@ from mlgshimmy.shared import yawed
 ATTRACTORS, NAMES = regions.ATTRACTORS, regions.ATTRACTOR_NAMES
 BAND = "; stable off-centre yaw equilibria"
 PIECE_DISAGREEMENT = 0.05   # a piece whose samples disagree more than this is reported
+REGION_ALPHA = 0.8          # the regions' fills under the curves
 
 
 def slice_codes(orbits):
@@ -86,11 +89,6 @@ def region_map(sr_stable, orbits, edge_curves, yaw, lift=None):
     return found, check
 
 
-COLOURS = {  # by region_key; white: straight rolling only
-    1: "white", 5: "tab:orange", 3: "tab:olive", 6: "tab:purple", 7: "tab:brown",
-    2: "tab:cyan", 4: "tab:red", 16: "tab:gray", 32: "tab:blue", 8: "0.85", 0: "k"}
-
-
 def region_key(found):
     """The code without the yaw bit (hatched on top), except where off-centre
     yaw is all there is."""
@@ -105,24 +103,42 @@ def region_name(value):
     return ("" if len(names) == 1 else "coexisting: ") + " / ".join(names)
 
 
-def shade(ax, found):
-    """Paint the map (regions by colour, the yaw band hatched); returns the
-    legend patches of the regions present."""
+# the attractors in the legend's words
+WORDS = {"straight": "straight rolling", "low": "low-frequency shimmy",
+         "high": "high-frequency shimmy", "yaw": "yawed rolling",
+         "quasi": "quasi-periodic shimmy", "liftoff": "a wheel lifts off"}
+
+
+def region_kinds(value: int) -> Tuple[str, ...]:
+    """The attractor kinds of a region_key, in ATTRACTORS' order."""
+    return tuple(kind for kind, bit in ATTRACTORS.items() if value & bit)
+
+
+def region_words(value: int) -> str:
+    """A region_key in the reader's words, for the legend: what the gear
+    settles on there ("straight rolling or high-frequency shimmy")."""
+    kinds = region_kinds(value)
+    return " or ".join(WORDS[kind] for kind in kinds) if kinds else "nothing found stable"
+
+
+def shade(ax: Any, found: numpy.ndarray) -> List[Any]:
+    """Paint the map (regions by colour, palette.REGION; the yaw band
+    hatched) and return the legend patches of the regions present."""
     from matplotlib.colors import ListedColormap
     from matplotlib.patches import Patch
+
+    from mlgshimmy.shared.draw import palette
     key = region_key(found)
     values = numpy.unique(key).tolist()
-    colours = [COLOURS.get(v, "k") for v in values]
+    extra = iter(palette.categories(20))
+    colours = [palette.REGION.get(region_kinds(v)) or next(extra) for v in values]
     half_V, half_F = 0.5 * (V_GRID[1] - V_GRID[0]), 0.5 * (F_GRID[1] - F_GRID[0])
     ax.imshow(numpy.searchsorted(values, key), cmap=ListedColormap(colours), vmin=-0.5,
-              vmax=len(values) - 0.5, alpha=0.45, origin="lower", aspect="auto",
+              vmax=len(values) - 0.5, alpha=REGION_ALPHA, origin="lower", aspect="auto",
               interpolation="nearest", extent=(V_GRID[0] - half_V, V_GRID[-1] + half_V,
                                                F_GRID[0] - half_F, F_GRID[-1] + half_F))
     band = ((found & ATTRACTORS["yaw"]) != 0).astype(float)
     if band.any():
         ax.contourf(V_GRID, F_GRID, band, levels=[0.5, 1.5], colors="none", hatches=["///"])
-    handles = [Patch(facecolor=c, edgecolor="0.4", alpha=0.45, label=region_name(v))
-               for v, c in zip(values, colours)]
-    return handles + [Patch(facecolor="none", edgecolor="k", hatch="///",
-                            label="stable off-centre yaw equilibria\n"
-                                  "(eigenvalues at the yawed states)")]
+    return [Patch(facecolor=c, edgecolor=palette.GUIDE, alpha=REGION_ALPHA,
+                  label=region_words(v)) for v, c in zip(values, colours)]

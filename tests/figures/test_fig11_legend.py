@@ -1,0 +1,119 @@
+"""Fig. 11's drawing (figures/fig11/plot.py) on a small made-up result, no
+AUTO: a legend of about ten entries in the reader's words, no text over
+other text, and a caption beside the PNG that says where each curve ends
+and why.  The made-up result has every kind of curve, end and region that
+the plot draws, so that every branch of it is drawn.
+Run: /usr/bin/python3 -m pytest -q tests/figures/test_fig11_legend.py
+"""
+import numpy
+import pytest
+
+from mlgshimmy.figures.fig11 import plot as fig11_plot
+from mlgshimmy.figures.fig11.plane import F_GRID, V_GRID
+from mlgshimmy.figures.fig11.regions import ATTRACTORS, region_words
+from mlgshimmy.shared import draw
+
+MAX_ENTRIES = 11     # "about ten": the curves' and the regions' legends together
+
+
+def curve(V, F):
+    return [{"columns": {"V": list(V), "Fstar": list(F)}, "stable": [True] * len(V),
+             "labels": []}]
+
+
+def made_up():
+    """Regions in bands of V; one curve of each kind; one end of each kind."""
+    code = numpy.full((len(F_GRID), len(V_GRID)), ATTRACTORS["straight"])
+    bands = [(0, 30, "low"), (30, 140, "straight", "high"), (140, 300, "high"),
+             (300, 450, "quasi"), (450, 601, "liftoff")]
+    for lo, hi, *kinds in bands:
+        code[:, (V_GRID >= lo) & (V_GRID < hi)] = sum(ATTRACTORS[k] for k in kinds)
+    code[(F_GRID > 0.2) & (F_GRID < 0.4), :] |= ATTRACTORS["yaw"]
+    line = numpy.linspace(0.05, 3.4, 20)
+    ends = {"mx_joins": [{"V": 10.0, "Fstar": 0.66, "kind": "hopf"},
+                         {"V": 200.0, "Fstar": 0.9, "kind": "tongue"}],
+            "stage_switch_ends": [{"V": 145.0, "Fstar": 0.68, "curve": "hopf3"}],
+            "generalised_hopf_ends": [{"V": 40.0, "Fstar": 3.0, "curve": "fold2"}],
+            "on_fold_ends": [{"V": 320.0, "Fstar": 2.5, "curve": "torus1"}],
+            "liftoff_ends": [{"V": 470.0, "Fstar": 1.5, "curve": "torus1"}],
+            "mx_stops": [{"V": 250.0, "Fstar": 3.3, "curve": "fold1"}]}
+    return {"region_map": {"code": code.tolist()},
+            "curves": {"hopf": [curve(30 + 0 * line, line)], "fold": [curve(40 + 5 * line, line)],
+                       "zero": [curve(340 + 10 * line, line)],
+                       "torus": [curve(300 + 20 * line, line)],
+                       "tongue": [curve(200 + 0 * line, line)]},
+            "pitchfork": [[], [0.2, 0.4]], "torus_points": [{"V": 210.0, "Fstar": 1.2}],
+            "edge_curves": [{"kind": "liftoff", "V": [450.0, 450.0], "Fstar": [0.02, 3.5]}],
+            "liftoff": {"points": [[450.0, 0.5], [450.0, 1.5]], "t_end": 2.0, "psi0": 0.05},
+            "stage_switch": [0.63, 0.70], "numbers": {}, **ends}
+
+
+def draw_fig11(tmp_path, monkeypatch, mark=None):
+    """Draw the made-up result; (its legends' texts, the overlapping texts,
+    the caption, the PNG).  mark(ax): marks more points before the plot
+    draws (as a figure marking codimension-two points would)."""
+    import matplotlib.pyplot as plt
+    monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
+    monkeypatch.setattr(fig11_plot.paper, "report", lambda *args, **kw: "")
+    if mark:
+        subplots = plt.subplots
+
+        def marked(*args, **kw):
+            fig, ax = subplots(*args, **kw)
+            mark(ax)
+            return fig, ax
+        monkeypatch.setattr(plt, "subplots", marked)
+    kept = {}
+    save = draw.save
+
+    def keep(fig, name):
+        kept["legends"] = [[t.get_text() for t in legend.get_texts()]
+                           for legend in fig.legends]
+        kept["overlaps"] = draw.overlap.overlaps(fig)
+        save(fig, name)
+    monkeypatch.setattr(draw, "save", keep)
+    fig11_plot.plot(made_up())
+    kept["caption"] = (tmp_path / "figures" / fig11_plot.CAPTION).read_text()
+    kept["png"] = tmp_path / "figures" / "fig11.png"
+    return kept
+
+
+@pytest.fixture
+def drawn(tmp_path, monkeypatch):
+    return draw_fig11(tmp_path, monkeypatch)
+
+
+def test_the_legend_is_short_and_in_the_reader_s_words(drawn):
+    entries = [text for legend in drawn["legends"] for text in legend]
+    assert len(entries) <= MAX_ENTRIES, entries
+    assert len(drawn["legends"]) == 2
+    for words in ("Hopf curve", "fold of shimmy orbits", "torus curve", "tongue edge",
+                  "lift-off edge"):
+        assert any(entry.startswith(words) for entry in drawn["legends"][0]), words
+    assert region_words(ATTRACTORS["straight"] | ATTRACTORS["high"]) in drawn["legends"][1]
+    code_words = ("AUTO", "ISW", "MX", "eta", "k_stage", "\n")
+    assert [e for e in entries if any(w in e for w in code_words)] == []
+
+
+def test_no_text_overlaps_other_text(drawn):
+    assert drawn["overlaps"] == []
+    assert drawn["png"].is_file()
+
+
+def test_the_caption_says_where_each_curve_ends_and_why(drawn):
+    lines = [line for line in drawn["caption"].splitlines() if line.startswith("- V = ")]
+    assert len(lines) == 7        # made_up's ends, one line each
+    assert lines[0] == ("- V = 10 m/s, F* = 0.66: two Hopf curves meet inside the oleo's "
+                        "stage switch (at the paper's gear those from H1 and H2)")
+    assert "AUTO stopped the continuation (MX)" in lines[-1] and "V = 250 m/s" in lines[-1]
+    for reference in ("without freeplay", "yawed (off-centre) rolling", "torus points",
+                      "a wheel lifts off within 2 s", "stage switch"):
+        assert reference in drawn["caption"], reference
+
+
+def test_a_special_point_marked_gets_its_entry(tmp_path, monkeypatch):
+    """Points marked through draw.mark (codimension-two points on the
+    curves) join the curves' legend under their own names."""
+    drawn = draw_fig11(tmp_path, monkeypatch, lambda ax: draw.mark(ax, 100.0, 1.0, "GH"))
+    assert [t for t in drawn["legends"][0] if t.startswith("GH: ")] == \
+        ["GH: generalised Hopf point (l1 = 0)"]
