@@ -17,6 +17,7 @@ Start here
   report                     10 s  build/report/index.html: every figure beside the paper's numbers
   demo                       10 s  build/demo/ for AUTO's own commands: auto mlg.auto, @r mlg
   gear RHO=20 MU=5 [SET=]   5 min  "my gear": design answers beside the paper's gear, motion; one page
+  fig11-motion              3 min  the gear's motion animated in each kind of region of Fig. 11
   venv VENV=v                 5 s  a Python virtual environment importing mlgshimmy (notebooks)
   help                        1 s  this list (also plain make)
 

@@ -160,6 +160,18 @@ animate animate-plot: $(MLG_SIMULATE) $(MLG_SHARED)
 	    --Fstar=$(call shell_quote,$(FSTAR)) --start=$(call shell_quote,$(START)) \
 	    --yfp=$(call shell_quote,$(YFP))$(if $(filter animate-plot,$@), --plot)
 
+# One animation per kind of attractor of Fig. 11 (studies.animate --fig11:
+# a point deep inside each kind's region of Fig. 11's cached map, listed in
+# figures/fig11_motion.json for the report).  The map is made if missing,
+# not remade when older than the drivers: any cached map has the regions.
+FIG11_CASES := $(RUN_ROOT)/figures/fig11_motion.cases
+.PHONY: fig11-motion
+fig11-motion: $(MLG_SIMULATE) $(MLG_SHARED) | $(call result,fig11)
+	@mkdir -p $(dir $(FIG11_CASES))
+	$(PYTHON) -m mlgshimmy.studies.animate --fig11 > $(FIG11_CASES)
+	set -e; while read V F S; do $(MAKE) --no-print-directory animate V=$$V FSTAR=$$F \
+	    START=$$S; done < $(FIG11_CASES)
+
 # One labelled point of any diagram (studies.point_view): orbit profile, phase
 # portrait, Floquet multipliers, a simulation from it:
 #   make point RUN=build/fig10/po3 LABEL=5

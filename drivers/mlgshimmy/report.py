@@ -27,8 +27,9 @@ import platform
 import shutil
 import subprocess
 import sys
+from typing import Any, Dict
 
-from mlgshimmy.shared import autosession, checks, gear_answers, paper, provenance
+from mlgshimmy.shared import autosession, checks, gear_answers, motion, paper, provenance
 from mlgshimmy.shared import paths
 from mlgshimmy.shared.jobs import catalogue
 from mlgshimmy.shared.jobs.atomic import write_text
@@ -112,6 +113,31 @@ def read_summary(figure, root):
     return rows or None
 
 
+def read_extras(figure: str, root: str) -> Dict[str, Any]:
+    """What a figure left beside its PNG: {"caption": the text of
+    figures/<fig>_caption.txt or None, "motions": [case of
+    figures/<fig>_motion.json (studies.animate --fig11) with "gif" (its
+    animation, or None) and "settled" (what the simulation settled on,
+    shared.motion.KINDS' words, or None)]}."""
+    out = {"caption": None, "motions": []}
+    try:
+        with open(os.path.join(root, "figures", f"{figure}_caption.txt")) as source:
+            out["caption"] = source.read()
+    except OSError:
+        pass
+    try:
+        with open(os.path.join(root, "figures", f"{figure}_motion.json")) as source:
+            cases = json.load(source)
+    except (OSError, ValueError):
+        cases = []
+    for case in cases:
+        gif = os.path.join(root, "figures", f"{case['name']}.gif")
+        data = read_result(case["name"], root)[1] or {}
+        out["motions"].append(dict(case, gif=gif if os.path.exists(gif) else None,
+                                   settled=motion.KINDS.get(data.get("kind"))))
+    return out
+
+
 def tools():
     """[(tool, version)] of what made and drew the results, read now."""
     import matplotlib
@@ -153,7 +179,7 @@ def collect(root):
         entry = {"figure": figure, "command": command, "shows": shows,
                  "provenance": provenance, "cached": data is not None,
                  "png": png if os.path.exists(png) else None, "rows": rows,
-                 "notes": read_notes(figure, root)}
+                 "notes": read_notes(figure, root), **read_extras(figure, root)}
         result = os.path.join(root, figure, "result.json")
         entry["stale"] = bool(entry["png"] and os.path.exists(result)
                               and os.path.getmtime(entry["png"]) < os.path.getmtime(result))
@@ -265,6 +291,43 @@ def _table(rows):
     return "\n".join(out)
 
 
+def _caption(text):
+    """A caption file as HTML: paragraphs, and "- " lines as lists."""
+    out = []
+    for block in text.strip().split("\n\n"):
+        lines = block.splitlines()
+        items = [line[2:] for line in lines if line.startswith("- ")]
+        rest = " ".join(line for line in lines if not line.startswith("- "))
+        if rest:
+            out.append(f"<p>{html.escape(rest)}</p>")
+        if items:
+            out.append("<ul>" + "".join(f"<li>{html.escape(i)}</li>" for i in items) + "</ul>")
+    return '<div class="caption">' + "".join(out) + "</div>"
+
+
+def _motions(figure, motions, images):
+    """The gear's motion in each kind of region: a list linking each kind
+    to its animation, then the animations."""
+    links, shown = [], []
+    for m in motions:
+        kind = motion.KINDS[m["kind"]]
+        anchor = f"{figure}-motion-{m['kind']}"
+        where = (f"V = {m['V']:g} m/s, F* = {m['Fstar']:g}, in the region where it is "
+                 + ("the only stable state" if m["alone"] else "one of the stable states")
+                 + f" (start: {m['start']})")
+        settled = (f"settled on {m['settled']}" if m["settled"] else "not simulated yet")
+        flag = "" if m["settled"] in (None, kind) else ' <span class="st bad">another state</span>'
+        links.append(f'<li><a href="#{anchor}">{html.escape(kind)}</a>: {html.escape(where)}; '
+                     f"{html.escape(settled)}{flag}</li>")
+        src = images.get(m["gif"])
+        shown.append(f'<figure id="{anchor}"><img src="{html.escape(src)}" alt="{anchor}">'
+                     f"<figcaption>{html.escape(kind)}: {html.escape(where)}</figcaption></figure>"
+                     if src else f'<p id="{anchor}" class="missing">No animation of '
+                     f"{html.escape(kind)} yet: <code>make {figure}-motion</code>.</p>")
+    return ("<h3>The gear's motion in each kind of region</h3><ul>" + "".join(links) + "</ul>"
+            + "".join(shown))
+
+
 def _figure(entry, image, docs):
     figure = entry["figure"]
     parts = [f'<section id="{figure}"><h2>{figure}</h2>',
@@ -282,6 +345,10 @@ def _figure(entry, image, docs):
     else:
         parts.append(f'<p class="missing">No figure yet: run <code>{html.escape(entry["command"])}'
                      "</code>.</p>")
+    if entry.get("caption"):
+        parts.append(_caption(entry["caption"]))
+    if entry.get("motions"):
+        parts.append(_motions(figure, entry["motions"], entry.get("images", {})))
     rows = entry["rows"]
     if rows:
         printed = [r for r in rows if r["paper"] is not None or r.get("held_out")]
@@ -323,6 +390,7 @@ nav.side .missing { color: #a04000; }
 main { flex: 1; min-width: 0; max-width: 72em; padding: 1em 2em; }
 @media (max-width: 50em) { body { display: block; }
   nav.side { position: static; height: auto; width: auto; border-right: none; } }
+.caption { font-size: 0.85em; color: #333; max-width: 60em; }
 .checks { font-size: 0.9em; background: #f7faf7; border-left: 3px solid #7bb07b;
           padding: 0.3em 0.8em; margin: 0.5em 0; }
 .checks ul { margin: 0.2em 0; } .also { font-size: 0.8em; color: #555; }
@@ -430,6 +498,10 @@ def build(out=None, root=None):
             target = os.path.join(out, "figures", f"{entry['figure']}.png")
             shutil.copyfile(entry["png"], target)
             images[entry["figure"]] = f"figures/{entry['figure']}.png"
+        entry["images"] = {}
+        for gif in (m["gif"] for m in entry["motions"] if m["gif"]):
+            shutil.copyfile(gif, os.path.join(out, "figures", os.path.basename(gif)))
+            entry["images"][gif] = f"figures/{os.path.basename(gif)}"
     for study in info["studies"]:
         for path in study["pngs"]:
             name = os.path.basename(path)

@@ -78,3 +78,29 @@ def test_boundary_pixels_both_columns_either_side_of_a_step():
     field = np.zeros((5, 5), dtype=int)
     field[:, 3:] = 1
     assert regions.boundary_pixels(field).sum(axis=0).tolist() == [0, 0, 5, 5, 0]
+
+
+def test_deepest_is_the_centre_of_a_disc_and_of_a_box():
+    x, y = np.linspace(0.0, 2.0, 401), np.linspace(0.0, 1.0, 201)
+    xx, yy = np.meshgrid(x, y)
+    # a disc in units of the ranges: its centre is farthest from its edge
+    disc = np.hypot((xx - 1.4) / 2.0, yy - 0.5) < 0.2
+    assert regions.deepest(x, y, disc) == pytest.approx((1.4, 0.5), abs=0.011)
+    # the grid's edge bounds a region too: the middle of the whole plane
+    assert regions.deepest(x, y, np.ones_like(disc)) == pytest.approx((1.0, 0.5), abs=0.011)
+    assert regions.deepest(x, y, np.zeros_like(disc)) is None
+
+
+def test_representatives_prefer_a_kind_alone_and_fall_back_to_it_among_others():
+    bits = regions.ATTRACTORS
+    x, y = np.linspace(0.0, 600.0, 601), np.linspace(0.0, 3.0, 31)
+    found = np.full((len(y), len(x)), bits["straight"])
+    found[:, x > 300] = bits["high"] | bits["straight"]      # bistable: no high alone
+    found[:, x > 500] = bits["quasi"]
+    found[:, x <= 50] = bits["low"]
+    chosen = regions.representatives(x, y, found)
+    assert sorted(chosen) == ["high", "low", "quasi", "straight"]      # no yaw in the map
+    assert chosen["high"] == {"x": 400.0, "y": 1.5, "alone": False, "start": "shimmy"}
+    assert chosen["straight"] == {"x": 175.0, "y": 1.5, "alone": True, "start": "rolling"}
+    assert chosen["quasi"] == {"x": 550.0, "y": 1.5, "alone": True, "start": "shimmy"}
+    assert chosen["low"] == {"x": 25.0, "y": 1.5, "alone": True, "start": "shimmy"}

@@ -147,6 +147,43 @@ def test_the_page_from_cached_results(run_root, capsys):
            "the orbit branch agrees)</li>" in text
 
 
+def test_fig11_shows_its_caption_and_links_each_region_to_its_motion(run_root):
+    """The caption beside Fig. 11's PNG is shown under it; each kind of
+    region is linked to its animation (studies.animate --fig11), with what
+    the simulation settled on, and one that settled elsewhere is flagged."""
+    root = run_root
+    root.joinpath("figures", "fig11_caption.txt").write_text(
+        "Fig. 11: the plane.\n\nWhere a curve ends:\n- V = 10 m/s, F* = 0.66: two Hopf "
+        "curves meet\n")
+    cases = [{"kind": "straight", "V": 175.0, "Fstar": 1.5, "start": "rolling", "alone": True,
+              "name": "animate_V175_F1.5_yfp1_rolling"},
+             {"kind": "high", "V": 400.0, "Fstar": 1.5, "start": "shimmy", "alone": False,
+              "name": "animate_V400_F1.5_yfp1_shimmy"},
+             {"kind": "quasi", "V": 550.0, "Fstar": 1.0, "start": "shimmy", "alone": True,
+              "name": "animate_V550_F1_yfp1_shimmy"}]
+    root.joinpath("figures", "fig11_motion.json").write_text(json.dumps(cases))
+    for case, kind in zip(cases[:2], ("straight", "low")):     # the second went elsewhere
+        root.joinpath("figures", f"{case['name']}.gif").write_bytes(b"GIF89a")
+        (root / case["name"]).mkdir()
+        (root / case["name"] / "result.json").write_text(json.dumps(
+            {"figure": case["name"], "data": {"kind": kind}, "provenance": {}}))
+    report.build()
+    text = (root / "report" / "index.html").read_text()
+    page = Page()
+    page.feed(text)
+    assert "<p>Fig. 11: the plane.</p>" in text
+    assert "<ul><li>V = 10 m/s, F* = 0.66: two Hopf curves meet</li></ul>" in text
+    assert [h for h in page.links if "-motion-" in h] == \
+        ["#fig11-motion-straight", "#fig11-motion-high", "#fig11-motion-quasi"]
+    assert {"fig11-motion-straight", "fig11-motion-high", "fig11-motion-quasi"} <= set(page.ids)
+    for case in cases[:2]:
+        assert f"figures/{case['name']}.gif" in page.images
+        assert (root / "report" / "figures" / f"{case['name']}.gif").is_file()
+    assert "settled on straight rolling</li>" in text
+    assert "settled on low-frequency shimmy <span class=\"st bad\">another state</span>" in text
+    assert "not simulated yet" in text and "make fig11-motion" in text
+
+
 def test_chromium_renders_the_page(run_root, tmp_path):
     chromium = shutil.which("chromium") or shutil.which("chromium-browser")
     if not chromium:

@@ -13,6 +13,8 @@ themselves take the label of the nearest labelled pixel.  `check` counts the
 samples that disagree with their piece's label: a missing edge curve shows
 up there, as two regions merged into one piece.
 """
+from typing import Any, Dict, Iterable, Optional, Sequence, Tuple
+
 import numpy
 
 
@@ -113,3 +115,44 @@ def code(kinds):
         bits |= ATTRACTORS[END_STATE_ATTRACTOR.get(kind, kind)]
     return bits
 
+
+
+# the kinds of attractor a region map is shown by (an animation each), and
+# the start of the simulation that reaches each (shared.motion.STARTS)
+SHOWN = {"straight": "rolling", "low": "shimmy", "high": "shimmy", "quasi": "shimmy",
+         "yaw": "yawed"}
+
+
+def deepest(x: numpy.ndarray, y: numpy.ndarray,
+            inside: numpy.ndarray) -> Optional[Tuple[float, float]]:
+    """The point (x, y) of the mask inside[y, x] farthest from its edge and
+    from the grid's (distances in units of the grid's ranges; of several as
+    far, as in a band, the one nearest their middle), or None if the mask
+    is empty."""
+    from scipy import ndimage
+    if not inside.any():
+        return None
+    steps = ((y[1] - y[0]) / (y[-1] - y[0]), (x[1] - x[0]) / (x[-1] - x[0]))
+    depth = ndimage.distance_transform_edt(numpy.pad(inside, 1), sampling=steps)[1:-1, 1:-1]
+    rows, cols = numpy.nonzero(depth >= depth.max() * (1 - 1e-9))
+    middle = numpy.hypot((rows - rows.mean()) * steps[0], (cols - cols.mean()) * steps[1])
+    row, col = rows[numpy.argmin(middle)], cols[numpy.argmin(middle)]
+    return round(float(x[col]), 6), round(float(y[row]), 6)
+
+
+def representatives(x: numpy.ndarray, y: numpy.ndarray,
+                    found: numpy.ndarray) -> Dict[str, Dict[str, Any]]:
+    """{kind: {"x", "y", "alone", "start"}} for each kind of SHOWN found in
+    the map found[y, x] (codes of ATTRACTORS): the deepest point (deepest)
+    of the region where it is the only stable state ("alone": any start
+    reaches it), or else of those where it is one of several (its start,
+    SHOWN, decides)."""
+    out = {}
+    for kind, start in SHOWN.items():
+        bit = ATTRACTORS[kind]
+        for alone, inside in ((True, found == bit), (False, (found & bit) != 0)):
+            point = deepest(x, y, inside)
+            if point:
+                out[kind] = {"x": point[0], "y": point[1], "alone": alone, "start": start}
+                break
+    return out

@@ -2,6 +2,8 @@
 
     make animate V=300 FSTAR=1 [START=shimmy|rolling|yawed] [YFP=1] [RHO= MU= SET=]
     python3 -m mlgshimmy.studies.animate --V 300 --Fstar 1 [--start shimmy] [--plot]
+    make fig11-motion     # one animation per kind of attractor of Fig. 11
+    python3 -m mlgshimmy.studies.animate --fig11   # its cases: "V F* start" lines
 
 Simulates from straight rolling with psi displaced by 1e-4 rad (START=rolling)
 or 0.05 rad (shimmy), or from the yawed stationary state (yawed), with y_fp = YFP mm and eps = 0.1 y_fp,
@@ -13,13 +15,24 @@ the plan and front views of the strut, axle and both wheels with their
 contact patches, the torque-link apex in its freeplay gap at true scale,
 and psi over time.  The factors that scale the motion are printed on every
 frame.
+
+--fig11 chooses one case per kind of attractor in Fig. 11's cached region
+map (straight rolling, low- and high-frequency shimmy, quasi-periodic
+shimmy, yawed rolling: shared.regions.representatives, the point deepest
+inside the region where it is alone, else where it coexists, with the start
+that reaches it), prints them for make and lists them in
+$MLG_RUN_ROOT/figures/fig11_motion.json, which the report links from Fig. 11.
 """
 import argparse
+import json
 import os
 import shutil
 import sys
+from typing import Dict, List, Optional, Sequence
 
-from mlgshimmy.shared import freeplay, gear, motion, paths
+import numpy
+
+from mlgshimmy.shared import freeplay, gear, motion, paths, regions
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared.overlay import value_text
 from mlgshimmy.shared.suggest import did_you_mean
@@ -43,6 +56,7 @@ DECLARED = {
 
 T_END = 40.0            # s simulated (the atlas's first stage)
 FPS = 15
+FIG11_CASES = "fig11_motion.json"
 
 
 def case(V: float, Fstar: float, start: str, yfp: float) -> str:
@@ -122,11 +136,34 @@ def _contact_sheet(fig, show, count: int, target: str, across: int = 4, down: in
     os.replace(partial, target)
 
 
-def main(argv=None) -> None:
+def fig11_cases(yfp: float = freeplay.NOMINAL["yfp"]) -> List[Dict[str, object]]:
+    """[{"kind", "V", "Fstar", "start", "alone", "name"}]: one case per kind
+    of attractor in Fig. 11's cached region map (regions.representatives),
+    "name" the animation's (case())."""
+    region = jobs.read("fig11")["region_map"]
+    chosen = regions.representatives(numpy.asarray(region["V"]), numpy.asarray(region["Fstar"]),
+                                     numpy.asarray(region["code"]))
+    return [{"kind": kind, "V": c["x"], "Fstar": c["y"], "start": c["start"],
+             "alone": c["alone"], "name": case(c["x"], c["y"], c["start"], yfp)}
+            for kind, c in chosen.items()]
+
+
+def write_fig11_cases() -> None:
+    """Print fig11_cases() as "V F* start" lines (for make) and list them in
+    figures/fig11_motion.json."""
+    cases = fig11_cases()
+    jobs.write_json(os.path.join(paths.figures_dir(), FIG11_CASES), cases, indent=1)
+    for c in cases:
+        print(f"{c['V']:g} {c['Fstar']:g} {c['start']}")
+
+
+def main(argv: Optional[Sequence[str]] = None) -> None:
     parser = argparse.ArgumentParser(prog="python3 -m mlgshimmy.studies.animate",
                                      description=__doc__.splitlines()[0])
-    parser.add_argument("--V", type=float, required=True, help="forward speed [m/s]")
-    parser.add_argument("--Fstar", type=float, required=True, help="load F*")
+    parser.add_argument("--V", type=float, help="forward speed [m/s]")
+    parser.add_argument("--Fstar", type=float, help="load F*")
+    parser.add_argument("--fig11", action="store_true",
+                        help="print one case per kind of attractor of Fig. 11's regions")
     parser.add_argument("--start", default="shimmy",
                         help="straight rolling with psi + 1e-4 rad (rolling) or + 0.05 rad "
                              "(shimmy), or the yawed stationary state (yawed)")
@@ -134,6 +171,14 @@ def main(argv=None) -> None:
                         help="torque-link freeplay [mm] (eps = 0.1 y_fp)")
     parser.error = lambda message: sys.exit(f"animate: {message}")     # one line
     args, rest = parser.parse_known_args(argv)
+    if args.fig11:
+        try:
+            write_fig11_cases()
+        except (jobs.MissingResult, jobs.BadResult) as exc:
+            sys.exit(f"animate: --fig11 needs Fig. 11's cached result: {exc}")
+        return
+    if args.V is None or args.Fstar is None:
+        parser.error("give V and FSTAR (--V, --Fstar), or --fig11")
     for option, value in (("V", args.V), ("FSTAR", args.Fstar), ("YFP", args.yfp)):
         if not value >= 0 or value == float("inf"):
             sys.exit(f"animate: {option}={value:g} must be a finite number >= 0")
