@@ -10,7 +10,8 @@ import numpy
 
 from mlgshimmy.figures.fig11.ends import JOIN_LABELS, SWITCH_WIDTHS
 from mlgshimmy.figures.fig11.plane import F_MAX, SLICES, V_MAX
-from mlgshimmy.figures.fig11.regions import shade
+from mlgshimmy.figures.fig11.regions import (PATTERNS, REGION_ALPHA, WORDS, fill_words,
+                                             shade)
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
@@ -85,22 +86,34 @@ def plot(result: Dict[str, Any]) -> None:
     # matplotlib is loaded here only: each of the ~40 part jobs would spend
     # 0.5 s loading it
     import matplotlib.pyplot as plt
+    from matplotlib.legend_handler import HandlerTuple
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
     from mlgshimmy.shared import draw
     palette = draw.palette
     fig, ax = plt.subplots(figsize=(8, 6.5))
-    regions = shade(ax, numpy.asarray(result["region_map"]["code"]))
+    fills, patterned = shade(ax, numpy.asarray(result["region_map"]["code"]))
     colours = curve_colours(palette)
-    handles = []
+    # a region beyond a curve that bounds it is named by the curve's entry
+    # (its fill under the line): quasi-periodic shimmy beyond the torus curve,
+    # lift-off beyond the lift-off edge
+    beyond = {"torus": ("quasi",), "liftoff": ("liftoff",)}
+
+    def entry(kind, line, text):
+        fill = fills.pop(beyond.get(kind), None)
+        if fill is None:
+            return line, text
+        return (Patch(facecolor=fill, alpha=REGION_ALPHA), line), f"{text} (shaded)"
+    entries = []
     for kind, text, style in CURVES:
         diagrams = result["curves"].get(kind, [])
         for diagram in diagrams:
             for branch in jobs.loaded(diagram):
                 ax.plot(branch["V"], branch["Fstar"], color=colours[kind], ls=style, lw=1.4)
         if diagrams:
-            handles.append(Line2D([], [], color=colours[kind], ls=style, lw=1.4, label=text))
+            entries.append(entry(kind, Line2D([], [], color=colours[kind], ls=style, lw=1.4),
+                                 text))
     for diagram in result["curves"].get("zero", []):
         for branch in jobs.loaded(diagram):
             ax.plot(branch["V"], branch["Fstar"], color=palette.GUIDE, ls=":", lw=1.2)
@@ -111,8 +124,8 @@ def plot(result: Dict[str, Any]) -> None:
         V, F = numpy.array(result["liftoff"]["points"]).T
         ax.plot(lift[0]["V"], lift[0]["Fstar"], color=palette.LIFTOFF, lw=1.6)
         ax.plot(V, F, "o", color=palette.LIFTOFF, ms=2.5)
-        handles.append(Line2D([], [], color=palette.LIFTOFF, lw=1.6,
-                              label="lift-off edge: a wheel lifts off beyond"))
+        entries.append(entry("liftoff", Line2D([], [], color=palette.LIFTOFF, lw=1.6),
+                             "lift-off edge: a wheel lifts off beyond"))
     yawed = list(result["pitchfork"][1]) + list(result.get("stationary_folds", []))
     for f in yawed:
         ax.axhline(f, color=palette.PITCHFORK, lw=1.0, ls="-.")
@@ -124,19 +137,22 @@ def plot(result: Dict[str, Any]) -> None:
         ax.plot(V, F, "D", mfc=palette.OPEN, mec=palette.NEUTRAL, ms=4.5, zorder=6)
     # special points marked with draw.mark (e.g. codimension-two points on
     # the curves) follow under their own names
-    handles += draw.point_handles(draw.marked_kinds(ax))
+    points = draw.point_handles(draw.marked_kinds(ax))
     ax.set_xlim(0, V_MAX)
     ax.set_ylim(0, F_MAX)
     ax.set_xlabel("V [m/s]")
     ax.set_ylabel(r"$F_z^*$")
-    if yawed:
-        regions.append(Patch(facecolor="none", edgecolor=palette.NEUTRAL, hatch="///",
-                             label="hatched: yawed rolling too"))
+    regions = [(Patch(facecolor=colour, edgecolor=palette.GUIDE, alpha=REGION_ALPHA),
+                fill_words(kinds)) for kinds, colour in fills.items() if kinds]
+    regions += [(Patch(facecolor="none", edgecolor=palette.NEUTRAL, hatch=PATTERNS[kind]),
+                 f"{'dotted' if kind == 'straight' else 'hatched'}: {WORDS[kind]} too")
+                for kind in patterned]
     # figure legends, which the saved figure's bounds take in, beside the axes
-    for items, title, corner, y in ((handles, "curves", "upper left", 1.0),
-                                    (regions, "the gear settles on", "lower left", 0.0)):
-        fig.legend(handles=items, title=title, loc=corner, bbox_to_anchor=(1.02, y),
-                   bbox_transform=ax.transAxes)
+    for items, title, corner, y in (
+            (entries + [(h, h.get_label()) for h in points], "curves", "upper left", 1.0),
+            (regions, "the gear settles on", "lower left", 0.0)):
+        fig.legend(*zip(*items), title=title, loc=corner, bbox_to_anchor=(1.02, y),
+                   bbox_transform=ax.transAxes, handler_map={tuple: HandlerTuple(ndivide=1)})
     draw.figure_title(ax, r"Fig. 11: $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm: what the gear "
                           "settles on, and the curves that bound it")
     write_text(os.path.join(paths.figures_dir(), CAPTION), caption(result, ends))

@@ -1,6 +1,6 @@
 """Fig. 11's region map: the plane cut by the curves, each piece labelled
 by the attractors the slices' samples find there (shared.regions)."""
-from typing import Any, List, Tuple
+from typing import Any, Dict, List, Tuple
 
 import numpy
 
@@ -89,14 +89,8 @@ def region_map(sr_stable, orbits, edge_curves, yaw, lift=None):
     return found, check
 
 
-def region_key(found):
-    """The code without the yaw bit (hatched on top), except where off-centre
-    yaw is all there is."""
-    return numpy.where(found == ATTRACTORS["yaw"], found, found & ~ATTRACTORS["yaw"])
-
-
 def region_name(value):
-    """The legend text of a region_key."""
+    """The name of a region code (the result's "names")."""
     names = [NAMES[bit] for bit in sorted(NAMES) if value & bit]
     if not names:
         return "no stable state found"
@@ -107,38 +101,48 @@ def region_name(value):
 WORDS = {"straight": "straight rolling", "low": "low-frequency shimmy",
          "high": "high-frequency shimmy", "yaw": "yawed rolling",
          "quasi": "quasi-periodic shimmy", "liftoff": "a wheel lifts off"}
+# the map's fill tells the shimmy (or lift-off) stable there; a pattern over
+# it, that straight rolling or yawed rolling is stable too
+FILLED = ("low", "high", "quasi", "liftoff")
+PATTERNS = {"straight": "..", "yaw": "///"}
 
 
-def region_kinds(value: int) -> Tuple[str, ...]:
-    """The attractor kinds of a region_key, in ATTRACTORS' order."""
-    return tuple(kind for kind, bit in ATTRACTORS.items() if value & bit)
+def filled_kinds(code: int) -> Tuple[str, ...]:
+    """The kinds of a region code that its fill tells (FILLED's order)."""
+    return tuple(kind for kind in FILLED if code & ATTRACTORS[kind])
 
 
-def region_words(value: int) -> str:
-    """A region_key in the reader's words, for the legend: what the gear
-    settles on there ("straight rolling or high-frequency shimmy")."""
-    kinds = region_kinds(value)
-    return " or ".join(WORDS[kind] for kind in kinds) if kinds else "nothing found stable"
+def fill_words(kinds: Tuple[str, ...]) -> str:
+    """A fill in the reader's words ("low- or high-frequency shimmy",
+    "quasi-periodic shimmy or a wheel lifts off"; "no shimmy" for none)."""
+    if kinds == ("low", "high"):
+        return "low- or high-frequency shimmy"
+    return " or ".join(WORDS[kind] for kind in kinds) or "no shimmy"
 
 
-def shade(ax: Any, found: numpy.ndarray) -> List[Any]:
-    """Paint the map (regions by colour, palette.REGION; the yaw band
-    hatched) and return the legend patches of the regions present."""
+def shade(ax: Any, found: numpy.ndarray) -> Tuple[Dict[Tuple[str, ...], Any], List[str]]:
+    """Paint the map: each pixel filled by the shimmy kinds stable there
+    (palette.REGION), dotted where straight rolling is stable too and
+    hatched where yawed rolling is (PATTERNS).  Returns ({kinds: fill
+    colour} of the fills present, [the kinds of PATTERNS present])."""
     from matplotlib.colors import ListedColormap
-    from matplotlib.patches import Patch
 
     from mlgshimmy.shared.draw import palette
-    key = region_key(found)
-    values = numpy.unique(key).tolist()
+    fills = found & sum(ATTRACTORS[kind] for kind in FILLED)
+    values = numpy.unique(fills).tolist()
     extra = iter(palette.categories(20))
-    colours = [palette.REGION.get(region_kinds(v)) or next(extra) for v in values]
+    kinds = [filled_kinds(v) for v in values]
+    colours = [palette.REGION.get(k) or next(extra) for k in kinds]
     half_V, half_F = 0.5 * (V_GRID[1] - V_GRID[0]), 0.5 * (F_GRID[1] - F_GRID[0])
-    ax.imshow(numpy.searchsorted(values, key), cmap=ListedColormap(colours), vmin=-0.5,
+    ax.imshow(numpy.searchsorted(values, fills), cmap=ListedColormap(colours), vmin=-0.5,
               vmax=len(values) - 0.5, alpha=REGION_ALPHA, origin="lower", aspect="auto",
               interpolation="nearest", extent=(V_GRID[0] - half_V, V_GRID[-1] + half_V,
                                                F_GRID[0] - half_F, F_GRID[-1] + half_F))
-    band = ((found & ATTRACTORS["yaw"]) != 0).astype(float)
-    if band.any():
-        ax.contourf(V_GRID, F_GRID, band, levels=[0.5, 1.5], colors="none", hatches=["///"])
-    return [Patch(facecolor=c, edgecolor=palette.GUIDE, alpha=REGION_ALPHA,
-                  label=region_words(v)) for v, c in zip(values, colours)]
+    patterned = []
+    for kind, hatch in PATTERNS.items():
+        inside = ((found & ATTRACTORS[kind]) != 0).astype(float)
+        if inside.any():
+            ax.contourf(V_GRID, F_GRID, inside, levels=[0.5, 1.5], colors="none",
+                        hatches=[hatch])
+            patterned.append(kind)
+    return dict(zip(kinds, colours)), patterned

@@ -38,16 +38,13 @@ ATTRACTOR = {"straight": ALLOWED, "yaw": "#9ecae1", "low": "#fdd49e", "high": "#
 # a line or marker of each kind, dark enough on white and on the fills above
 ATTRACTOR_EDGE = {"straight": "black", "yaw": "#08519c", "low": "#b35806", "high": "#b2182b",
                   "quasi": "#762a83", "domain": "black", "unsettled": "#8c6d00"}
-# Fig. 11's regions, by the stable states that coexist there (shared.regions'
-# kinds in its order; yawed rolling is hatched over them): straight rolling
-# alone unshaded, each shimmy alone in its ATTRACTOR fill, straight rolling
-# beside a shimmy (a disturbance decides) in a fill of its own
-REGION = {("straight",): "white", ("low",): ATTRACTOR["low"], ("high",): ATTRACTOR["high"],
-          ("quasi",): ATTRACTOR["quasi"], ("liftoff",): ATTRACTOR["domain"],
-          ("yaw",): ATTRACTOR["yaw"], ("straight", "low"): "#d9f0a3",
-          ("straight", "high"): "#92c5de", ("low", "high"): "#dfc27d",
-          ("straight", "low", "high"): "#f6e8c3", ("straight", "quasi"): "#e7d4e8",
-          (): "0.45"}
+# Fig. 11's regions, by the shimmy stable there (shared.regions' kinds in
+# its order; straight and yawed rolling are patterns over the fill): none
+# unshaded, each alone in its ATTRACTOR fill, low and high together in one
+# of their own
+REGION = {(): "white", ("low",): ATTRACTOR["low"], ("high",): ATTRACTOR["high"],
+          ("low", "high"): "#dfc27d", ("quasi",): ATTRACTOR["quasi"],
+          ("liftoff",): ATTRACTOR["domain"]}
 # a line plot's default colours, in order (mlg.mplstyle's axes.prop_cycle)
 CYCLE = (STABLE, UNSTABLE, HOPF, TORUS, "#56b4e9", LIFTOFF, NEUTRAL)
 SEQUENCE_MAP = "viridis"
