@@ -49,7 +49,7 @@ def ends_found(result: Dict[str, Any]) -> List[Tuple[float, float, str]]:
     for key, kind, why in ENDS:
         for point in result.get(key, []):
             if kind is None or point["kind"] == kind:
-                out.append((float(point["V"]), float(point["Fstar"]), " ".join(why.split())))
+                out.append((float(point["V"]), float(point["Fstar"]), why))
     return out
 
 
