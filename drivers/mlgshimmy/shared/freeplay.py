@@ -13,6 +13,13 @@ from mlgshimmy.shared import gear, mlgmodel, overlay
 SCALINGS = {"ratio": {"eps_abs": 0.0, "eps_rel": 0.1},
             "fixed": {"eps_abs": 0.1, "eps_rel": 0.0}}
 EPSILON = 0.1        # eps/y_fp ("ratio") or eps in mm ("fixed")
+
+
+def width(scaling, model):
+    """(the scaling's {eps_abs, eps_rel} with `model`'s overrides of them,
+    the rest of `model`): the criterion at another smoothing width."""
+    eps = {k: model.get(k, v) for k, v in SCALINGS[scaling].items()}
+    return eps, {k: v for k, v in model.items() if k not in eps}
 # The freeplay of Figs. 10-12, the lift-off edge and the atlas (section IV.B):
 # y_fp = 1 mm, eps = 0.1 mm.
 NOMINAL = {"yfp": 1.0, "eps_abs": 0.0, "eps_rel": 0.1}

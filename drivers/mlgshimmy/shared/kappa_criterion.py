@@ -6,7 +6,7 @@ stage switch, shared.stage_switch)."""
 import numpy
 
 from mlgshimmy.shared import mlgmodel, rolling, spectrum
-from mlgshimmy.shared.freeplay import EPSILON
+from mlgshimmy.shared.freeplay import EPSILON, width
 from mlgshimmy.shared.rolling_state import rolling_state
 from mlgshimmy.shared.stage_switch import stage_switch_loads, stage_switch_window
 from mlgshimmy.shared.yfp_runs import V_LIMIT, V_MIN, YFP_MAX, YFP_MIN, values
@@ -29,7 +29,7 @@ def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
         u = rolling_state(Fstar, yfp, scaling, parameter_set, **model)
     except rolling.NoRollingState:
         return {"any": numpy.inf, **{band: -numpy.inf for band in BANDS}, "real": numpy.inf}
-    model = mlgmodel.Model(parameter_set, **values(scaling, yfp, Fstar, V=V), **model)
+    model = mlgmodel.Model(parameter_set, **values(scaling, yfp, Fstar, V=V, **model))
     model.check()
     return spectrum.growth(model, BANDS, u)
 
@@ -42,7 +42,7 @@ def growth_at_speeds(Fstar, yfp, speeds, scaling="fixed", parameter_set="figures
     except rolling.NoRollingState:
         return [{"any": numpy.inf, **{band: -numpy.inf for band in BANDS}, "real": numpy.inf}
                 for _ in speeds]
-    at = mlgmodel.Model(parameter_set, **values(scaling, yfp, Fstar, V=speeds[0]), **model)
+    at = mlgmodel.Model(parameter_set, **values(scaling, yfp, Fstar, V=speeds[0], **model))
     jacobians = []
     for V in speeds:
         at.set(V=V)
@@ -166,7 +166,7 @@ def refined_minimum(evaluate, loads, key, points=None, finer=(10,), floor=-numpy
 
 def kappa_star(evaluate, loads, model, points=None, finer=(10,)):
     """Eq. (17)'s kappa*: the least y_fp/eps at which straight rolling is
-    unstable below V_LIMIT, minimised over the loads (refined_minimum of
+    unstable below V_LIMIT (eps: `model`'s eps_abs, else 0.1 mm), minimised over the loads (refined_minimum of
     evaluate(F*)["first"], the least unstable y_fp there) and the loads on
     the stage switch of the gear `model` (parameter overrides,
     stage_switch_loads); (kappa*, the evaluation at the minimum).  A load
@@ -176,7 +176,7 @@ def kappa_star(evaluate, loads, model, points=None, finer=(10,)):
         point = evaluate(Fstar)
         if point["first"] < best["first"]:
             best = point
-    return best["first"] / EPSILON, best
+    return best["first"] / width("fixed", model)[0]["eps_abs"], best
 
 
 # F* on a grid of 0.1, refined to 0.02 and then 0.005 around the minimum
@@ -208,7 +208,7 @@ def kappa_star_off_switch(evaluate, loads, model, finer=(10,)):
             return {"Fstar": float(Fstar), "first": numpy.inf}
         return evaluate(Fstar)
     best = refined_minimum(outside, loads, lambda p: p["first"], finer=finer, floor=0.0)
-    return best["first"] / EPSILON, best, window
+    return best["first"] / width("fixed", model)[0]["eps_abs"], best, window
 
 
 def window_points(Fstar, **model):

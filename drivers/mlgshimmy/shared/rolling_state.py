@@ -5,7 +5,7 @@ import functools
 from typing import Any, Dict, Tuple
 
 from mlgshimmy.shared import mlgmodel, rolling
-from mlgshimmy.shared.freeplay import SCALINGS
+from mlgshimmy.shared.freeplay import width
 
 
 @functools.lru_cache(maxsize=1024)
@@ -28,5 +28,6 @@ def rolling_state(Fstar: float, yfp: float, scaling: str = "fixed",
     the one continued from zero freeplay (shared.rolling; NoRollingState
     beyond a fold in y_fp)."""
     if model.get("rho", 0.0) or model.get("mu", 0.0):
-        return rolling.state(parameter_set, Fstar, yfp, SCALINGS[scaling], **model)
+        eps, rest = width(scaling, model)
+        return rolling.state(parameter_set, Fstar, yfp, eps, **rest)
     return straight_rolling(parameter_set, Fstar, tuple(sorted(model.items())))

@@ -38,6 +38,8 @@ DSMAX_V = 0.5      # periodic branches in V: larger steps jump past the other Ho
 
 
 def values(scaling, yfp, Fstar=FSTAR, **more):
+    """The freeplay case's parameters; `more` overrides, the scaling's eps_abs
+    or eps_rel among them (criterion at another smoothing width)."""
     return {"Fstar": Fstar, "yfp": yfp, **SCALINGS[scaling], **more}
 
 
@@ -74,7 +76,7 @@ def yfp_thresholds(scaling, V, Fstar=FSTAR, **model):
     at speed V (eigenvalue scan over YFP_MIN..YFP_MAX)."""
     grid = numpy.geomspace(YFP_MIN, YFP_MAX, 241)
     return spectrum.stability_changes("figures", "yfp", grid, V=V, Fstar=Fstar,
-                                      **SCALINGS[scaling], **model)
+                                      **{**SCALINGS[scaling], **model})
 
 
 def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude", **model):
