@@ -119,6 +119,27 @@ def stable_intervals(parameter_set: str, parameter: str, changes: Sequence[float
     return out
 
 
+def stable_before_hopf(parameter_set: str, parameter: str, grid: Sequence[float],
+                       state: Optional[Callable[[float], dict]] = None,
+                       **values: float) -> Optional[Tuple[float, float]]:
+    """(start, end): the stretch of `grid` over which straight rolling is
+    stable up to its first Hopf point (end), from its last stability change
+    below it (or grid[0]); None if there is no Hopf point or straight
+    rolling is unstable just below it.  Fig. 12's (a_12, b_12) where a
+    stable orbit coexists over the whole stretch, as at V = 50 m/s with
+    the paper's gear (fig12.bistable_interval)."""
+    changes = stability_changes(parameter_set, parameter, grid, state, **values)
+    hopf = [v for v, kind, _ in changes if kind == "HB"]
+    if not hopf:
+        return None
+    start = max([v for v, _, _ in changes if v < hopf[0]], default=grid[0])
+    middle = {**values, parameter: 0.5 * (start + hopf[0])}
+    u = state(middle[parameter]) if state else None
+    if eigenvalues(mlgmodel.Model(parameter_set, **middle), u).real.max() >= 0:
+        return None
+    return start, hopf[0]
+
+
 def hopf_scan(parameter_set: str, parameter: str, grid: Sequence[float],
               **values: float) -> List[Tuple[float, float]]:
     """[(value, frequency in Hz)] of the Hopf points of straight rolling
