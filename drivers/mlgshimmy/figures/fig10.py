@@ -33,28 +33,12 @@ DECLARED = {
 
 DEG = draw.DEG
 V_MAX = ct.V_MAX
-V_GRID = ct.SPEED_SCAN
 COLUMNS = ("V", "psi_amp", "freq")
 FREEPLAY = {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1}   # the figure's conditions
 HIGH_HZ = naming.HIGH_HZ   # Hz: the high-frequency orbits
 # the table's words for the ends of a branch (domain.stop_reason)
 ENDS = {domain.LIFT_OFF: "wheel lift-off",
         domain.SADDLES: "a saddle connection (period unbounded)"}
-
-
-def speed_diagram(rundir, parameter_set, allow_failed=False, **values):
-    """Straight rolling in V from V = 0 (0.5 m/s with side-stay angles:
-    gear.start_speed; run eq) and
-    continuation.speed_diagram: (equilibria, Diagram)."""
-    start = ct.Start(parameter_set, V=gear.start_speed(), **values)
-    eq = ct.equilibria(rundir, "eq", start, stop={"V": V_MAX})
-    # at the paper's geometry a branch may end only at a wheel's lift-off or
-    # on straight rolling (continuation.EDGE); with side-stay angles any MX is kept
-    keep = True if allow_failed or not gear.current().geometry.baseline else ct.EDGE
-    return eq, ct.speed_diagram(rundir, parameter_set, values, V_GRID, allow_failed=keep,
-                                figure="fig10", **{**ct.SPEED_ORBIT_STEPS,
-                                                   **ct.geometry_orbit_steps(
-                                                       gear.current().geometry.baseline)})
 
 
 def numbers(diagram, points):
@@ -92,14 +76,14 @@ def compute():
     numbers of the `table` set (its failure leaves that column empty)."""
     at = gear.parameters()    # the gear's changes ({} at the paper's)
     print("fig10: F* = 1, y_fp = 1 mm, eps = 0.1 mm (figures set)" + gear.suffix())
-    eq, freeplay = speed_diagram(paths.rundir("fig10"), "figures", **FREEPLAY, **at)
+    eq, freeplay = ct.diagram_from_rest(paths.rundir("fig10"), "figures", **FREEPLAY, **at)
     print("fig10: zero freeplay, for reference")
-    zero_eq, zero = speed_diagram(paths.rundir("fig10/zero"), "figures", Fstar=1.0, yfp=0.0,
-                                  **at)
+    zero_eq, zero = ct.diagram_from_rest(paths.rundir("fig10/zero"), "figures", Fstar=1.0,
+                                         yfp=0.0, **at)
     print("fig10: the same with the `table` set, for its numbers")
     try:
-        diagram = speed_diagram(paths.rundir("fig10/table"), "table", allow_failed=True,
-                                **FREEPLAY, **at)[1]
+        diagram = ct.diagram_from_rest(paths.rundir("fig10/table"), "table", allow_failed=True,
+                                       **FREEPLAY, **at)[1]
         table = numbers(diagram, diagram.named)
     except (runerror.RunError, RuntimeError) as exc:
         print(f"fig10: the `table` set stops, its column stays empty: {getattr(exc, 'brief', exc)}")

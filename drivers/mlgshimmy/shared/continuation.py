@@ -16,6 +16,7 @@ import numpy
 from mlgshimmy.shared import autoglue, autosession, diagrams, rundirs, runerror
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import domain
+from mlgshimmy.shared import gear
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import naming
 from mlgshimmy.shared import paths
@@ -547,6 +548,24 @@ def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
     named = naming.named_points(hopf, [run for _, run in parts], parameter_set, parameter,
                                 state=state, **values)
     return Diagram(parameter, hopf, bp, parts, names, named, **(about or {}))
+
+
+def diagram_from_rest(rundir, parameter_set, allow_failed=False, figure="fig10", steps=None,
+                      **values):
+    """Straight rolling in V from rest (0.5 m/s with side-stay angles:
+    gear.start_speed; run eq) to V_MAX and speed_diagram over SPEED_SCAN,
+    Fig. 10's recipe: (equilibria, Diagram).  steps: AUTO constants of the
+    orbit runs beyond SPEED_ORBIT_STEPS (a finer mesh)."""
+    start = Start(parameter_set, V=gear.start_speed(), **values)
+    eq = equilibria(rundir, "eq", start, stop={"V": V_MAX})
+    # at the paper's geometry a branch may end only at a wheel's lift-off or
+    # on straight rolling (EDGE); with side-stay angles any MX is kept
+    keep = True if allow_failed or not gear.current().geometry.baseline else EDGE
+    return eq, speed_diagram(rundir, parameter_set, values, SPEED_SCAN, allow_failed=keep,
+                             figure=figure, **{**SPEED_ORBIT_STEPS,
+                                               **geometry_orbit_steps(
+                                                   gear.current().geometry.baseline),
+                                               **(steps or {})})
 
 
 def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, with_period=False,

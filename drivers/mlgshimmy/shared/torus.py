@@ -4,6 +4,7 @@
 
   - torus_crossings: where a complex Floquet pair crosses |mu| = 1 along an
     orbit branch (floquet.py says why steps that cross in one go count);
+  - speeds: the torus points of a diagram's high-frequency orbits;
   - tr_point: AUTO's TR label at such a crossing (placed by fixed steps
     across it when AUTO does not label it);
   - torus_curve: the TR point continued in (V, F*) (AUTO ISW = 2), its
@@ -24,6 +25,7 @@ from mlgshimmy.shared import runerror
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import floquet
 from mlgshimmy.shared import mlgmodel
+from mlgshimmy.shared.naming import HIGH_HZ
 from mlgshimmy.shared import simulator
 from mlgshimmy.shared import spectrum
 
@@ -60,6 +62,22 @@ def torus_crossings(rundir, name):
     return floquet.torus_crossings(floquet.read(os.path.join(rundir, f"d.{name}")))
 
 
+def speeds(rundir, diagram, min_hz=HIGH_HZ):
+    """The torus points of a Diagram in V (continuation.speed_diagram) on
+    its orbit runs born at a Hopf point of at least min_hz: [(V, +1 loses
+    or -1 regains stability)] in branch order, each at AUTO's TR label
+    where it has one (labelled_tr), else where |mu| - 1 is interpolated
+    to zero."""
+    out = []
+    for (point, run), name in zip(diagram.parts, diagram.names):
+        if 1.0 / point["T"] < min_hz:
+            continue
+        for c in torus_crossings(rundir, name):
+            label = labelled_tr(run, c["value"], c["between"])
+            out.append((float(label["V"]) if label else float(c["value"]), c["direction"]))
+    return out
+
+
 def on_branch(bd, v, key):
     """A measure of the orbit branch at speed v (the stable large-amplitude
     part: the last pass of the branch through v)."""
@@ -93,6 +111,17 @@ def simulated_rate(values, v, psi0, span=SIM_T, rtol=None):
     return fit["rate"], fit["first"], fit["last"]
 
 
+def labelled_tr(bd, v, between=None):
+    """AUTO's TR label of the branch bd within 0.5 m/s of the crossing at
+    speed v, or inside (0.5 m/s around) its step `between`; None if none."""
+    labelled = [p for p in bd("TR") if abs(p["V"] - v) < 0.5]
+    if not labelled and between:
+        # AUTO located it inside the crossing's step `between`, farther
+        # than 0.5 m/s from the interpolated v (long steps, curved |mu|)
+        labelled = [p for p in bd("TR") if min(between) - 0.5 <= p["V"] <= max(between) + 0.5]
+    return labelled[0] if labelled else None
+
+
 def tr_point(rundir, name, bd, v, slope, between=None):
     """AUTO's TR label near speed v, a crossing of the branch bd (which ends
     at V_MAX, or in MX at a side-stay geometry): the branch's own label if
@@ -102,13 +131,9 @@ def tr_point(rundir, name, bd, v, slope, between=None):
     count of stable multipliers, tolerance 1e-5, then changes with the
     sign; AUTO tests nothing on the first step after a restart).  Where
     AUTO still does not label it, h is doubled (twice)."""
-    labelled = [p for p in bd("TR") if abs(p["V"] - v) < 0.5]
-    if not labelled and between:
-        # AUTO located it inside the crossing's step `between`, farther
-        # than 0.5 m/s from the interpolated v (long steps, curved |mu|)
-        labelled = [p for p in bd("TR") if min(between) - 0.5 <= p["V"] <= max(between) + 0.5]
+    labelled = labelled_tr(bd, v, between)
     if labelled:
-        return labelled[0]
+        return labelled
     ends = [p for p in bd() if p["TY name"] in ("UZ", "EP")]      # V = V_MAX
     # a branch stopped short (MX): its labelled orbit furthest above v instead
     end = ends[-1] if ends else max((p for p in bd() if p["TY name"] != "MX"),
