@@ -468,10 +468,11 @@ def tolerances(reference_dir):
         raise SettingsError(f"{path}: expected {{\"rtol\": R, \"atol\": A}} ({exc})") from exc
     if not isinstance(values, dict):
         raise SettingsError(f"{path}: expected {{\"rtol\": R, \"atol\": A}}, got {values!r}")
-    unknown = sorted(set(values) - {"rtol", "atol", "reason"})
+    unknown = sorted(set(values) - {"rtol", "atol", "reason", "named"})
     if unknown:
         raise SettingsError(f"{path}: unknown key(s) {', '.join(map(repr, unknown))} "
-                            "(known: rtol, atol, reason)")
+                            "(known: rtol, atol, reason, named)")
+    values.pop("named", None)    # named_tolerances
     if not isinstance(values.pop("reason", ""), str):
         raise SettingsError(f"{path}: 'reason' must be a text")
     for key, value in values.items():
@@ -479,6 +480,34 @@ def tolerances(reference_dir):
                 or not (math.isfinite(value) and value >= 0):
             raise SettingsError(f"{path}: {key!r} must be a finite number >= 0, got {value!r}")
     return float(values.get("rtol", RTOL)), float(values.get("atol", ATOL))
+
+
+def named_tolerances(reference_dir):
+    """The rules of tolerances.json's "named" list, [] without one: each
+    {"match": a shell pattern on the named points' names, "rtol", "atol"
+    (finite, >= 0; default 0), "reason"}; SettingsError if malformed."""
+    path = os.path.join(reference_dir, TOLERANCE_FILE)
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        rules = json.load(f).get("named", [])
+    shape = 'expected "named": [{"match": pattern, "rtol": R, "atol": A, "reason": why}, ...]'
+    if not isinstance(rules, list):
+        raise SettingsError(f"{path}: {shape}")
+    for number, rule in enumerate(rules, 1):
+        if not isinstance(rule, dict) or set(rule) - {"match", "rtol", "atol", "reason"}:
+            raise SettingsError(f"{path}: named rule {number}: {shape}")
+        for key in ("match", "reason"):
+            if not (isinstance(rule.get(key), str) and rule[key]):
+                raise SettingsError(f"{path}: named rule {number}: {key!r} must be given, "
+                                    "a non-empty string")
+        for key in ("rtol", "atol"):
+            value = rule.get(key, 0.0)
+            if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                    or not (math.isfinite(value) and value >= 0):
+                raise SettingsError(f"{path}: named rule {number}: {key!r} must be a finite "
+                                    f"number >= 0, got {value!r}")
+    return rules
 
 
 def compare_dirs(reference_dir, run_dir, runs=None, rtol=None, atol=None, raw=False):
@@ -543,6 +572,7 @@ def main(argv=None):
     what = f"{os.path.relpath(run_dir)} vs {os.path.relpath(reference_dir)}"
     try:
         result = compare_dirs(reference_dir, run_dir, args.runs, args.rtol, args.atol)
+        rules = named_tolerances(reference_dir)
     except SettingsError as exc:
         print(f"compare: {what}: usage error: {exc}", file=sys.stderr)
         return 2
@@ -565,10 +595,18 @@ def main(argv=None):
                   f"{len(result.rows)} of {result.values} values outside {tol}):")
             print(result.report())
         return 1 if lost or ours is None else 0
-    if result.ok():
+    moved = named_points.outside(reference or {}, ours or {}, rules)
+    if rules and ours is None:
+        moved = ["    the run has no named points (no result.json)"]
+    if moved:
+        print(f"compare: {what}: named points outside their tolerances "
+              f"({TOLERANCE_FILE}, \"named\"):")
+        print("\n".join(moved))
+    if result.ok() and not moved:
+        named = f"; the named points within their tolerances ({TOLERANCE_FILE})" if rules else ""
         print(f"compare: {what}: agree ({result.points} labelled points, "
               f"{result.values} values within {tol}; {result.changes} stability changes "
-              "within the local step)")
+              f"within the local step{named})")
         return 0
     print(f"compare: {what}: DIFFERENT ({len(result.problems)} structural, "
           f"{len(result.rows)} of {result.values} values outside {tol})")

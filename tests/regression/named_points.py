@@ -3,8 +3,11 @@ Fig. 10, a_12 and b_12 of Fig. 12, ...), reference against ours, in the
 paper's names: the first lines of a regression's report.
 
 A reference set stores them as named.json (reference_set.py writes it from
-the run's result.json); a run directory has them in its result.json.
+the run's result.json); a run directory has them in its result.json.  The
+set's tolerances.json may compare them too ("named": compare_diagrams.py,
+outside).
 """
+import fnmatch
 import json
 import os
 
@@ -56,3 +59,26 @@ def report(reference, ours):
 def unfollowed(ours):
     """The quantities that say a branch could not be followed."""
     return [q for q in ours if UNFOLLOWED in q]
+
+
+def outside(reference, ours, rules):
+    """The lines naming every named point that a rule (the first whose
+    shell pattern "match" fits its name) compares and that moved by more
+    than rtol |reference| + atol, vanished, or is new; [] if none."""
+    def rule_of(q):
+        return next((r for r in rules if fnmatch.fnmatchcase(q, r["match"])), None)
+    lines = []
+    for q, ref in reference.items():
+        rule = rule_of(q)
+        if rule is None:
+            continue
+        if q not in ours:
+            lines.append(f"    {q}: {ref:.10g} -> vanished")
+            continue
+        allowed = rule.get("rtol", 0.0) * abs(ref) + rule.get("atol", 0.0)
+        if not abs(ours[q] - ref) <= allowed:
+            lines.append(f"    {q}: {ref:.10g} -> {ours[q]:.10g} ({ours[q] - ref:+.3g}; "
+                         f"tolerance {allowed:.3g}: {rule['reason']})")
+    lines += [f"    {q}: new, {ours[q]:.10g}" for q in ours
+              if q not in reference and rule_of(q) is not None]
+    return lines
