@@ -138,10 +138,19 @@ report: | $(MLG_SHARED)
 	else echo "report: no PDF (install chromium for one)"; fi
 
 # The smoothing error of eq. (15) (or FREEPLAY=<law>) against the non-smooth
-# eq. (14) by eps / y_fp, with fitted orders (studies.smoothing): H1-H3 by
-# eigenvalue scans, the stable orbit and its fold S by simulation with every
-# switch located; about 6 min; the table in $(RUN_ROOT)/tables/smoothing.txt.
+# eq. (14) by eps / y_fp, with fitted orders (studies.smoothing): H1-H3, a_12
+# and b_12 by eigenvalue scans, the stable orbit and its fold S by simulation
+# with every switch located, Fig. 10's torus points by AUTO, kappa* by the
+# criterion; about 25 min; the table in $(RUN_ROOT)/tables/smoothing.txt, Fig. 10
+# overlaid by eps in $(RUN_ROOT)/figures/smoothing_fig10.png.
 $(eval $(call cached_study,smoothing))
+# under regression: tests/reference/smoothing holds the eps table as named
+# points with their tolerances (docs/regression.md)
+REGRESS_FIGURES += smoothing
+
+# Fig. 14's Hopf curves and orbit in y_fp at several fixed eps and with eq. (14)
+# (studies.smoothing_fig14): a few minutes.
+$(eval $(call cached_study,smoothing_fig14))
 
 # Eq. (17)'s kappa* for every freeplay law of c/freeplay_laws.h (studies.laws,
 # eigenvalue scans): under a minute; the table in $(RUN_ROOT)/tables/laws.txt.
