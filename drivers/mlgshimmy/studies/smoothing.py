@@ -281,8 +281,9 @@ def error_plot(result):
 
     ratios = numpy.array(result["ratios"])
     fig, ax = plt.subplots(figsize=(7.5, 5.5))
+    # against a computed limit only (not the torus points' finest value)
     rows = [(q, row) for q, row in result["table"].items()
-            if row["limit"] and kind(q) not in ("kappa", "allowed")]
+            if row["limit"] and row["how"] == "eq. (14)" and kind(q) not in ("kappa", "allowed")]
     for (q, row), colour in zip(rows, draw.sequence(len(rows))):
         pairs = [(r, abs(e / row["limit"])) for r, e in zip(ratios, row["errors"])
                  if e is not None and e != 0]
