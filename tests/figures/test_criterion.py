@@ -66,12 +66,12 @@ def test_kappa_first_instability_scales_with_eps(first_at_reported):
     """The criterion at eps = 0.02 mm (the model's eps_abs overridden): at
     the paper's gear straight rolling depends on y_fp/eps alone, so the
     first instability moves to a fifth and kappa* stays (docs/model.md 9.3)."""
-    scaled = mg.least_unstable(FSTAR_REPORTED, eps_abs=0.02)
+    scaled = kappa_criterion.least_unstable(FSTAR_REPORTED, eps_abs=0.02)
     assert math.isclose(scaled["first"], 0.2 * first_at_reported["first"], rel_tol=1e-7), \
         f"{scaled['first']!r} mm at eps = 0.02 mm, {first_at_reported['first']!r} at 0.1"
-    kappa, _ = mg.kappa_star(lambda F: scaled, [FSTAR_REPORTED, FSTAR_REPORTED + 0.1],
+    kappa, _ = kappa_criterion.kappa_star(lambda F: scaled, [FSTAR_REPORTED, FSTAR_REPORTED + 0.1],
                              {"eps_abs": 0.02}, finer=())
-    assert math.isclose(kappa, first_at_reported["first"] / mg.EPSILON, rel_tol=1e-7)
+    assert math.isclose(kappa, first_at_reported["first"] / freeplay.EPSILON, rel_tol=1e-7)
 
 
 @pytest.mark.parametrize("F", (FSTAR_REPORTED - 0.005, FSTAR_REPORTED + 0.005))

@@ -14,9 +14,10 @@ import os
 import numpy
 import pytest
 
-from mlgshimmy.shared import autoglue, branches, convergence, mlgmodel, naming, spectrum
+import helpers
+from mlgshimmy.shared import autosession, branches, convergence, mlgmodel, naming, spectrum
 
-REFERENCE = os.path.join(os.path.dirname(__file__), "reference")
+REFERENCE = os.path.join(helpers.ROOT, "tests", "reference")
 
 RATIOS = (0.1, 0.05, 0.02, 0.01)
 
@@ -64,7 +65,7 @@ def test_a12_b12_bounds_are_fig12_s_last_pitchfork_and_hopf_load():
     labels on straight rolling in Fig. 12's reference set: its second
     pitchfork (BP) and its Hopf point (HB), a_12 and b_12 at the paper's
     gear (the report's fig12 table)."""
-    eq = autoglue.init().parseB.parseBR(os.path.join(REFERENCE, "fig12", "b.eq"))[0]
+    eq = autosession.init().parseB.parseBR(os.path.join(REFERENCE, "fig12", "b.eq"))[0]
     labelled = {name: [eq["Fstar"][k] for k, _, _ in branches.labelled_points(eq, name)]
                 for name in ("BP", "HB")}
     a12, b12 = spectrum.stable_before_hopf("figures", "Fstar", numpy.linspace(0.02, 3.5, 175),

@@ -22,7 +22,7 @@ the predicted one (docs/model.md 9.3).  Fig. 10's case, F* = 1, y_fp = 1 mm.
   diagram on the mesh TORUS_MESH; torus.speeds).  No computed limit:
   X(0), C and p are fitted together (convergence.extrapolated), where the
   points spread by more than the mesh moves them (TORUS_RESOLUTION).
-- Eq. (17)'s kappa* (magnitude.criterion, eps = eps / y_fp x 1 mm) and the
+- Eq. (17)'s kappa* (kappa_criterion.criterion, eps = eps / y_fp x 1 mm) and the
   freeplay it allows, kappa* eps.  Eq. (14) allows none (kappa* = 0); a law
   of one shape has the same kappa* at every eps at the paper's gear
   (docs/model.md 9.4), so kappa* has no limit (order 0) and the allowed
@@ -36,10 +36,12 @@ OVERLAY_SPEEDS are kept for the overlay figure (smoothing_fig10.png).
 """
 import numpy
 
-from mlgshimmy.shared import autoglue
+from mlgshimmy.shared import runerror
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import convergence, freeplay, gear, jobs, mlgmodel, naming, paths
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import kappa_criterion
+from mlgshimmy.shared import rolling_state
+from mlgshimmy.shared import yfp_stored
 from mlgshimmy.shared import simulator, spectrum, torus
 
 DECLARED = {
@@ -132,13 +134,13 @@ def simulated(model, speed, ratio):
 def rolling_bounds(model):
     """Fig. 12's (a_12, b_12) bounds on straight rolling at A12_SPEED
     (spectrum.stable_before_hopf), its state continued from zero freeplay
-    (magnitude.rolling_state); (None, None) without one, and a_12 None
+    (rolling_state.rolling_state); (None, None) without one, and a_12 None
     where straight rolling is stable from the lightest load on (from eps =
     0.2 y_fp the links' stiffness in the gap removes the pitchforks)."""
     at = {k: v for k, v in model.items() if k not in ("Fstar", "yfp")}
 
     def state(Fstar):
-        return mg.rolling_state(Fstar, model["yfp"], "ratio", **at)
+        return rolling_state.rolling_state(Fstar, model["yfp"], "ratio", **at)
     found = spectrum.stable_before_hopf("figures", "Fstar", A12_GRID, state=state,
                                         V=A12_SPEED, yfp=model["yfp"], **at)
     if not found:
@@ -151,7 +153,7 @@ def allowed(model, ratio):
     unused): {KAPPA, ALLOWED}."""
     at = {**gear.parameters(), "freeplay_law": model["freeplay_law"]}
     eps = ratio * CASE["yfp"] if ratio else freeplay.EPSILON
-    found = mg.criterion({**at, "eps_abs": eps})
+    found = kappa_criterion.criterion({**at, "eps_abs": eps})
     print(f"smoothing: eps/y_fp = {ratio if ratio else 0:g}: kappa* = {found['kappa']:.8g} "
           f"at F* = {found['Fstar']:g}", flush=True)
     return {KAPPA: found["kappa"], ALLOWED: found["kappa"] * eps}
@@ -168,10 +170,10 @@ def diagram(model, ratio):
     tori = torus.speeds(rundir, found)
     print(f"smoothing: eps/y_fp = {ratio:g}: torus points "
           + ", ".join(f"{v:.4f}" for v, _ in tori), flush=True)
-    return tori, {"eq": jobs.stored(eq, mg.COLUMNS), "hopf": found.hopf,
+    return tori, {"eq": jobs.stored(eq, yfp_stored.COLUMNS), "hopf": found.hopf,
                   "folds": [(V, amp) for _, _, V, amp in found.folds()],
                   "branches": [b for run in found.branches
-                               for b in jobs.stored(run, mg.COLUMNS)]}
+                               for b in jobs.stored(run, yfp_stored.COLUMNS)]}
 
 
 def answers(ratio):
@@ -196,7 +198,7 @@ def answers(ratio):
         return out, {"orbits": sorted(orbits.items())}
     try:
         tori, stored = diagram(model, ratio)
-    except (autoglue.RunError, RuntimeError) as exc:   # the table keeps the rest
+    except (runerror.RunError, RuntimeError) as exc:   # the table keeps the rest
         print(f"smoothing: eps/y_fp = {ratio:g}: Fig. 10's diagram stops, no torus points: "
               f"{getattr(exc, 'brief', exc)}", flush=True)
         return out, None

@@ -13,8 +13,8 @@ speeds do not depend on y_fp at all, and its orbits scale with y_fp.
 """
 import numpy
 
-from mlgshimmy.shared import autoglue, gear, jobs, mlgmodel, naming, paths, simulator
-from mlgshimmy.shared import magnitude as mg
+from mlgshimmy.shared import gear, jobs, mlgmodel, naming, paths, simulator
+from mlgshimmy.shared import runerror, yfp_runs, yfp_stored
 
 DECLARED = {
     "smoothing_fig14": {
@@ -43,25 +43,25 @@ SIMULATION = ("--t-end", 16, "--dt-out", 1e-5, "--rtol", 1e-10, "--atol", 1e-12)
 def seeds(eps):
     """Fig. 14's seed freeplays (1 and 0.15 mm at eps = 0.1 mm) at the same
     eps / y_fp, within the curves' range."""
-    return tuple(min(mg.YFP_MAX, y * eps / 0.1) for y in (1.0, 0.15))
+    return tuple(min(yfp_runs.YFP_MAX, y * eps / 0.1) for y in (1.0, 0.15))
 
 
 def orbit_curve(rundir, eps, model):
     """The stable orbit at ORBIT_SPEED of the diagram at the larger seed
-    freeplay, continued in y_fp (stored as magnitude.stored_orbits does);
+    freeplay, continued in y_fp (stored as yfp_stored.stored_orbits does);
     None if that diagram has no stable orbit there."""
     yfp = seeds(eps)[0]
-    d = mg.diagram_in_V(rundir, "d", "fixed", yfp, uzr=(ORBIT_SPEED,), figure=FIGURE,
+    d = yfp_runs.diagram_in_V(rundir, "d", "fixed", yfp, uzr=(ORBIT_SPEED,), figure=FIGURE,
                         eps_abs=eps, **model)
-    found = mg.stable_orbits(d, ORBIT_SPEED)
+    found = yfp_runs.stable_orbits(d, ORBIT_SPEED)
     if not found:
         print(f"{FIGURE}: eps = {eps:g} mm: no stable orbit at {ORBIT_SPEED:g} m/s "
               f"(y_fp = {yfp:g} mm)")
         return None
     run, lab = max(found, key=lambda f: f[0](f[1])["psi_amp"])
-    runs = mg.orbit_in_yfp(rundir, "orbit", run(lab), "fixed", ORBIT_SPEED, FIGURE,
+    runs = yfp_runs.orbit_in_yfp(rundir, "orbit", run(lab), "fixed", ORBIT_SPEED, FIGURE,
                            eps_abs=eps, **model)
-    return mg.stored_orbits({ORBIT_SPEED: runs})[0][1]
+    return yfp_stored.stored_orbits({ORBIT_SPEED: runs})[0][1]
 
 
 def compute():
@@ -70,21 +70,21 @@ def compute():
     for eps in WIDTHS:
         rundir = paths.rundir(f"{FIGURE}/eps{eps:g}")
         try:
-            curves = mg.hopf_curves(rundir, "hopf", "fixed", seeds=seeds(eps), figure=FIGURE,
+            curves = yfp_runs.hopf_curves(rundir, "hopf", "fixed", seeds=seeds(eps), figure=FIGURE,
                                     eps_abs=eps, **model)
-        except autoglue.RunError as exc:   # the figure keeps the other widths
+        except runerror.RunError as exc:   # the figure keeps the other widths
             print(f"{FIGURE}: eps = {eps:g} mm: the Hopf curves stop: {exc.brief}")
             curves = []
         try:
             orbit = orbit_curve(rundir, eps, model)
-        except autoglue.RunError as exc:
+        except runerror.RunError as exc:
             print(f"{FIGURE}: eps = {eps:g} mm: the orbit in y_fp stops: {exc.brief}")
             orbit = None
-        out["widths"][f"{eps:g}"] = {"hopf_curves": mg.stored_curves(curves, ("yfp", "V")),
+        out["widths"][f"{eps:g}"] = {"hopf_curves": yfp_runs.stored_curves(curves, ("yfp", "V")),
                                      "orbit": orbit}
-    law14 = {**model, "Fstar": mg.FSTAR, "eps_abs": 0.0, "eps_rel": 0.0,
+    law14 = {**model, "Fstar": yfp_runs.FSTAR, "eps_abs": 0.0, "eps_rel": 0.0,
              "freeplay_law": mlgmodel.LAWS.index("nonsmooth")}
-    out["limit_hopf"] = naming.scanned("figures", "V", mg.V_SCAN, **law14, yfp=1.0)
+    out["limit_hopf"] = naming.scanned("figures", "V", yfp_runs.V_SCAN, **law14, yfp=1.0)
     out["limit_orbits"] = [
         (y, simulator.simulate(None, "--V", ORBIT_SPEED, "--psi0", 0.01 * y, *SIMULATION,
                                params={**law14, "yfp": y})["psi_amplitude_rad"])
@@ -112,7 +112,7 @@ def plot(result):
                               label=rf"$\epsilon$ = {eps} mm"))
     for name, V in result["limit_hopf"].items():
         ax_hopf.axhline(V, color=draw.palette.NEUTRAL, ls=":", lw=1.0)
-        ax_hopf.annotate(f"{name} (eq. 14)", (mg.YFP_MAX, V), xytext=(-4, 3),
+        ax_hopf.annotate(f"{name} (eq. 14)", (yfp_runs.YFP_MAX, V), xytext=(-4, 3),
                          textcoords="offset points", ha="right", fontsize=7)
     limit_style = {"ls": "", "marker": "D", "ms": 4.5, "mfc": draw.palette.OPEN,
                    "mec": draw.palette.NEUTRAL, "zorder": 6}
@@ -121,11 +121,11 @@ def plot(result):
     handles += [Line2D([], [], label="eq. (14), simulated (switches located)", **limit_style),
                 Line2D([], [], color=draw.palette.NEUTRAL, ls=":", lw=1.0,
                        label="eq. (14): Hopf speeds, every $y_{fp}$ > 0")]
-    ax_orbit.set(xscale="log", yscale="log", xlim=(mg.YFP_MIN, mg.YFP_MAX), xlabel="$y_{fp}$ [mm]",
+    ax_orbit.set(xscale="log", yscale="log", xlim=(yfp_runs.YFP_MIN, yfp_runs.YFP_MAX), xlabel="$y_{fp}$ [mm]",
                  ylabel=r"$\psi$ amplitude [deg]",
                  title=f"(a) the stable orbit at V = {ORBIT_SPEED:g} m/s "
                        "continued in $y_{fp}$")
-    ax_hopf.set(xscale="log", xlim=(mg.YFP_MIN, mg.YFP_MAX), ylim=(0, mg.V_MAX),
+    ax_hopf.set(xscale="log", xlim=(yfp_runs.YFP_MIN, yfp_runs.YFP_MAX), ylim=(0, yfp_runs.V_MAX),
                 xlabel="$y_{fp}$ [mm]", ylabel="V [m/s]",
                 title="(b) Hopf curves of straight rolling in $(y_{fp}, V)$")
     draw.legend(ax_orbit, extra=handles, color=draw.palette.NEUTRAL, loc="lower right")

@@ -5,7 +5,7 @@ the comparison DIFFERENT (exit 1), one within its tolerance does not, and
 one that no rule matches is only reported.  The smoothing study's set
 (tests/reference/smoothing) holds its eps table this way.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_named_tolerances.py
+Run: /usr/bin/python3 -m pytest -q tests/regression/test_named_tolerances.py
 """
 import json
 import os
