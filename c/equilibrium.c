@@ -54,6 +54,9 @@ int mlg_equilibrium(const mlg_params *p_in, double eta_guess, double u[MLG_NX])
     if (mlg_params_unusable(p_in, NULL, 0)) return MLG_BAD_PARAMETER;
     mlg_params p = *p_in;
     if (p.V < 1.0) p.V = 1.0;
+    /* at rest Coulomb's stick holds any twist within M_fric: the equilibrium
+     * without that band is the regularised law's, where friction is zero */
+    p.friction_law = 0.0;
     memset(u, 0, sizeof(double) * MLG_NX);
     if (eta_guess <= 0.0) {
         model_parameters mp = model_parameters_seed(&p, MLG_PARS_PLAIN);

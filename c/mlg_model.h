@@ -186,7 +186,7 @@ int mlg_freeplay_law_uses_eps(int law);           /* 1 if its shape has the widt
 /* ---- the non-smooth model in modes (vector_field_*.c, switching.c) ---- */
 /* Discrete variables of the piecewise-smooth model: each takes a mode
  * (MLG_MODE_BY_STATE: the mode the state lies in). */
-enum mlg_discrete { MLG_DISCRETE_FREEPLAY, MLG_NDISCRETE };
+enum mlg_discrete { MLG_DISCRETE_FREEPLAY, MLG_DISCRETE_FRICTION, MLG_NDISCRETE };
 /* The modes of the freeplay under eq. (14) */
 enum mlg_freeplay_mode {
     MLG_MODE_BY_STATE = -1,
@@ -194,11 +194,19 @@ enum mlg_freeplay_mode {
     MLG_MODE_CONTACT_POS = 1,    /* y_tlk >= y_fp: k_tlk (y_tlk - y_fp) */
     MLG_MODE_CONTACT_NEG = 2     /* y_tlk <= -y_fp: k_tlk (y_tlk + y_fp) */
 };
+/* The modes of the twist's seal friction under Coulomb's law (friction_law 1,
+ * docs/model.md 10): sliding with the moment +-M_fric against the slip, or
+ * stuck with the moment that holds the twist rate */
+enum mlg_friction_mode {
+    MLG_MODE_STICK = 0,          /* twist rate held: |holding moment| <= M_fric */
+    MLG_MODE_SLIP_POS = 1,       /* twist rate > 0: +M_fric */
+    MLG_MODE_SLIP_NEG = 2        /* twist rate < 0: -M_fric */
+};
 /* mlg_rhs and mlg_rhs_jacobian with each discrete variable held in the mode
  * modes[MLG_DISCRETE_...] (modes == NULL: all by state).  A mode other than
- * MLG_MODE_BY_STATE needs the law it belongs to (freeplay_law nonsmooth),
- * else MLG_BAD_PARAMETER.  Each mode's field extends smoothly beyond its
- * switching surfaces. */
+ * MLG_MODE_BY_STATE needs the law it belongs to (freeplay_law nonsmooth,
+ * friction_law Coulomb), else MLG_BAD_PARAMETER.  Each mode's field extends
+ * smoothly beyond its switching surfaces. */
 int mlg_rhs_in_modes(const mlg_params *p, const int *modes, const double u[MLG_NX],
                      double f[MLG_NX]);
 int mlg_rhs_jacobian_in_modes(const mlg_params *p, const int *modes, const double u[MLG_NX],
@@ -206,14 +214,32 @@ int mlg_rhs_jacobian_in_modes(const mlg_params *p, const int *modes, const doubl
                               double dfdp[MLG_NX * MLG_NPAR]);
 
 /* The switching functions, one table (switching.c): X(name, discrete
- * variable, mode below, mode above): crossing the surface h = 0 upwards puts
- * the variable in `mode above`, downwards in `mode below`.
- * h+- = r_tlk(eta) psi_s -+ y_fp (section III), psi_s = psi + beta sin p. */
-#define MLG_SWITCHING_FUNCTIONS(X)                                                    \
-    X(freeplay_upper, MLG_DISCRETE_FREEPLAY, MLG_MODE_GAP, MLG_MODE_CONTACT_POS)     \
-    X(freeplay_lower, MLG_DISCRETE_FREEPLAY, MLG_MODE_CONTACT_NEG, MLG_MODE_GAP)
+ * variable, mode below, mode above, watched): crossing the surface h = 0
+ * upwards puts the variable in `mode above`, downwards in `mode below`; h is
+ * a root function while the variable is in a mode of `watched` (a mask of
+ * MLG_IN(mode)), and a mode entered at a crossing is kept only if every
+ * function watched in it lies on its side (mlg_switching_mode_after of
+ * sign h is that mode).
+ * h+- = r_tlk(eta) psi_s -+ y_fp (section III), psi_s = psi + beta sin p.
+ * slip_pos, slip_neg: the twist's slip speed r_seal psi_s'; stick_pos,
+ * stick_neg: the twist's acceleration psi_s'' in the mode SLIP_POS, SLIP_NEG
+ * (above 0 in SLIP_POS, even M_fric cannot hold the twist: it slides up). */
+#define MLG_IN(mode) (1 << (mode))
+#define MLG_SWITCHING_FUNCTIONS(X)                                                        \
+    X(freeplay_upper, MLG_DISCRETE_FREEPLAY, MLG_MODE_GAP, MLG_MODE_CONTACT_POS,          \
+      MLG_IN(MLG_MODE_GAP) | MLG_IN(MLG_MODE_CONTACT_POS))                                \
+    X(freeplay_lower, MLG_DISCRETE_FREEPLAY, MLG_MODE_CONTACT_NEG, MLG_MODE_GAP,          \
+      MLG_IN(MLG_MODE_CONTACT_NEG) | MLG_IN(MLG_MODE_GAP))                                \
+    X(slip_pos, MLG_DISCRETE_FRICTION, MLG_MODE_STICK, MLG_MODE_SLIP_POS,                  \
+      MLG_IN(MLG_MODE_SLIP_POS))                                                          \
+    X(slip_neg, MLG_DISCRETE_FRICTION, MLG_MODE_SLIP_NEG, MLG_MODE_STICK,                  \
+      MLG_IN(MLG_MODE_SLIP_NEG))                                                          \
+    X(stick_pos, MLG_DISCRETE_FRICTION, MLG_MODE_STICK, MLG_MODE_SLIP_POS,                 \
+      MLG_IN(MLG_MODE_STICK))                                                             \
+    X(stick_neg, MLG_DISCRETE_FRICTION, MLG_MODE_SLIP_NEG, MLG_MODE_STICK,                 \
+      MLG_IN(MLG_MODE_STICK))
 enum mlg_switching_index {
-#define X(name, variable, below, above) MLG_SWITCH_##name,
+#define X(name, variable, below, above, watched) MLG_SWITCH_##name,
     MLG_SWITCHING_FUNCTIONS(X)
 #undef X
     MLG_NSWITCH
@@ -222,13 +248,17 @@ const char *mlg_switching_name(int k);             /* NULL if out of range */
 int mlg_switching_variable(int k);                 /* enum mlg_discrete, or -1 */
 /* The mode after crossing h_k = 0 in direction +1 (upwards) or -1 */
 int mlg_switching_mode_after(int k, int direction);
+/* 1 if h_k is a root function while its variable is in `mode`, else 0 */
+int mlg_switching_watched(int k, int mode);
 /* 1 if the parameters make switching function k part of the model (the law
- * it belongs to is selected, with nonzero freeplay), else 0 */
+ * it belongs to is selected, with nonzero freeplay or friction), else 0 */
 int mlg_switching_applies(const mlg_params *p, int k);
 /* h[k] and, if dh != NULL, its gradient dh[k * MLG_NX + j] = dh_k/du_j,
- * exact (forward mode), for every k; returns an mlg_status. */
-int mlg_switching(const mlg_params *p, const double u[MLG_NX], double h[MLG_NSWITCH],
-                  double dh[MLG_NSWITCH * MLG_NX]);
+ * exact (forward mode), for every k (0 for the friction's where they do not
+ * apply), the other discrete variables in `modes` (NULL: by state);
+ * returns an mlg_status. */
+int mlg_switching(const mlg_params *p, const int *modes, const double u[MLG_NX],
+                  double h[MLG_NSWITCH], double dh[MLG_NSWITCH * MLG_NX]);
 /* The modes of the discrete variables at the state u (modes[MLG_NDISCRETE]). */
 int mlg_modes_at(const mlg_params *p, const double u[MLG_NX], int modes[MLG_NDISCRETE]);
 

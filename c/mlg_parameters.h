@@ -48,7 +48,9 @@
     X(tyre_forces,  0, 1.0, "-",  "1: tyre forces act on the gear; 0 (tests): "     \
                                   "ideal frictionless support under the axle")    \
     X(freeplay_law, 0, 0.0, "-",  "torque-link freeplay law: its index in "          \
-                                  "MLG_FREEPLAY_LAWS (c/freeplay_laws.h), 0 eq. (15)")
+                                  "MLG_FREEPLAY_LAWS (c/freeplay_laws.h), 0 eq. (15)") \
+    X(friction_law, 0, 0.0, "-",  "seal friction law on the twist: 0 tanh-regularised, " \
+                                  "1 Coulomb with stick (modes; the simulator)")
 
 /* PAR(15): which file of constant overrides FUNC reads (models/mlg.c):
  * k > 0 reads "mlg.constants.<k>" in the run directory, 0 reads none. */

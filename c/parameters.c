@@ -187,6 +187,9 @@ int mlg_params_unusable(const mlg_params *p, char *msg, size_t n)
         return reject(msg, n, "parameter freeplay_law = %g must be the index of a law in "
                       "c/freeplay_laws.h (0 to %d)", p->freeplay_law,
                       mlg_freeplay_law_count() - 1);
+    if (p->friction_law != 0.0 && p->friction_law != 1.0)
+        return reject(msg, n, "parameter friction_law = %g must be 0 (tanh-regularised) or 1 "
+                      "(Coulomb with stick)", p->friction_law);
     return 0;
 }
 
@@ -226,6 +229,9 @@ int mlg_params_check(const mlg_params *p, char *msg, size_t n)
     }
     if (p->F_fric < 0.0)
         return reject(msg, n, "parameter F_fric = %g N must be >= 0", p->F_fric);
+    if (p->friction_law == 1.0 && p->F_fric != 0.0)   /* stick-slip is built for the twist */
+        return reject(msg, n, "parameter F_fric = %g N must be 0 with friction_law = 1: "
+                      "Coulomb's law with stick acts on the twist only", p->F_fric);
     if (p->F_tyre_min < 0.0)
         return reject(msg, n, "parameter F_tyre_min = %g N must be >= 0", p->F_tyre_min);
     if (!(p->eta_stage >= 0.0 && p->eta_stage < p->z_tlk0))   /* a position in the stroke */

@@ -32,7 +32,7 @@ static inline dual strut_damper_force(const mlg_constants *c, dual eta, dual eta
 
 /* Coulomb friction of the piston's seal in the strut, regularised for
  * continuation: size * tanh(slip / v_fric), slip the sliding speed at the
- * seal; a constant normal force (docs/model.md 9). */
+ * seal; a constant normal force (docs/model.md 10). */
 static inline dual seal_friction(dual size, dual slip, const mlg_constants *c)
 {
     return d_mul(size, d_tanh(d_mulc(slip, 1.0 / c->v_fric)));
@@ -42,6 +42,14 @@ static inline dual seal_friction(dual size, dual slip, const mlg_constants *c)
 static inline dual seal_friction_moment(const model_parameters *mp, dual twist_rate)
 {
     return seal_friction(mp->par.M_fric, d_mulc(twist_rate, mp->c->r_seal), mp->c);
+}
+
+/* Coulomb's law (friction_law 1) in a mode of the twist: +-M_fric sliding,
+ * 0 stuck until hold_twist (vector_field.h) finds the holding moment */
+static inline dual coulomb_friction_moment(const model_parameters *mp, int mode)
+{
+    return mode == MLG_MODE_SLIP_POS ? mp->par.M_fric
+         : mode == MLG_MODE_SLIP_NEG ? d_neg(mp->par.M_fric) : d_const(0.0);
 }
 
 /* the axial force against the compression rate, acting as F_ceta does */

@@ -33,6 +33,48 @@ static inline int freeplay_mode(const mlg_params *p, const int *modes)
     return known && (int)p->freeplay_law == MLG_FREEPLAY_nonsmooth ? mode : -2;
 }
 
+/* The twist friction's mode: MLG_MODE_BY_STATE under tanh (friction_law 0);
+ * under Coulomb's law (1) the mode given, or by state the sign of the twist
+ * rate, MLG_MODE_STICK at rest (hold_twist resolves it); -2 for a mode that
+ * cannot be used */
+static inline int friction_mode(const mlg_params *p, const int *modes, dual twist_rate)
+{
+    int mode = modes != NULL ? modes[MLG_DISCRETE_FRICTION] : MLG_MODE_BY_STATE;
+    if (p->friction_law == 0.0) return mode == MLG_MODE_BY_STATE ? mode : -2;
+    if (mode != MLG_MODE_BY_STATE)
+        return mode >= MLG_MODE_STICK && mode <= MLG_MODE_SLIP_NEG ? mode : -2;
+    return twist_rate.v > 0.0 ? MLG_MODE_SLIP_POS
+         : twist_rate.v < 0.0 ? MLG_MODE_SLIP_NEG : MLG_MODE_STICK;
+}
+
+/* psi_s'' = d/dt (psi' + beta_twist): the twist's acceleration relative to
+ * the strut, whose rate the friction acts on */
+static inline dual twist_acceleration(const gear_state *x, const dual acc[4])
+{
+    return x->eom >= MLG_EOM_SIDESTAY ? d_add(acc[0], d_mul(acc[2], x->g->sin_p)) : acc[0];
+}
+
+/* Coulomb's stick (docs/model.md 10): the friction moment that holds the
+ * twist, psi_s'' = 0.  The accelerations are affine in M_cpsi (eqs. 1-4), so
+ * two evaluations, friction 0 (acc on entry) and a trial moment, give it
+ * exactly; the trial I_psi psi_s''(0), the hold at eom_terms 0, keeps the
+ * difference of the two free of cancellation.  By state (clip) a holding
+ * moment beyond +-M_fric slides at that level. */
+static inline void hold_twist(gear_state *x, const dual M[3], dual F_dyn, dual damping,
+                              int clip, dual acc[4])
+{
+    dual at_zero = twist_acceleration(x, acc);
+    double trial = at_zero.v != 0.0 ? at_zero.v * x->mp->c->I_psi : 1.0;
+    x->M_cpsi = d_addc(damping, trial);
+    accelerations(x, M, F_dyn, acc);
+    dual hold = d_mulc(d_div(at_zero, d_sub(at_zero, twist_acceleration(x, acc))), trial);
+    dual limit = x->mp->par.M_fric;
+    if (clip && hold.v > limit.v) hold = limit;
+    if (clip && hold.v < -limit.v) hold = d_neg(limit);
+    x->M_cpsi = d_add(damping, hold);
+    accelerations(x, M, F_dyn, acc);
+}
+
 /* u: the states, seeded by the caller; modes: those of the discrete
  * variables (NULL: by state); PAR(1) is derivative direction dir_par1
  * (model_parameters_seed) */
@@ -70,8 +112,12 @@ static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], const 
     /* section III: torque links, eqs. (14)-(16) */
     x.r_tlk = torque_link_radius(mp.c, l.z_tlk);
     x.M_kpsi = torsional_stiffness_moment(&mp, x.r_tlk, x.psi_s, mode);
-    x.M_cpsi = d_add(torsional_damping_moment(&mp, twist_rate),
-                     seal_friction_moment(&mp, twist_rate));
+    int friction = friction_mode(p, modes, twist_rate);
+    if (friction == -2) return MLG_BAD_PARAMETER;
+    dual damping = torsional_damping_moment(&mp, twist_rate);
+    x.M_cpsi = d_add(damping, friction == MLG_MODE_BY_STATE
+                                  ? seal_friction_moment(&mp, twist_rate)
+                                  : coulomb_friction_moment(&mp, friction));
 
     /* eq. (4): the strut's axial load and the tyres' share of it (II.B.1) */
     dual F_keta = strut_spring_force(mp.c, eta);
@@ -97,6 +143,9 @@ static inline int vector_field(const mlg_params *p, const dual u[MLG_NX], const 
     dual M[3], acc[4];
     generalised_moments(&x, &loads, M);
     accelerations(&x, M, F_dyn, acc);
+    if (friction == MLG_MODE_STICK)
+        hold_twist(&x, M, F_dyn, damping, modes == NULL || modes[MLG_DISCRETE_FRICTION] ==
+                                          MLG_MODE_BY_STATE, acc);
     for (int i = 0; i < 4; i++) {
         f[MLG_PSI + i] = u[MLG_PSI_DOT + i];
         f[MLG_PSI_DOT + i] = acc[i];

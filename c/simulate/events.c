@@ -19,15 +19,49 @@ int events_init(events *e, const mlg_params *p, const double u0[MLG_NX])
     return status;
 }
 
+/* 1 if switching function k is a root function in the present modes */
+static int watched(const events *e, int k)
+{
+    return mlg_switching_watched(k, e->modes[mlg_switching_variable(k)]);
+}
+
 int events_values(const events *e, const double u[MLG_NX], double *g)
 {
     double h[MLG_NSWITCH];
-    int status = mlg_switching(e->p, u, h, NULL);
-    for (int i = 0; i < e->count; i++) g[i] = h[e->index[i]];
+    int status = mlg_switching(e->p, e->modes, u, h, NULL);
+    for (int i = 0; i < e->count; i++)   /* a constant: no crossing while unwatched */
+        g[i] = watched(e, e->index[i]) ? h[e->index[i]] : 1.0;
     return status;
 }
 
-int events_cross(events *e, const int *rootsfound)
+/* A mode entered holds while every function watched in it lies on its side;
+ * one that does not (stick entered where even M_fric cannot hold the twist)
+ * hands on to the mode on the side it lies.  Each pass leaves a mode for
+ * good (stick -> slip, never back at the same state), so MLG_NSWITCH passes
+ * bound it. */
+static int settle(events *e, const double u[MLG_NX])
+{
+    int moved = 0;
+    for (int pass = 0; pass < MLG_NSWITCH; pass++) {
+        double h[MLG_NSWITCH];
+        int status = mlg_switching(e->p, e->modes, u, h, NULL), changed = 0;
+        if (status != MLG_OK) return -status;
+        for (int i = 0; i < e->count && !changed; i++) {
+            int k = e->index[i], v = mlg_switching_variable(k);
+            if (!watched(e, k) || h[k] == 0.0) continue;
+            int side = mlg_switching_mode_after(k, h[k] > 0.0 ? 1 : -1);
+            if (side != e->modes[v]) {
+                e->modes[v] = side;
+                e->crossings[k]++;
+                changed = moved = 1;
+            }
+        }
+        if (!changed) return moved;
+    }
+    return moved;
+}
+
+int events_cross(events *e, const int *rootsfound, const double u[MLG_NX])
 {
     int crossed = 0;
     for (int i = 0; i < e->count; i++) {
@@ -37,5 +71,6 @@ int events_cross(events *e, const int *rootsfound)
         e->crossings[k]++;
         crossed++;
     }
-    return crossed;
+    int moved = settle(e, u);
+    return moved < 0 ? moved : crossed + moved;
 }

@@ -7,10 +7,11 @@
  * the exact Jacobian mlg_rhs_jacobian.  Writes the samples as CSV and prints
  * solver statistics and the settled oscillation over the last second.
  *
- * With the non-smooth freeplay law (14) (--param freeplay_law=1), CVODE's
- * root finding locates every crossing of the switching surfaces h+- = 0
+ * With the non-smooth freeplay law (14) (--param freeplay_law=1), or
+ * Coulomb's stick-slip on the twist (--param friction_law=1 with M_fric > 0),
+ * CVODE's root finding locates every crossing of the switching surfaces
  * (events.h) and the integration restarts there in the new mode; the
- * summary counts the crossings.
+ * summary counts the mode changes per surface.
  *
  * Any evaluation outside the model's domain (nonzero mlg_status) stops the
  * run with an error message and exit status 1.
@@ -576,7 +577,12 @@ int main(int argc, char **argv)
         while (flag == CV_ROOT_RETURN) {   /* a switch: on in the new mode */
             int found[MLG_NSWITCH];
             check_flag(CVodeGetRootInfo(cvode, found), "CVodeGetRootInfo");
-            events_cross(&m.switching, found);
+            int changed = events_cross(&m.switching, found, N_VGetArrayPointer(y));
+            if (changed < 0) {
+                fprintf(stderr, "mlg_simulate: switching failed at t = %.6g s: %s\n", t,
+                        mlg_status_text(-changed));
+                return 1;
+            }
             add_statistics(cvode, &stats);     /* CVodeReInit zeroes CVODE's own */
             check_flag(CVodeReInit(cvode, t, y), "CVodeReInit");
             flag = CVode(cvode, t_want, y, &t, CV_NORMAL);

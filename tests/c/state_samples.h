@@ -3,8 +3,9 @@
  * angles, every eom_terms level) moved off it, with the torque-link deflection
  * inside, at the edge of (within 2 epsilon of a corner of eq. 15) or outside
  * the freeplay (on its switching surface for the modes of eq. 14), every
- * freeplay law, seal friction in half of them (near stick in a quarter), and
- * the scale of each derivative direction. */
+ * freeplay law, seal friction in half of them (near stick in a quarter,
+ * Coulomb's law in its modes in an eighth), and the scale of each derivative
+ * direction. */
 #ifndef MLG_STATE_SAMPLES_H
 #define MLG_STATE_SAMPLES_H
 
@@ -46,6 +47,7 @@ static sample draw(int n)
     s.p.freeplay_law = (n / 11) % mlg_freeplay_law_count();
     int nonsmooth = s.p.freeplay_law == mlg_freeplay_law_index("nonsmooth");
     s.modes[MLG_DISCRETE_FREEPLAY] = nonsmooth ? (n / 2) % 4 - 1 : MLG_MODE_BY_STATE;
+    s.modes[MLG_DISCRETE_FRICTION] = MLG_MODE_BY_STATE;
     mlg_equilibrium(&s.p, -1.0, s.u);
 
     /* place the torque-link deflection inside, at the edge of, or outside the freeplay */
@@ -90,6 +92,11 @@ static sample draw(int n)
             s.u[MLG_BETA_DOT] = unit_between(-3.0, 3.0) * twist;
             s.u[MLG_ETA_DOT] = unit_between(-3.0, 3.0) * s.p.v_fric;
             s.stick = 1;
+        }
+        if (n % 8 == 3) {   /* Coulomb's law on the twist, by state or in each mode */
+            s.p.friction_law = 1.0;
+            s.p.F_fric = 0.0;
+            s.modes[MLG_DISCRETE_FRICTION] = (n / 8) % 4 - 1;
         }
     }
     return s;

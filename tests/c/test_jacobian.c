@@ -9,7 +9,8 @@
  * h and h/2 (truncation error O(h^4)).  Tolerance 1e-6.
  * Every freeplay law is drawn in turn; with law (14), each mode of the
  * freeplay too (mlg_rhs_jacobian_in_modes), a fixed mode also exactly on its
- * switching surface, where that mode's field is smooth. */
+ * switching surface, where that mode's field is smooth; so is each mode of
+ * the twist's Coulomb friction (stick: the holding moment's derivatives). */
 #include <string.h>
 
 #include "jacobian_variants.h"
@@ -53,6 +54,8 @@ int main(void)
     double worst_law[LAWS] = {0.0}, worst_mode[MODES] = {0.0};
     int per_law[LAWS] = {0}, per_mode[MODES] = {0};
     check(mlg_freeplay_law_count() <= LAWS, "law_table_fits", "%d laws", mlg_freeplay_law_count());
+    double worst_coulomb[MODES] = {0.0};
+    int per_coulomb[MODES] = {0};
     int variants_compared = 0, variants_differ = 0, stick = 0;
     double worst_stick = 0.0;
     const char *worst_where = "";
@@ -100,16 +103,32 @@ int main(void)
         int law = (int)s.p.freeplay_law, mode = s.modes[MLG_DISCRETE_FREEPLAY] + 1;
         per_law[law]++;
         if (law == mlg_freeplay_law_index("nonsmooth")) per_mode[mode]++;
+        int coulomb = s.p.friction_law == 1.0, friction = s.modes[MLG_DISCRETE_FRICTION] + 1;
+        if (coulomb) per_coulomb[friction]++;
 
         double scale[MLG_NDIR], fd[MLG_NDIR][MLG_NX], row[MLG_NX];
         scales(&s, scale);
         for (int j = 0; j < MLG_NDIR; j++)
             if (scale[j] > 0.0) richardson(&s, j, 1e-4 * scale[j], fd[j]);
+        /* stuck, the twist's acceleration is zero by construction (at eom_terms 0
+         * psi'' itself): its rows are measured against their size when sliding */
+        double Jslip[MLG_NX * MLG_NX], Pslip[MLG_NX * MLG_NPAR];
+        int stuck = coulomb && s.modes[MLG_DISCRETE_FRICTION] == MLG_MODE_STICK;
+        if (stuck) {
+            sample t = s;
+            t.modes[MLG_DISCRETE_FRICTION] = MLG_MODE_SLIP_POS;
+            mlg_rhs_jacobian_in_modes(&t.p, t.modes, t.u, f2, Jslip, Pslip);
+        }
         for (int i = 0; i < MLG_NX; i++) {
             row[i] = 0.0;
             for (int j = 0; j < MLG_NDIR; j++) {
                 double an = j < MLG_NX ? J[i + MLG_NX * j] : P[i + MLG_NX * (j - MLG_NX)];
                 row[i] = fmax(row[i], fabs(an) * scale[j]);
+                if (stuck) {
+                    double slid = j < MLG_NX ? Jslip[i + MLG_NX * j]
+                                             : Pslip[i + MLG_NX * (j - MLG_NX)];
+                    row[i] = fmax(row[i], fabs(slid) * scale[j]);
+                }
             }
         }
         for (int i = 0; i < MLG_NX; i++) {
@@ -123,6 +142,7 @@ int main(void)
                 if (law == mlg_freeplay_law_index("nonsmooth"))
                     worst_mode[mode] = fmax(worst_mode[mode], err);
                 if (s.stick) worst_stick = fmax(worst_stick, err);
+                if (coulomb) worst_coulomb[friction] = fmax(worst_coulomb[friction], err);
                 if (j < MLG_NX && err > worst_u) {
                     worst_u = err;
                     worst_where = s.region;
@@ -160,6 +180,15 @@ int main(void)
         check(per_mode[mode] >= 40 && worst_mode[mode] <= 1e-6, name,
               "%d samples of law (14), max row-scaled error %.2e", per_mode[mode],
               worst_mode[mode]);
+    }
+    static const char *const friction_names[MODES] = {"by_state", "stick", "slip_pos",
+                                                      "slip_neg"};
+    for (int mode = 0; mode < MODES; mode++) {
+        char name[64];
+        snprintf(name, sizeof name, "jacobian_coulomb_friction_mode_%s", friction_names[mode]);
+        check(per_coulomb[mode] >= 25 && worst_coulomb[mode] <= 1e-6, name,
+              "%d samples of Coulomb's law on the twist, max row-scaled error %.2e",
+              per_coulomb[mode], worst_coulomb[mode]);
     }
     check(stick > 200 && worst_stick <= 1e-6, "jacobian_near_seal_friction_stick",
           "%d samples with every rate within 3 v_fric of stick, max row-scaled error %.2e (df/du "

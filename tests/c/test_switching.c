@@ -23,7 +23,7 @@ int main(void)
         double r = mlg_r_tlk(&p, u[MLG_ETA]);
         u[MLG_PSI] = unit_between(-2.0, 2.0) * 1e-3 * p.yfp / r;
         double h[MLG_NSWITCH], dh[MLG_NSWITCH * MLG_NX];
-        if (mlg_switching(&p, u, h, dh) != MLG_OK) continue;
+        if (mlg_switching(&p, NULL, u, h, dh) != MLG_OK) continue;
         drawn++;
         /* the value: y_tlk -+ y_fp, y_tlk from the diagnostics (p: the side-stay angle) */
         mlg_diagnostics d;
@@ -47,9 +47,9 @@ int main(void)
             double v[MLG_NX];
             memcpy(v, u, sizeof v);
             v[j] = u[j] + step;
-            mlg_switching(&p, v, hp, NULL);
+            mlg_switching(&p, NULL, v, hp, NULL);
             v[j] = u[j] - step;
-            mlg_switching(&p, v, hm, NULL);
+            mlg_switching(&p, NULL, v, hm, NULL);
             for (int k = 0; k < MLG_NSWITCH; k++) {
                 double fd = (hp[k] - hm[k]) / (2.0 * step);
                 worst = fmax(worst, fabs(dh[k * MLG_NX + j] - fd) * 1e-3);  /* per mrad, mm */
@@ -76,7 +76,7 @@ int main(void)
     p.yfp = 1.0;
     double u[MLG_NX], f[MLG_NX];
     mlg_equilibrium(&p, -1.0, u);
-    int gap[MLG_NDISCRETE] = {MLG_MODE_GAP};
+    int gap[MLG_NDISCRETE] = {MLG_MODE_GAP, MLG_MODE_BY_STATE};
     check(mlg_rhs_in_modes(&p, gap, u, f) == MLG_BAD_PARAMETER && !mlg_switching_applies(&p, 0),
           "mode_needs_law_14", "atan law with a mode: status %d", mlg_rhs_in_modes(&p, gap, u, f));
     p.freeplay_law = mlg_freeplay_law_index("nonsmooth");
