@@ -37,7 +37,7 @@ def fold(tmp_path_factory):
         mp.delenv(rundirs.CLAIMED_ENV, raising=False)
         values = {**FIG10, "v_fric": 1e-3}
         _, _, _, orbit = friction.orbit_at_v0(rundir, "test", values)
-        return orbit, friction.fold_in_friction(rundir, "test", orbit)
+        return orbit, friction.fold_in_friction(rundir, "test", orbit)[0]
 
 
 @pytest.mark.parametrize("factor, persists", ((0.98, True), (1.02, False)))

@@ -1,4 +1,4 @@
-"""Oleo seal friction against the low-speed shimmy (docs/model.md 9): the
+"""Oleo seal friction against the low-speed shimmy (docs/model.md 10): the
 critical friction moment M_f* above which Fig. 10's low-frequency orbits
 (the shimmy between H1 and H2) no longer exist, and how it depends on the
 regularisation speed v_fric and on the freeplay.
@@ -21,6 +21,11 @@ damper dissipating as much per cycle on the zero-friction orbit there,
 4 M / (pi omega A), relative to the torsional critical damping
 2 sqrt(k_tlk r_tlk^2 I_psi) (links engaged).
 
+The regularised law is checked against Coulomb's own (the simulator's
+exact stick-slip, friction_law 1): at each rung of the ladder the orbit at
+M_fric = CHECK_M (met in step 2) is continued in V, and its amplitude and
+frequency at CHECK_V set against the settled simulated stick-slip there.
+
     make friction              # compute (cached) and plot: build/figures/friction.png
 """
 import math
@@ -31,10 +36,12 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
+from mlgshimmy.shared import magnitude
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import naming
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
+from mlgshimmy.shared import simulator
 from mlgshimmy.shared import spectrum
 
 DECLARED = {
@@ -65,6 +72,16 @@ COLLAPSED_END = 0.05   # a fold curve's end below this part of its largest ampli
                        # truncated curve: an error
 FOLD_DSMAX = 0.2       # the fold curve's steps (AUTO units), short near M_fric = 0
 STEPS = {"DS": 0.05, "DSMAX": 0.5}
+# the exact stick-slip check (friction_law 1 in the simulator): the regularised
+# orbits at CHECK_M, continued in V from V0, against the simulated settled shimmy
+CHECK_M = 5.0                       # N m: a third of M_f* at y_fp = 1 mm
+CHECK_V = (5.0, 10.0, 15.0, 20.0)   # m/s: inside the orbits' range at every rung
+SETTLE = 20.0                       # s simulated; measured over the last second
+# eq. (17)'s kappa* with the regularised law, which straight rolling sees as the
+# damper c_eq = M_fric r_seal / v_fric: at these equivalent damping ratios
+# c_eq / (2 sqrt(k_tlk r_tlk^2 I_psi)), SAE 902015's 1-10 % and beyond
+KAPPA_ZETA = (0.0, 0.005, 0.01, 0.03, 0.1, 1.0)
+KAPPA_V = 1e-3                      # m/s: v_fric of those runs (only c_eq matters)
 # the fold in M_fric is sharp at small v_fric: AUTO turns it only with DSMIN
 # 1e-9 (1e-5 stops there, MX); the fold curve ends on the Hopf curve, where
 # 1e-6 stops it once the amplitude is near zero
@@ -114,15 +131,54 @@ def orbit_at_v0(rundir, tag, values):
 
 
 def fold_in_friction(rundir, tag, orbit):
-    """Step 2: the orbit continued in M_fric to its fold (the LP solution).
-    Past the fold the orbits shrink onto straight rolling, where AUTO may stop
-    (MX): only the fold is used."""
+    """Step 2: the orbit continued in M_fric to its fold: (the LP solution,
+    the orbit at CHECK_M on the way).  Past the fold the orbits shrink onto
+    straight rolling, where AUTO may stop (MX): only the fold is used."""
     run = ct.periodic_from(rundir, "mf", orbit, "M_fric", stop={"M_fric": [M_STOP]},
-                           NMX=3000, allow_mx=True, DSMIN=1e-9, **STEPS)
+                           UZR={"M_fric": [CHECK_M]}, NMX=3000, allow_mx=True, DSMIN=1e-9,
+                           **STEPS)
     if not run("LP"):
         raise RuntimeError(f"friction {tag}: the orbit at V0 = {V0} m/s has no fold in M_fric "
                            "(its branch shrinks onto straight rolling: v_fric too large)")
-    return run("LP")[0]
+    fold = run("LP")[0]
+    level = [p for p in run("UZ") if abs(p["M_fric"] - CHECK_M) < 1e-6 < fold["M_fric"] - CHECK_M]
+    if not level:
+        raise RuntimeError(f"friction {tag}: the orbit at V0 = {V0} m/s folds at M_fric = "
+                           f"{fold['M_fric']:.4g} N m, below CHECK_M = {CHECK_M}")
+    return fold, level[0]
+
+
+def orbits_at_speeds(rundir, orbit):
+    """The orbit at CHECK_M (and V0) continued in V both ways: {V: (psi_amp
+    [rad], freq [Hz])} at each of CHECK_V, the first met from V0."""
+    found = {V0: (orbit["psi_amp"], orbit["freq"])}
+    for name, ds, end in (("cv_up", 0.05, max(CHECK_V) + 1.0), ("cv_down", -0.05,
+                                                                 min(CHECK_V) - 1.0)):
+        run = ct.periodic_from(rundir, name, orbit, "V", stop={"V": [end]},
+                               UZR={"V": list(CHECK_V)}, DS=ds, DSMAX=0.5)
+        # a point there, whatever AUTO typed it (a UZ may come out as BP)
+        for p in (p for branch in run for p in branch):
+            for v in CHECK_V:
+                if abs(p["V"] - v) < 1e-6:
+                    found.setdefault(v, (p["psi_amp"], p["freq"]))
+    missing = [v for v in CHECK_V if v not in found]
+    if missing:
+        raise RuntimeError(f"friction: the orbits at M_fric = {CHECK_M} N m do not reach "
+                           f"V = {missing} m/s")
+    return {str(v): {"psi_amp": float(found[v][0]), "freq": float(found[v][1])} for v in CHECK_V}
+
+
+def stick_slip(V, psi0, values):
+    """The exact Coulomb law (friction_law 1) simulated from straight rolling
+    with psi displaced by psi0, SETTLE s: the settled shimmy's half
+    peak-to-peak psi [rad] and frequency [Hz] over the last second, and the
+    slip-to-stick transitions."""
+    freeplay = {k: values[k] for k in ("yfp", "eps_abs", "eps_rel")}
+    params = {**gear.simulator_params(), "M_fric": CHECK_M, "friction_law": 1}
+    out = simulator.simulate(None, *simulator.start_args(V, values["Fstar"], freeplay, None,
+                                                         psi0, SETTLE, 1e-4, params))
+    return {"psi_amp": out["psi_amplitude_rad"], "freq": out["frequency_hz"],
+            "sticks": int(out["crossings_slip_pos"] + out["crossings_slip_neg"])}
 
 
 def fold_in_speed_and_friction(rundir, tag, fold):
@@ -153,7 +209,8 @@ def case(tag, yfp, v_fric):
     values = {**CONDITIONS, "yfp": yfp, "v_fric": v_fric, **gear.parameters()}
     rundir = paths.rundir(f"friction/{tag}")
     h1, h2, orbits, orbit = orbit_at_v0(rundir, tag, values)
-    fold = fold_in_friction(rundir, tag, orbit)
+    fold, level = fold_in_friction(rundir, tag, orbit)
+    checked = orbits_at_speeds(rundir, level) if yfp == 1.0 else None
     curve = fold_in_speed_and_friction(rundir, tag, fold)
     k = int(numpy.argmax(curve["M_fric"]))
     if k in (0, len(curve["V"]) - 1):
@@ -176,31 +233,79 @@ def case(tag, yfp, v_fric):
             "critical": float(curve["M_fric"][k]), "at_V": V_star,
             "orbit": {"psi_amp": amp, "freq": freq},
             "zeta": equivalent_damping_ratio(values, float(curve["M_fric"][k]), amp, freq),
-            "curve": {key: value.tolist() for key, value in curve.items()}}
+            "curve": {key: value.tolist() for key, value in curve.items()},
+            "at_check_m": checked}
+
+
+def torsional_critical(values):
+    """2 sqrt(k_tlk r_tlk^2 I_psi) [N m s/rad]: the twist's critical damping
+    with the links engaged, at straight rolling."""
+    model = mlgmodel.Model("figures", V=V0, **values)
+    r = model.r_tlk(model.equilibrium()["eta"])
+    return 2.0 * math.sqrt(model["k_tlk"] * r * r * model["I_psi"])
 
 
 def equivalent_damping_ratio(values, moment, amplitude, freq):
     """The viscous damping dissipating as much per cycle as a Coulomb moment
     on a harmonic twist of this amplitude and frequency, 4 M / (pi omega A),
-    relative to 2 sqrt(k_tlk r_tlk^2 I_psi)."""
-    model = mlgmodel.Model("figures", V=V0, **values)
-    r = model.r_tlk(model.equilibrium()["eta"])
-    critical = 2.0 * math.sqrt(model["k_tlk"] * r * r * model["I_psi"])
+    relative to torsional_critical."""
     omega = 2.0 * math.pi * freq
-    return 4.0 * moment / (math.pi * omega * amplitude) / critical
+    return 4.0 * moment / (math.pi * omega * amplitude) / torsional_critical(values)
+
+
+def kappa_against_friction():
+    """Eq. (17)'s kappa* (shared.magnitude.criterion) with the regularised
+    friction at each damping ratio of KAPPA_ZETA: [{zeta, c_eq, M_fric,
+    kappa, Fstar, V, mode}]."""
+    critical = torsional_critical({**CONDITIONS, "yfp": 1.0, **gear.parameters()})
+    out = []
+    for zeta in KAPPA_ZETA:
+        moment = zeta * critical * KAPPA_V / mlgmodel.Model("figures")["r_seal"]
+        model = {**gear.parameters(), "M_fric": moment, "v_fric": KAPPA_V}
+        found = magnitude.criterion(model)
+        print(f"friction: kappa* = {found['kappa']:.4g} at damping ratio {zeta:g}", flush=True)
+        out.append({"zeta": zeta, "c_eq": zeta * critical, "M_fric": moment, **found})
+    return out
 
 
 def cases():
-    """(tag, y_fp, v_fric) of the ladder and of the freeplays (shared ones once)."""
+    """(tag, y_fp, v_fric) of the ladder and of the freeplays (shared ones once);
+    at another gear (make friction RHO=10 MU=10) the converged rung alone."""
+    if not gear.current().baseline:
+        return {f"yfp1_v{FREEPLAY_V:g}": (1.0, FREEPLAY_V)}
     out = {f"yfp1_v{v:g}": (1.0, v) for v in LADDER}
     out.update({f"yfp{y:g}_v{FREEPLAY_V:g}": (y, FREEPLAY_V) for y in FREEPLAYS})
     return out
 
 
+def exact_check(ladder):
+    """The simulator's exact stick-slip at CHECK_M and each of CHECK_V, from
+    the finest rung's orbit amplitude: {V: {psi_amp, freq, sticks}}."""
+    finest = min(ladder, key=lambda c: c["v_fric"])
+    values = {**CONDITIONS, "yfp": 1.0, **gear.parameters()}
+    return {str(V): stick_slip(V, finest["at_check_m"][str(V)]["psi_amp"], values)
+            for V in CHECK_V}
+
+
 def compute():
     print("friction: critical seal friction of the low-frequency shimmy, Fig. 10's conditions"
           + gear.suffix())
-    return {"cases": [case(tag, *args) for tag, args in cases().items()]}
+    found = [case(tag, *args) for tag, args in cases().items()]
+    ladder = [c for c in found if c["yfp"] == 1.0]
+    return {"cases": found, "stick_slip": exact_check(ladder),
+            "kappa": kappa_against_friction()}
+
+
+def check_rows(result):
+    """[(V, v_fric, relative amplitude difference, relative frequency
+    difference)] of every rung against the exact stick-slip."""
+    rows = []
+    for c in sorted((c for c in result["cases"] if c["yfp"] == 1.0), key=lambda c: -c["v_fric"]):
+        for V in CHECK_V:
+            exact, regular = result["stick_slip"][str(V)], c["at_check_m"][str(V)]
+            rows.append((V, c["v_fric"], regular["psi_amp"] / exact["psi_amp"] - 1.0,
+                         regular["freq"] / exact["freq"] - 1.0))
+    return rows
 
 
 def numbers(result):
@@ -212,7 +317,44 @@ def numbers(result):
         out[f"V at M_f* [m/s], {at}"] = c["at_V"]
         out[f"M_f* as damping ratio [%], {at}"] = 100.0 * c["zeta"]
         out[f"linear threshold (Hopf curve's largest M_fric) [N m], {at}"] = c["linear"]
+    for V, exact in result["stick_slip"].items():
+        at = f"M_fric = {CHECK_M:g} N m, V = {float(V):g} m/s"
+        out[f"exact stick-slip psi amplitude [mrad], {at}"] = 1e3 * exact["psi_amp"]
+        out[f"exact stick-slip frequency [Hz], {at}"] = exact["freq"]
+    for k in result["kappa"]:
+        at = (f"friction as damping ratio {100 * k['zeta']:g} % (c_eq = {k['c_eq']:.4g} "
+              f"N m s/rad)")
+        out[f"kappa* (eq. 17), {at}"] = k["kappa"]
+    for V, v_fric, amp, freq in check_rows(result):
+        at = f"M_fric = {CHECK_M:g} N m, V = {V:g} m/s, v_fric = {v_fric:g} m/s"
+        out[f"regularised - exact, relative: psi amplitude, {at}"] = amp
+        out[f"regularised - exact, relative: frequency, {at}"] = freq
     return out
+
+
+def conclusions(result):
+    """What the friction does to the paper's conclusions, in the result's
+    numbers: the lines the report shows first."""
+    finest = min((c for c in result["cases"] if c["yfp"] == 1.0), key=lambda c: c["v_fric"])
+    zetas = [100 * c["zeta"] for c in result["cases"] if c["v_fric"] <= FREEPLAY_V]
+    kappa = {k["zeta"]: k for k in result["kappa"]}
+    gap = max(max(abs(a), abs(f)) for _, v, a, f in check_rows(result)
+              if v == finest["v_fric"])
+    return [
+        f"Low-speed shimmy (H1-H2, Fig. 10): no low-frequency orbit exists above M_f* = "
+        f"{finest['critical'] / finest['yfp']:.3g} N m per mm of freeplay (F* = 1), a Coulomb "
+        f"damping ratio of {min(zetas):.2g}-{max(zetas):.2g} % of critical at every freeplay; "
+        "SAE 902015 finds oleo friction below 1 % (severe) to above 10 % (favourable): "
+        f"only seal friction below {max(zetas):.2g} % leaves the low-speed shimmy of Fig. 10.",
+        f"Allowed freeplay, eq. (17): kappa* = {kappa[0.0]['kappa']:.3g} without friction; with "
+        f"the regularised friction, a damper at straight rolling, {kappa[0.01]['kappa']:.3g} at "
+        f"1 % and {kappa[0.1]['kappa']:.3g} at 10 %, at most {kappa[max(kappa)]['kappa']:.3g} "
+        f"({kappa[max(kappa)]['mode']} mode: no damping moves it). In Coulomb's limit the "
+        "twist sticks at straight rolling and the linear criterion no longer measures the "
+        "shimmy: M_f* does.",
+        f"Exact stick-slip (simulator) against the regularised orbits at M_fric = {CHECK_M:g} "
+        f"N m, V = {', '.join(f'{v:g}' for v in CHECK_V)} m/s: amplitude and frequency within "
+        f"{gap:.1g} (relative) at v_fric = {finest['v_fric']:g} m/s."]
 
 
 def plot(result):
@@ -222,8 +364,11 @@ def plot(result):
     steps = [abs(b["critical"] - a["critical"]) for a, b in zip(ladder, ladder[1:])]
     notes = [f"ladder: M_f* changes by {s:.3g} N m from v_fric = {a['v_fric']:g} to "
              f"{b['v_fric']:g} m/s" for s, a, b in zip(steps, ladder, ladder[1:])]
-    paper.report("friction", numbers(result), notes=notes)
-    fig, (curves, trend) = plt.subplots(1, 2, figsize=(11, 4.6))
+    notes += [f"kappa* = {k['kappa']:.4g} at friction damping ratio {100 * k['zeta']:g} %: "
+              f"set by the {k['mode']} mode at F* = {k['Fstar']:.3g}, V = {k['V']:.4g} m/s"
+              for k in result["kappa"]]
+    paper.report("friction", numbers(result), notes=conclusions(result) + notes)
+    fig, ((curves, trend), (exact, kappa)) = plt.subplots(2, 2, figsize=(11, 9))
     for c in sorted(result["cases"], key=lambda c: (c["yfp"], -c["v_fric"])):
         label = rf"$y_{{fp}}$ = {c['yfp']:g} mm, $v_\varepsilon$ = {c['v_fric']:g} m/s"
         line, = curves.plot(c["curve"]["V"], c["curve"]["M_fric"], label=label)
@@ -237,6 +382,24 @@ def plot(result):
     trend.set_xlabel(r"regularisation speed $v_\varepsilon$ [m/s]")
     trend.set_ylabel(r"$M_f^*$ [N m]")
     trend.set_title(r"(b) $M_f^*$ at $y_{fp}$ = 1 mm against $v_\varepsilon$")
+    rows = check_rows(result)
+    for V in CHECK_V:
+        mine = [(v, abs(amp)) for at, v, amp, _ in rows if at == V]
+        exact.loglog([v for v, _ in mine], [gap for _, gap in mine], "o-",
+                     label=f"V = {V:g} m/s")
+    exact.set_xlabel(r"regularisation speed $v_\varepsilon$ [m/s]")
+    exact.set_ylabel(r"|orbit's $\psi$ amplitude / stick-slip's $-$ 1|")
+    exact.set_title(rf"(c) regularised orbits against exact stick-slip, $M_f$ = {CHECK_M:g} N m")
+    exact.legend(fontsize=7)
+    zetas = [100 * k["zeta"] for k in result["kappa"]]
+    kappa.semilogx(zetas[1:], [k["kappa"] for k in result["kappa"][1:]], "o-",
+                   color=draw.STABLE, label="with friction (regularised)")
+    kappa.axhline(result["kappa"][0]["kappa"], color=draw.UNSTABLE, linestyle="--",
+                  label="without friction")
+    kappa.set_xlabel(r"friction as damping ratio $M_f r_s / (v_\varepsilon c_{crit})$ [%]")
+    kappa.set_ylabel(r"$\kappa^*$ (eq. 17)")
+    kappa.set_title(r"(d) $\kappa^*$: straight rolling sees the friction as a damper")
+    kappa.legend(fontsize=7)
     draw.figure_title(fig, r"Seal friction: critical $M_f^*$ of the low-speed shimmy, "
                       r"$F^*$ = 1, $\epsilon = 0.1\,y_{fp}$" + gear.suffix())
     fig.tight_layout()
