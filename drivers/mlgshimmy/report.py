@@ -153,8 +153,9 @@ def tools():
 
 
 def collect_studies(root):
-    """[{"name", "command", "what", "texts": [(path, text)], "pngs": [path]}]
-    of the studies that were run (their files exist)."""
+    """[{"name", "command", "what", "texts": [(path, text)], "pngs": [path],
+    "notes": the lines under its table}] of the studies that were run (their
+    files exist)."""
     import glob
     out = []
     for name, command, what, texts, pngs in STUDIES:
@@ -165,7 +166,7 @@ def collect_studies(root):
                     found_texts.append((path, source.read()))
         found_pngs = [p for pattern in pngs for p in sorted(glob.glob(os.path.join(root, pattern)))]
         out.append({"name": name, "command": command, "what": what, "texts": found_texts,
-                    "pngs": found_pngs})
+                    "pngs": found_pngs, "notes": read_notes(name, root)})
     return out
 
 
@@ -414,6 +415,9 @@ pre { overflow-x: auto; font-size: 0.8em; background: #f8f8f8; padding: 0.5em; }
 def _study(study, images):
     parts = [f'<section id="study-{study["name"]}"><h2>{html.escape(study["name"])}</h2>',
              f"<p>{html.escape(study['what'])} <code>{html.escape(study['command'])}</code></p>"]
+    if study.get("notes"):   # what it found, in its numbers (the lines under its table)
+        parts.append("<ul>" + "".join(f"<li>{html.escape(n)}</li>" for n in study["notes"])
+                     + "</ul>")
     if not (study["texts"] or study["pngs"]):
         parts.append(f'<p class="missing">Not run: <code>{html.escape(study["command"])}</code>.'
                      "</p>")
