@@ -37,19 +37,24 @@ design-map:
 	    DESIGN_MARK=$(if $(strip $(RHO)$(MU)),$(call shell_quote,$(RHO)$(design_mark_comma)$(MU)))
 endif
 
-# Figures at a non-zero side-stay geometry with a regression reference, beside
-# sidestay_rho10_mu10 (mk/studies.mk): $(call geometry_reference,fig10,10,10)
-# makes the target fig10_rho10_mu10: `fig10 RHO=10 MU=10 EOM=2` in its geometry
-# tree, its runs copied to $(RUN_ROOT)/fig10_rho10_mu10/, where `make
-# regress-fig10_rho10_mu10` compares them with tests/reference/fig10_rho10_mu10/
-# (`make refs-fig10_rho10_mu10` writes that set).
-define geometry_reference
-.PHONY: $(1)_rho$(2)_mu$(3)
-$(1)_rho$(2)_mu$(3): $$(AUTO_DRIVER_DEPS)
-	$$(MAKE) --no-print-directory $(1) RHO=$(2) MU=$(3) EOM=2
-	set -e; rm -rf $$(RUN_ROOT)/$$@.tmp && cp -a $$(RUN_ROOT)/geometry/rho$(2)_mu$(3)_eom2/$(1) $$(RUN_ROOT)/$$@.tmp
+# Figures of another gear with a regression reference, beside
+# sidestay_rho10_mu10 (mk/studies.mk): $(call gear_reference,<target>,<fig>,<gear
+# variables>,<its tree>) makes the target: `<fig> <gear variables>` in the gear's
+# tree, its runs copied to $(RUN_ROOT)/<target>/, where `make regress-<target>`
+# compares them with tests/reference/<target>/ (`make refs-<target>` writes that
+# set).  $(call geometry_reference,fig10,10,10) is fig10_rho10_mu10: `fig10
+# RHO=10 MU=10 EOM=2`.
+define gear_reference
+.PHONY: $(1)
+$(1): $$(AUTO_DRIVER_DEPS)
+	$$(MAKE) --no-print-directory $(2) $(3)
+	set -e; rm -rf $$(RUN_ROOT)/$$@.tmp && cp -a $$(RUN_ROOT)/$(4)/$(2) $$(RUN_ROOT)/$$@.tmp
 	set -e; rm -rf $$(RUN_ROOT)/$$@ && mv $$(RUN_ROOT)/$$@.tmp $$(RUN_ROOT)/$$@
-REGRESS_FIGURES += $(1)_rho$(2)_mu$(3)
+REGRESS_FIGURES += $(1)
 endef
+geometry_reference = $(call gear_reference,$(1)_rho$(2)_mu$(3),$(1),RHO=$(2) MU=$(3) EOM=2,geometry/rho$(2)_mu$(3)_eom2)
 $(eval $(call geometry_reference,fig10,10,10))
 $(eval $(call geometry_reference,fig12,10,10))
+# Fig. 10 with oleo seal friction (docs/friction.md): M_fric = 5 N m at the
+# default v_fric = 1 mm/s, where H1 and H2 are subcritical
+$(eval $(call gear_reference,fig10_fric5,fig10,SET='M_fric=5',gear/M_fric_5))

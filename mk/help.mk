@@ -32,6 +32,7 @@ Regression and benchmarks
   regress-<fig>               5 s  one of them (regress-fig07; regress-fig11: 11 min)
   fig10_rho10_mu10           50 s  Fig. 10 at rho = mu = 10 deg, EOM 2, for its reference set
   fig12_rho10_mu10           20 s  Fig. 12 at rho = mu = 10 deg, EOM 2, for its reference set
+  fig10_fric5               3 min  Fig. 10 with seal friction M_fric = 5 N m, for its reference set
   refs, refs-<fig>                 regenerate reference sets, deliberately (as regress)
   bench                      15 s  the benchmark programs
   bench-figures            70 min  make -j1 figures against -j2; Fig. 11 and a design-map
