@@ -95,6 +95,8 @@ endef
 # critical friction moment of Fig. 10's low-frequency orbits, its v_fric
 # ladder and its freeplays; cached in $(RUN_ROOT)/friction/result.json.
 $(eval $(call cached_study,friction))
+# Fig. 10's diagram at three friction levels (studies.friction_fig10).
+$(eval $(call cached_study,friction_fig10))
 
 # Attractor atlas over (V, F*) by time simulation (studies.atlas); axes
 # "a,b,c" or "start:stop:step", one job per cell:
