@@ -195,7 +195,8 @@ def fold_in_speed_and_friction(rundir, tag, fold):
              for k in ("V", "M_fric", "psi_amp", "freq")}
     largest = numpy.max(curve["psi_amp"])
     for end in (0, -1):
-        frictionless = curve["M_fric"][end] <= floor * (1.0 + 1e-6)
+        # AUTO stops within its location tolerance of the floor (5.4e-6 seen)
+        frictionless = curve["M_fric"][end] <= floor * (1.0 + 1e-4)
         if curve["psi_amp"][end] > COLLAPSED_END * largest and not frictionless:
             raise RuntimeError(f"friction {tag}: the fold curve stops at V = "
                                f"{curve['V'][end]:.4g} m/s with the orbits' amplitude "
@@ -210,7 +211,8 @@ def case(tag, yfp, v_fric):
     rundir = paths.rundir(f"friction/{tag}")
     h1, h2, orbits, orbit = orbit_at_v0(rundir, tag, values)
     fold, level = fold_in_friction(rundir, tag, orbit)
-    checked = orbits_at_speeds(rundir, level) if yfp == 1.0 else None
+    # the law's check, made once at the paper's gear
+    checked = orbits_at_speeds(rundir, level) if yfp == 1.0 and gear.current().baseline else None
     curve = fold_in_speed_and_friction(rundir, tag, fold)
     k = int(numpy.argmax(curve["M_fric"]))
     if k in (0, len(curve["V"]) - 1):
@@ -292,7 +294,7 @@ def compute():
           + gear.suffix())
     found = [case(tag, *args) for tag, args in cases().items()]
     ladder = [c for c in found if c["yfp"] == 1.0]
-    return {"cases": found, "stick_slip": exact_check(ladder),
+    return {"cases": found, "stick_slip": exact_check(ladder) if gear.current().baseline else {},
             "kappa": kappa_against_friction()}
 
 
@@ -300,7 +302,7 @@ def check_rows(result):
     """[(V, v_fric, relative amplitude difference, relative frequency
     difference)] of every rung against the exact stick-slip."""
     rows = []
-    for c in sorted((c for c in result["cases"] if c["yfp"] == 1.0), key=lambda c: -c["v_fric"]):
+    for c in sorted((c for c in result["cases"] if c["at_check_m"]), key=lambda c: -c["v_fric"]):
         for V in CHECK_V:
             exact, regular = result["stick_slip"][str(V)], c["at_check_m"][str(V)]
             rows.append((V, c["v_fric"], regular["psi_amp"] / exact["psi_amp"] - 1.0,
@@ -337,24 +339,26 @@ def conclusions(result):
     numbers: the lines the report shows first."""
     finest = min((c for c in result["cases"] if c["yfp"] == 1.0), key=lambda c: c["v_fric"])
     zetas = [100 * c["zeta"] for c in result["cases"] if c["v_fric"] <= FREEPLAY_V]
+    band = (f"{min(zetas):.2g}" if f"{min(zetas):.2g}" == f"{max(zetas):.2g}"
+            else f"{min(zetas):.2g}-{max(zetas):.2g}")
     kappa = {k["zeta"]: k for k in result["kappa"]}
-    gap = max(max(abs(a), abs(f)) for _, v, a, f in check_rows(result)
-              if v == finest["v_fric"])
+    gaps = [max(abs(a), abs(f)) for _, v, a, f in check_rows(result) if v == finest["v_fric"]]
+    exact = [f"Exact stick-slip (simulator) against the regularised orbits at M_fric = "
+             f"{CHECK_M:g} N m, V = {', '.join(f'{v:g}' for v in CHECK_V)} m/s: amplitude and "
+             f"frequency within {max(gaps):.1g} (relative) at v_fric = {finest['v_fric']:g} m/s."
+             ] if gaps else []
     return [
         f"Low-speed shimmy (H1-H2, Fig. 10): no low-frequency orbit exists above M_f* = "
         f"{finest['critical'] / finest['yfp']:.3g} N m per mm of freeplay (F* = 1), a Coulomb "
-        f"damping ratio of {min(zetas):.2g}-{max(zetas):.2g} % of critical at every freeplay; "
+        f"damping ratio of {band} % of critical; "
         "SAE 902015 finds oleo friction below 1 % (severe) to above 10 % (favourable): "
         f"only seal friction below {max(zetas):.2g} % leaves the low-speed shimmy of Fig. 10.",
         f"Allowed freeplay, eq. (17): kappa* = {kappa[0.0]['kappa']:.3g} without friction; with "
         f"the regularised friction, a damper at straight rolling, {kappa[0.01]['kappa']:.3g} at "
-        f"1 % and {kappa[0.1]['kappa']:.3g} at 10 %, at most {kappa[max(kappa)]['kappa']:.3g} "
-        f"({kappa[max(kappa)]['mode']} mode: no damping moves it). In Coulomb's limit the "
-        "twist sticks at straight rolling and the linear criterion no longer measures the "
-        "shimmy: M_f* does.",
-        f"Exact stick-slip (simulator) against the regularised orbits at M_fric = {CHECK_M:g} "
-        f"N m, V = {', '.join(f'{v:g}' for v in CHECK_V)} m/s: amplitude and frequency within "
-        f"{gap:.1g} (relative) at v_fric = {finest['v_fric']:g} m/s."]
+        f"1 % and {kappa[0.1]['kappa']:.3g} at 10 %, {kappa[max(kappa)]['kappa']:.3g} at "
+        f"{100 * max(kappa):g} % (set by the {kappa[max(kappa)]['mode']} mode). In Coulomb's "
+        "limit the twist sticks at straight rolling and the linear criterion no longer measures "
+        "the shimmy: M_f* does."] + exact
 
 
 def plot(result):
@@ -383,14 +387,18 @@ def plot(result):
     trend.set_ylabel(r"$M_f^*$ [N m]")
     trend.set_title(r"(b) $M_f^*$ at $y_{fp}$ = 1 mm against $v_\varepsilon$")
     rows = check_rows(result)
-    for V in CHECK_V:
+    if not rows:
+        exact.text(0.5, 0.5, "the law's exact check is made\nat the paper's gear (make friction)",
+                   ha="center", va="center", transform=exact.transAxes)
+    for V in CHECK_V if rows else ():
         mine = [(v, abs(amp)) for at, v, amp, _ in rows if at == V]
         exact.loglog([v for v, _ in mine], [gap for _, gap in mine], "o-",
                      label=f"V = {V:g} m/s")
     exact.set_xlabel(r"regularisation speed $v_\varepsilon$ [m/s]")
     exact.set_ylabel(r"|orbit's $\psi$ amplitude / stick-slip's $-$ 1|")
     exact.set_title(rf"(c) regularised orbits against exact stick-slip, $M_f$ = {CHECK_M:g} N m")
-    exact.legend(fontsize=7)
+    if rows:
+        exact.legend(fontsize=7)
     zetas = [100 * k["zeta"] for k in result["kappa"]]
     kappa.semilogx(zetas[1:], [k["kappa"] for k in result["kappa"][1:]], "o-",
                    color=draw.STABLE, label="with friction (regularised)")
@@ -401,7 +409,7 @@ def plot(result):
     kappa.set_title(r"(d) $\kappa^*$: straight rolling sees the friction as a damper")
     kappa.legend(fontsize=7)
     draw.figure_title(fig, r"Seal friction: critical $M_f^*$ of the low-speed shimmy, "
-                      r"$F^*$ = 1, $\epsilon = 0.1\,y_{fp}$" + gear.suffix())
+                      r"$F^*$ = 1, $\epsilon = 0.1\,y_{fp}$")   # draw.save adds the gear
     fig.tight_layout()
     draw.save(fig, "friction")
 

@@ -100,7 +100,7 @@ def plot(result):
     axes[0].set_ylabel(r"torsional amplitude $\psi$ [deg]")
     draw.legend(fig)
     draw.figure_title(fig, r"Fig. 10 with seal friction ($v_\varepsilon$ = 1 mm/s): $F^*$ = 1, "
-                      r"$y_{fp}$ = 1 mm" + gear.suffix())
+                      r"$y_{fp}$ = 1 mm")   # draw.save adds the gear
     fig.tight_layout()
     draw.save(fig, "friction_fig10")
 
