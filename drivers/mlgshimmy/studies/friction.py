@@ -47,7 +47,7 @@ from mlgshimmy.shared import spectrum
 DECLARED = {
     "friction": {
         "help": "oleo seal friction: the critical M_fric of the low-speed shimmy, v_fric ladder",
-        "time": "8 min",
+        "time": "15 min",
         "report": {
             "command": "make friction",
             "text": ("Beyond the paper: the oleo seal friction moment above which Fig. 10's "
