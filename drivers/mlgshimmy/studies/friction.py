@@ -36,7 +36,7 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import magnitude
+from mlgshimmy.shared import kappa_criterion
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import naming
 from mlgshimmy.shared import paper
@@ -256,7 +256,7 @@ def equivalent_damping_ratio(values, moment, amplitude, freq):
 
 
 def kappa_against_friction():
-    """Eq. (17)'s kappa* (shared.magnitude.criterion) with the regularised
+    """Eq. (17)'s kappa* (shared.kappa_criterion.criterion) with the regularised
     friction at each damping ratio of KAPPA_ZETA: [{zeta, c_eq, M_fric,
     kappa, Fstar, V, mode}]."""
     critical = torsional_critical({**CONDITIONS, "yfp": 1.0, **gear.parameters()})
@@ -264,7 +264,7 @@ def kappa_against_friction():
     for zeta in KAPPA_ZETA:
         moment = zeta * critical * KAPPA_V / mlgmodel.Model("figures")["r_seal"]
         model = {**gear.parameters(), "M_fric": moment, "v_fric": KAPPA_V}
-        found = magnitude.criterion(model)
+        found = kappa_criterion.criterion(model)
         print(f"friction: kappa* = {found['kappa']:.4g} at damping ratio {zeta:g}", flush=True)
         out.append({"zeta": zeta, "c_eq": zeta * critical, "M_fric": moment, **found})
     return out

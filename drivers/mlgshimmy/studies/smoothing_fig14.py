@@ -80,7 +80,7 @@ def compute():
         except runerror.RunError as exc:
             print(f"{FIGURE}: eps = {eps:g} mm: the orbit in y_fp stops: {exc.brief}")
             orbit = None
-        out["widths"][f"{eps:g}"] = {"hopf_curves": yfp_runs.stored_curves(curves, ("yfp", "V")),
+        out["widths"][f"{eps:g}"] = {"hopf_curves": yfp_stored.stored_curves(curves, ("yfp", "V")),
                                      "orbit": orbit}
     law14 = {**model, "Fstar": yfp_runs.FSTAR, "eps_abs": 0.0, "eps_rel": 0.0,
              "freeplay_law": mlgmodel.LAWS.index("nonsmooth")}

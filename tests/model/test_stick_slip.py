@@ -4,11 +4,11 @@ Fig. 10's conditions (F* = 1, y_fp = 1 mm, eps = 0.1 y_fp), V = 10 m/s and
 M_fric = 5 N m, the settled shimmy of the tanh law converges onto the exact
 one as v_fric falls, and AUTO's regularised orbit agrees with it.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_stick_slip.py
+Run: /usr/bin/python3 -m pytest -q tests/model/test_stick_slip.py
 """
 import pytest
 
-from mlgshimmy.shared import autoglue, simulator
+from mlgshimmy.shared import rundirs, simulator
 from mlgshimmy.studies import friction
 
 FIG10 = {**friction.CONDITIONS, "yfp": 1.0}
@@ -41,7 +41,7 @@ def orbit(tmp_path_factory):
     """AUTO's regularised orbit at V0 and CHECK_M, v_fric = 3e-4 m/s."""
     rundir = str(tmp_path_factory.mktemp("stick_slip"))
     with pytest.MonkeyPatch.context() as mp:
-        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
         values = {**FIG10, "v_fric": 3e-4}
         _, _, _, start = friction.orbit_at_v0(rundir, "test", values)
         return friction.fold_in_friction(rundir, "test", start)[1]
