@@ -11,7 +11,6 @@ from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
-from mlgshimmy.shared import lyapunov
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import naming
 from mlgshimmy.shared import paper
@@ -54,19 +53,11 @@ def compute(parameter_set="figures", where="fig09"):
         return model, model.equilibrium()
     tests = [codim2.along_hopf_curve(list(zip(b["V"], b["Fstar"])), at)
              for c in curves for b in c]
-    kinks = [kink(*at(V, F)) for c in curves for b in c for V, F in zip(b["V"], b["Fstar"])]
+    kinks = [codim2.kink(*at(V, F)) for c in curves for b in c for V, F in zip(b["V"], b["Fstar"])]
     named = [naming.named_points([(V, None)], [], parameter_set, "V", Fstar=Fstar,
                                  **gear.parameters())[0] for Fstar, V in ends]
     return {"curves": [jobs.stored(c, ("V", "Fstar")) for c in curves], "ends": ends,
             "tests": tests, "named": named, "kinks": kinks}
-
-
-def kink(model, u):
-    """(Re a2, psi amplitude up to which it decides) at a point of the curve
-    (lyapunov.kink_coefficient, naming.SEEN)."""
-    hopf = lyapunov.first_lyapunov(model, u)
-    a2 = lyapunov.kink_coefficient(model, u, hopf).real
-    return a2, 2 * abs(hopf.q[0]) * abs(a2) / (hopf.omega * abs(hopf.l1))
 
 
 def about(result):

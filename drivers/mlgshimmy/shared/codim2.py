@@ -13,7 +13,7 @@ Bifurcation Theory, 3rd ed., sections 8.3-8.5 and 10.2):
       reaches the imaginary axis.
 
     found = along_hopf_curve(points, at)
-    found["points"]    # [{"type": "GH", "a": V, "b": F*, "omega", "l1"}]
+    found["points"]    # [{"type": "GH", "a": V, "b": F*, "omega", "l1", ...}]
     found["l1"]        # l1 at each stored point
 
 points: [(a, b)] of the curve in its two parameters, in order; at(a, b)
@@ -22,7 +22,11 @@ sign change between two stored points is bisected along the segment
 joining them, each trial point moved back onto the curve along the
 segment's normal (Re of the critical pair = 0), until the segment is
 TOL of the curve's extent.  l2 at a GH point is not computed (it needs
-fifth derivatives).
+fifth derivatives): its sign data instead, dl1/db between the stored points
+that bracket it (the side of the GH point where the Hopf points are
+subcritical).  kink(model, u): the oleo kink's a2 at a point of the curve
+(where the mode moves eta', a2 decides the criticality up to an amplitude,
+and l1 = 0 is then the one-sided expansion's).
 """
 from typing import Callable, Dict, List, Sequence, Tuple
 
@@ -32,6 +36,14 @@ from mlgshimmy.shared import lyapunov, spectrum
 
 TOL = 1e-8       # of the curve's extent in each parameter
 TYPES = ("GH", "BT", "ZH", "HH")
+
+
+def kink(model, u):
+    """(Re a2, the psi amplitude up to which it decides) at a Hopf point of
+    the curve (lyapunov.kink_coefficient, lyapunov.kink_amplitude)."""
+    hopf = lyapunov.first_lyapunov(model, u)
+    a2 = lyapunov.kink_coefficient(model, u, hopf)
+    return float(a2.real), lyapunov.kink_amplitude(hopf, a2)
 
 
 def _pair_sums(eig):
@@ -130,7 +142,12 @@ def along_hopf_curve(points: Sequence[Tuple[float, float]], at: Callable,
             if numpy.sign(values[k][kind]) * numpy.sign(values[k + 1][kind]) < 0:
                 a, b = locate(at, points[k], points[k + 1], kind, scale, along)
                 there = tests(*at(a, b))
-                found.append({"type": kind, "a": a, "b": b, "omega": there["omega"],
-                              "l1": there["GH"]})
+                point = {"type": kind, "a": a, "b": b, "omega": there["omega"],
+                         "l1": there["GH"]}
+                if kind == "GH":
+                    rise = values[k + 1]["GH"] - values[k]["GH"]
+                    step = points[k + 1][1] - points[k][1]
+                    point["dl1_db"] = rise / step if step else numpy.copysign(numpy.inf, rise)
+                found.append(point)
     return {"l1": [v["GH"] for v in values], "omega": [v["omega"] for v in values],
             "points": found}

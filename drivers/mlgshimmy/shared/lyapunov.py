@@ -199,6 +199,13 @@ def kink_coefficient(model, u, hopf: Hopf, steps: int = KINK_STEPS) -> complex:
     return complex(numpy.mean(terms))
 
 
+def kink_amplitude(hopf: Hopf, a2: complex) -> float:
+    """The psi amplitude up to which the kink's quadratic term Re(a2) r^2
+    outweighs the cubic omega l1 r^3 (r' = mu r + Re(a2) r^2 + omega l1 r^3,
+    psi = 2 |q_psi| r): 2 |q_psi| |Re a2| / (omega |l1|)."""
+    return float(2 * abs(hopf.q[0]) * abs(a2.real) / (hopf.omega * abs(hopf.l1)))
+
+
 def amplitude(hopf: Hopf, mu: float) -> numpy.ndarray:
     """Half the peak-to-peak swing of each state, to leading order, on the
     orbit where the pair's real part is mu: the normal form

@@ -19,7 +19,9 @@ import numpy
 
 from mlgshimmy.figures.fig11.curves import (slice_hopf_curves, stage_switch, stored_curves,
                                             upper_fold_curves)
-from mlgshimmy.figures.fig11.ends import closing_segments, explained, joins_outside, mx_ends
+from mlgshimmy.figures.fig11 import located
+from mlgshimmy.figures.fig11.ends import (FOLD_TOL, closing_segments, explained, joins_outside,
+                                          mx_ends, on_hopf_locus)
 from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, liftoff_edge,
                                                   liftoff_end, liftoff_speed)
 from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits,
@@ -28,6 +30,7 @@ from mlgshimmy.figures.fig11.plane import F_GRID, SLICES, V_GRID, on_curves
 from mlgshimmy.figures.fig11.regions import (ATTRACTORS, BAND, PIECE_DISAGREEMENT, curve_list,
                                                 region_map, region_name, slice_codes, yaw_stable)
 from mlgshimmy.figures.fig11.tori import PINNED, TONGUE_TOL, tongue_curve, tongue_parts, torus_curves
+from mlgshimmy.shared import codim2
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import liftoff
 
@@ -85,7 +88,11 @@ def compute(parts):
     joins, stops = mx_ends(drawn)
     switch = stage_switch()
     joins = joins_outside(joins, switch)
-    ends = explained(stops, switch, lift, [jobs.loaded(d) for d in drawn["fold"]])
+    special = located.points(drawn)
+    ends = explained(stops, switch, lift, [jobs.loaded(d) for d in drawn["fold"]],
+                     at_gh=located.at_gh(special, FOLD_TOL))
+    heuristic = explained(stops, switch, lift, at_gh=on_hopf_locus)["generalised_hopf"]
+    notes = located.lines(special, switch) + gh_ends_compared(heuristic, ends["generalised_hopf"])
     edges += closing_segments(ends["liftoff"], lift)
     found, check = region_map(numpy.asarray(parts["grid"], dtype=bool), orbits, edges,
                               numpy.asarray(parts["yaw"], dtype=bool), lift)
@@ -96,7 +103,7 @@ def compute(parts):
     print(f"fig11: {check['disagree']} of {check['samples']} slice samples disagree with "
           "their region's label")
     for kind, why in (("stage_switch", "inside the oleo stage switch"),
-                      ("generalised_hopf", "on the Hopf locus (generalised Hopf point)"),
+                      ("generalised_hopf", "at a located generalised Hopf point"),
                       ("on_fold", "on a fold curve"),
                       ("liftoff", "at the lift-off edge"), ("open", "")):
         for stop in ends[kind]:
@@ -109,8 +116,8 @@ def compute(parts):
     # it (a tighter tolerance: the edge is nearly flat, dV/dF* ~ 850 m/s)
     tongue = [jobs.loaded(d) for d in drawn["tongue"]]
     points = [p for p in parts["torus"]["points"] if not on_curves(p, tongue, TONGUE_TOL)]
-    return {"numbers": numbers(pitchforks, stored, drawn, points, lift, check, ends),
-            "curves": drawn, "torus_points": points,
+    return {"numbers": numbers(pitchforks, stored, drawn, points, lift, check, ends, special),
+            "curves": drawn, "torus_points": points, "codim2": special, "codim2_notes": notes,
             "pitchfork": stored["pitchfork"], "mx_joins": joins,
             **({"stationary_folds": stored["stationary_folds"]}
                if "stationary_folds" in stored else {}),
@@ -123,7 +130,22 @@ def compute(parts):
             "region_map": {"V": V_GRID, "Fstar": F_GRID, "code": found, "names": names}}
 
 
-def numbers(pitchforks, stored, drawn, points, lift, check, ends):
+def gh_ends_compared(on_locus, at_gh):
+    """Lines comparing the fold curves' ends named GH by a located point
+    (`at_gh`) with those the Hopf-locus test (ends.GH_RATE) names
+    (`on_locus`; ends inside the stage switch are neither)."""
+    both = [s for s in on_locus if s in at_gh]
+    lines = [f"fold curve ends on the Hopf locus (GH_RATE): {len(on_locus)}; at a located GH "
+             f"point (within {FOLD_TOL:g}): {len(at_gh)}; both: {len(both)}"]
+    lines += [f"{s['curve']} ends at V = {s['V']:.5g}, F* = {s['Fstar']:.5g} on the Hopf locus "
+              "with no GH point located there: reported as a stop" for s in on_locus
+              if s not in at_gh]
+    lines += [f"{s['curve']} ends at V = {s['V']:.5g}, F* = {s['Fstar']:.5g} at a located GH "
+              "point off the Hopf locus test" for s in at_gh if s not in on_locus]
+    return lines
+
+
+def numbers(pitchforks, stored, drawn, points, lift, check, ends, special):
     """The figure's table (shared.paper.report; a side-stay geometry's
     beside the baseline's): the pitchfork loads (with side-stay angles the
     folds of the yawed states they became), the lift-off edge, how many
@@ -145,7 +167,9 @@ def numbers(pitchforks, stored, drawn, points, lift, check, ends):
                 "slice samples off their region": check["disagree"],
                 "MX stops on drawn curves": len(ends["open"]),
                 "curve ends inside the stage switch": len(ends["stage_switch"]),
-                "fold curve ends on the Hopf locus": len(ends["generalised_hopf"]),
+                "fold curve ends at a generalised Hopf point": len(ends["generalised_hopf"]),
                 "torus curve ends on a fold curve": len(ends["on_fold"]),
                 "curve ends at the lift-off edge": len(ends["liftoff"])})
+    out.update({f"{kind} points on the Hopf curves": sum(p["type"] == kind for p in special)
+                for kind in codim2.TYPES})
     return out

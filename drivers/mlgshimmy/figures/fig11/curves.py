@@ -5,6 +5,7 @@ import functools
 
 import numpy
 
+from mlgshimmy.figures.fig11 import ends
 from mlgshimmy.figures.fig11.ends import SWITCH_WIDTHS, explained
 from mlgshimmy.figures.fig11.orbits import ROLLING, slice_rundir
 from mlgshimmy.figures.fig11.plane import (GEOMETRY, MODEL, F_MAX, F_MIN, SLICES, STOP, V_SCAN,
@@ -38,9 +39,10 @@ def fold_curve(rundir, name, point, sign, **kw):
 
 
 def fold_end_explained(point, _parameter):
-    """Whether a fold curve's MX point is an end ends.explained accounts for."""
+    """Whether a fold curve's MX point is an end ends.explained accounts for
+    (on the Hopf locus counts: the GH points are located after the curves)."""
     stop = {"V": point["V"], "Fstar": point["Fstar"], "curve": "fold"}
-    return not explained([stop], stage_switch(), None)["open"]
+    return not explained([stop], stage_switch(), None, at_gh=ends.on_hopf_locus)["open"]
 
 
 FOLD_ENDS = ct.Ends(fold_end_explained, "neither inside the stage switch nor on the Hopf "

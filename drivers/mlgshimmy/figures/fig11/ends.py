@@ -1,8 +1,8 @@
 """Where Fig. 11's drawn curves end inside the plane (AUTO's MX stops):
 two curves of one kind meeting at one point (mx_ends), an end inside the
-oleo's stage switch, a fold curve's end on the Hopf locus, a torus curve's
-end on a fold curve, an end at the lift-off edge (explained), and the
-others, drawn as MX crosses."""
+oleo's stage switch, a fold curve's end at a generalised Hopf point, a
+torus curve's end on a fold curve, an end at the lift-off edge
+(explained), and the others, drawn as MX crosses."""
 import numpy
 
 from mlgshimmy.figures.fig11.plane import (F_MAX, F_MIN, FREEPLAY, GEOMETRY, V_MAX, V_MIN,
@@ -70,10 +70,12 @@ SWITCH_WIDTHS = 10.0
 # quasi-periodic region against the high-frequency one beside it
 CLOSE_TOL = 0.02
 # A fold curve's MX end where straight rolling has a complex pair with a
-# real part below this [1/s] is a generalised Hopf point: the fold's orbits
+# real part below this [1/s] lies on the Hopf locus: the fold's orbits
 # shrink onto straight rolling there and AUTO cannot go on (rho = mu = 10
 # deg, F* = 0.0263 and 1.444: psi amplitude 1e-6 at the ends, the pair's
-# real part -0.017 and +0.017 /s 0.5 m/s either side)
+# real part -0.017 and +0.017 /s 0.5 m/s either side).  While the curve is
+# continued this ends it (curves.FOLD_ENDS); the figure names such an end a
+# generalised Hopf point only where one is located (located.at_gh)
 GH_RATE = 1e-3
 # A torus curve's MX end this close (in V/V_MAX, F*/F_MAX) to a fold curve
 # lies on it: where the orbits' complex Floquet pair meets the fold's
@@ -113,19 +115,21 @@ def nearest_on_edge(stop, lift):
     return float(d[k]), k
 
 
-def explained(stops, switch, lift, folds=()):
+def explained(stops, switch, lift, folds=(), at_gh=None):
     """The MX ends that are no two curves' meeting (mx_ends' open list)
     sorted: {"stage_switch": those with F* inside the window `switch`
     ((F*_enter, F*_leave) or None), "generalised_hopf": ends of fold curves
-    on the Hopf locus of straight rolling (on_hopf_locus), "on_fold": ends
-    of torus curves within FOLD_TOL of a fold curve (`folds`: lists of
-    branches), "liftoff": those within CLOSE_TOL of the lift-off edge
-    `lift` (liftoff_edge, or None), "open": the rest}."""
+    where the predicate `at_gh` holds (on_hopf_locus while a curve is
+    continued; within FOLD_TOL of a located GH point in the figure,
+    located.at_gh; None: no fold end is),
+    "on_fold": ends of torus curves within FOLD_TOL of a fold curve
+    (`folds`: lists of branches), "liftoff": those within CLOSE_TOL of the
+    lift-off edge `lift` (liftoff_edge, or None), "open": the rest}."""
     out = {"stage_switch": [], "generalised_hopf": [], "on_fold": [], "liftoff": [], "open": []}
     for stop in stops:
         if inside(switch, stop["Fstar"]):
             out["stage_switch"].append(stop)
-        elif stop["curve"].startswith("fold") and on_hopf_locus(stop):
+        elif stop["curve"].startswith("fold") and at_gh and at_gh(stop):
             out["generalised_hopf"].append(stop)
         elif stop["curve"].startswith(("torus", "tongue")) and on_curves(stop, folds, FOLD_TOL):
             out["on_fold"].append(stop)

@@ -137,6 +137,8 @@ def plot(result: Dict[str, Any]) -> None:
         ax.plot(V, F, "D", mfc=palette.OPEN, mec=palette.NEUTRAL, ms=4.5, zorder=6)
     # special points marked with draw.mark (e.g. codimension-two points on
     # the curves) follow under their own names
+    for point in result["codim2"]:
+        draw.mark(ax, point["V"], point["Fstar"], point["type"])
     points = draw.point_handles(draw.marked_kinds(ax))
     ax.set_xlim(0, V_MAX)
     ax.set_ylim(0, F_MAX)
@@ -157,4 +159,4 @@ def plot(result: Dict[str, Any]) -> None:
                           "settles on, and the curves that bound it")
     write_text(os.path.join(paths.figures_dir(), CAPTION), caption(result, ends))
     draw.save(fig, "fig11")
-    paper.report("fig11", result["numbers"])
+    paper.report("fig11", result["numbers"], notes=result["codim2_notes"])

@@ -1,0 +1,103 @@
+"""Fig. 11's codimension-two points: those shared.codim2 locates on every
+drawn Hopf curve of straight rolling (GH, BT, ZH, HH; the zero-freeplay
+curve too), each once, and the fold curves' ends they explain."""
+import numpy
+
+from mlgshimmy.figures.fig11.ends import inside
+from mlgshimmy.figures.fig11.orbits import ROLLING
+from mlgshimmy.figures.fig11.plane import F_MAX, GEOMETRY, MODEL, V_MAX
+from mlgshimmy.shared import codim2
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import jobs
+from mlgshimmy.shared import mlgmodel
+
+# Two located points of one type this close (in V/V_MAX, F*/F_MAX) are one:
+# a curve's two directions share their start, and a slice's Hopf curve may
+# retrace part of another (codim2 locates to 1e-8 of a curve's extent)
+SAME = 1e-5
+ZERO_FREEPLAY = {**GEOMETRY, "yfp": 0.0}
+# |Re a2| below this is rounding: the modes of the paper's gear leave eta'
+# alone (a2 ~ 1e-17 at H1-H3, naming.KINK_NOISE)
+A2_NOISE = 1e-12
+
+
+def model_at(values, rolling):
+    """at(V, F*) -> (model, straight rolling) for codim2: the state the
+    figure's solvers start from (orbits.ROLLING, continued from zero
+    freeplay) where there is one, else the library's Newton solve."""
+    def at(V, Fstar):
+        model = mlgmodel.Model("figures", V=V, Fstar=Fstar, **values)
+        return model, (rolling(Fstar) if rolling else model.equilibrium())
+    return at
+
+
+def _plain(point, curve, at):
+    """A located point as the cache stores it (no NaN: None), a GH point
+    with the oleo kink's a2 there (codim2.kink)."""
+    out = {"type": point["type"], "V": point["a"], "Fstar": point["b"], "curve": curve}
+    if point["type"] == "GH":
+        point = dict(point)
+        point["a2"], _ = codim2.kink(*at(point["a"], point["b"]))
+    for key in ("omega", "l1", "dl1_db", "a2"):
+        if key in point:
+            out[key] = None if not numpy.isfinite(point[key]) else float(point[key])
+    return out
+
+
+def points(drawn):
+    """[{"type", "V", "Fstar", "curve", "omega", "l1", and at GH "dl1_db",
+    "a2"}] on the drawn Hopf curves ({"hopf": [...], "zero":
+    [...]}, stored diagrams), in V; a branch codim2 cannot follow is
+    reported and left out."""
+    found = []
+    for kind, at in (("hopf", model_at(MODEL, ROLLING)), ("zero", model_at(ZERO_FREEPLAY, None))):
+        for n, diagram in enumerate(drawn.get(kind, [])):
+            for branch in jobs.loaded(diagram):
+                curve = f"{kind}{n + 1}"
+                result = ct.reported(f"fig11 codimension-two points on {curve}", lambda: (
+                    codim2.along_hopf_curve(list(zip(branch["V"], branch["Fstar"])), at)),
+                    errors=(RuntimeError, numpy.linalg.LinAlgError))
+                found += [_plain(p, curve, at) for p in (result or {"points": []})["points"]]
+    kept = []
+    for p in sorted(found, key=lambda p: (p["V"], p["Fstar"])):
+        if not any(q["type"] == p["type"] and distance(p, q) < SAME for q in kept):
+            kept.append(p)
+    return kept
+
+
+def distance(p, q):
+    """Distance of two (V, F*) points in V/V_MAX, F*/F_MAX."""
+    return float(numpy.hypot((p["V"] - q["V"]) / V_MAX, (p["Fstar"] - q["Fstar"]) / F_MAX))
+
+
+def at_gh(located, tol):
+    """A predicate for ends.explained: whether a curve's end lies within
+    `tol` of a located GH point."""
+    return lambda stop: any(p["type"] == "GH" and distance(p, stop) < tol for p in located)
+
+
+def coefficient(p):
+    """The point's coefficient as the table writes it: at GH the sign data
+    (l2 is not computed: codim2) and the oleo kink's a2 where it is more
+    than rounding (A2_NOISE; at l1 = 0 a nonzero a2 is the leading term:
+    the point is then the one-sided expansion's GH)."""
+    if p["type"] == "GH":
+        side = "F* above" if (p["dl1_db"] or 0.0) > 0 else "F* below"
+        text = f"l2 not computed; dl1/dF* = {p['dl1_db']:+.3g} (subcritical for {side})"
+        if abs(p["a2"] or 0.0) > A2_NOISE:
+            text += f"; the oleo's kink: Re a2 = {p['a2']:+.3g}"
+        return text
+    if p["type"] in ("ZH", "HH"):
+        return f"omega = {p['omega']:.5g} rad/s, l1 = " + (
+            "none" if p["l1"] is None else f"{p['l1']:+.4g}")
+    return "omega -> 0"
+
+
+def lines(located, switch):
+    """The table's lines, one per located point; those inside the stage
+    switch's window `switch` (ends.inside) say so: l1 swings there with
+    the switch's stiffness, smoothed over 1e-5 m."""
+    return [f"{p['type']} on {p['curve']} at V = {p['V']:.6g} m/s, F* = {p['Fstar']:.6g}"
+            f"{' (inside the oleo stage switch)' if inside(switch, p['Fstar']) else ''}: "
+            f"{coefficient(p)}" for p in located] or ["codimension-two points on the Hopf "
+                                                      "curves (codim2): none"]
