@@ -1,10 +1,12 @@
 """Tests of shared/codim2.py: codimension-two points located on Hopf
-curves of systems where they are known in closed form, then on Fig. 9's
-zero-freeplay Hopf curve of the paper's gear, which has none."""
+curves and a cusp on a fold curve of systems where they are known in
+closed form, then on Fig. 9's zero-freeplay Hopf curve of the paper's gear,
+which has none, and a GH point on a Hopf curve of the gear with side-stay
+angles against l1 bisected along it."""
 import numpy as np
 import pytest
 
-from mlgshimmy.shared import codim2, continuation, mlgmodel, spectrum
+from mlgshimmy.shared import codim2, continuation, lyapunov, mlgmodel, rolling, spectrum
 
 
 class Cubic:
@@ -100,3 +102,93 @@ def test_fig09_hopf_curve_is_supercritical_throughout():
     assert max(found["l1"]) < 0 and found["points"] == []
     assert found["l1"][0] == pytest.approx(-1.2e-4, rel=0.05)
     assert found["l1"][-1] == pytest.approx(-1.26e-6, rel=0.05)
+
+
+class Cusp:
+    """x' = a + b x - x^3, y' = -y: its folds x^2 = b / 3 lie on the curve
+    (a, b) = (-2 x^3, 3 x^2), a cusp at the origin; there A q = 0 for
+    q = (1, 0), p = (1, 0), and <p, B(q, q)> / 2 = -3 x."""
+
+    def __init__(self, a, b):
+        self.a, self.b = a, b
+
+    def rhs(self, u):
+        return np.array([self.a + self.b * u[0] - u[0] ** 3, -u[1]])
+
+    def jacobian(self, u):
+        return np.array([[self.b - 3 * u[0] ** 2, 0.0], [0.0, -1.0]])
+
+    def second_form(self, u, x, y):
+        return np.array([-6 * u[0] * x[0] * y[0], 0.0])
+
+
+def test_cusp_located_on_a_fold_curve_of_equilibria():
+    """Stored folds at x = -0.5 ... 0.5 (none at 0): a = -3 x along the curve
+    to rounding (q oriented by continuity), the cusp located by bisection
+    with each trial point put back on the fold curve by Newton normal to
+    the chord in (x, y, a, b)."""
+    x = np.linspace(-0.5, 0.5, 8)
+    points = [(-2 * v ** 3, 3 * v ** 2, (v, 0.0)) for v in x]
+    found = codim2.along_fold_curve(points, Cusp)
+    assert np.abs(found["a"]) == pytest.approx(3 * np.abs(x), rel=1e-12)
+    assert np.sign(found["a"][0]) == -np.sign(found["a"][-1])   # one orientation along it
+    cusp, = found["points"]
+    assert cusp["type"] == "CP"
+    # located in (x, a, b), where the curve is smooth: x to 1e-8 of its extent
+    assert cusp["u"] == pytest.approx([0.0, 0.0], abs=1e-8)
+    assert (cusp["a"], cusp["b"]) == pytest.approx((0.0, 0.0), abs=1e-12)
+
+
+def test_a_fold_curve_without_a_cusp_has_none():
+    """The curve's upper half alone (x > 0): a = -3 x < 0 throughout."""
+    x = np.linspace(0.1, 0.5, 5)
+    found = codim2.along_fold_curve([(-2 * v ** 3, 3 * v ** 2, (v, 0.0)) for v in x], Cusp)
+    assert found["points"] == [] and len(set(np.sign(found["a"]))) == 1
+
+
+SIDE_STAY = {"rho": np.radians(15.0), "mu": np.radians(-5.0), "eom_terms": 2.0}
+FREEPLAY = {"yfp": 1.0, "eps_rel": 0.1}
+
+
+def straight(Fstar):
+    """Straight rolling continued from zero freeplay (Fig. 11's start at
+    side-stay angles: Newton from psi = 0 can miss it at light load)."""
+    return rolling.state("figures", Fstar, 1.0, {"eps_abs": 0.0, "eps_rel": 0.1}, **SIDE_STAY)
+
+
+def side_stay_at(V, Fstar):
+    return mlgmodel.Model("figures", V=V, Fstar=Fstar, **FREEPLAY, **SIDE_STAY), straight(Fstar)
+
+
+def hopf_speed(Fstar):
+    """The Hopf point of straight rolling in V = 125-140 m/s at this load
+    (eigenvalue scan, bisected)."""
+    V, = spectrum.hopf_scan("figures", "V", np.linspace(125.0, 140.0, 16),
+                            state=lambda V: straight(Fstar), Fstar=Fstar,
+                            **FREEPLAY, **SIDE_STAY)
+    return V[0]
+
+
+def test_gh_on_a_side_stay_hopf_curve_agrees_with_l1_bisected_along_it():
+    """(rho, mu) = (15, -5) deg: the Hopf curve of the high-frequency pair
+    near F* = 0.028, V = 133.5 m/s, where Fig. 11 at this geometry has a
+    fold curve of orbits end.  codim2 locates GH between its points at
+    F* = 0.024 ... 0.032; l1 of the Hopf point at each load, bisected in
+    F* directly, gives the same point.  Tolerance: l1 near its zero carries
+    noise of about 1e-5 (the rolling state is a Newton solve per load, and
+    the freeplay corners make l1 sensitive to it) against dl1/dF* = -7.3,
+    about 1.4e-6 in F*; dV/dF* = -400 m/s, so 1e-3 m/s in V."""
+    loads = (0.024, 0.026, 0.028, 0.030, 0.032)
+    found = codim2.along_hopf_curve([(hopf_speed(F), F) for F in loads], side_stay_at)
+    gh, = found["points"]
+    assert gh["type"] == "GH"
+
+    def l1(F):
+        return lyapunov.first_lyapunov(*side_stay_at(hopf_speed(F), F)).l1
+    direct = spectrum.bisect(lambda F: l1(F) > 0, 0.026, 0.028, tol=1e-10)
+    assert gh["b"] == pytest.approx(direct, abs=2e-6)
+    assert gh["a"] == pytest.approx(hopf_speed(direct), abs=1e-3)
+    # the sign data beside it: l1's slope over the bracket against the
+    # central difference at the point (l1 is nearly linear over 0.002)
+    slope = (l1(direct + 1e-4) - l1(direct - 1e-4)) / 2e-4
+    assert slope < 0 and gh["dl1_db"] == pytest.approx(slope, rel=0.05)

@@ -16,15 +16,24 @@ Bifurcation Theory, 3rd ed., sections 8.3-8.5 and 10.2):
     found["points"]    # [{"type": "GH", "a": V, "b": F*, "omega", "l1", ...}]
     found["l1"]        # l1 at each stored point
 
+and on a computed curve of folds of equilibria (section 8.2):
+
+  CP  cusp: a = <p, B(q, q)> / 2, the fold's quadratic normal-form
+      coefficient (A q = 0, A^T p = 0, <p, q> = 1, q oriented along the
+      curve), changes sign.
+
+    found = along_fold_curve(points, at)   # points: [(a, b, state)]
+    found["points"]    # [{"type": "CP", "a", "b", "u"}]
+    found["a"]         # a at each stored point
+
 points: [(a, b)] of the curve in its two parameters, in order; at(a, b)
 -> (model, u): the mlgmodel.Model and straight rolling's state there.  A
 sign change between two stored points is bisected along the segment
 joining them, each trial point moved back onto the curve along the
 segment's normal (Re of the critical pair = 0), until the segment is
 TOL of the curve's extent.  l2 at a GH point is not computed (it needs
-fifth derivatives): its sign data instead, dl1/db between the stored points
-that bracket it (the side of the GH point where the Hopf points are
-subcritical).  kink(model, u): the oleo kink's a2 at a point of the curve
+fifth derivatives): its sign data instead, dl1/db across it (_slope: the
+side of the GH point where the Hopf points are subcritical).  kink(model, u): the oleo kink's a2 at a point of the curve
 (where the mode moves eta', a2 decides the criticality up to an amplitude,
 and l1 = 0 is then the one-sided expansion's).
 """
@@ -116,13 +125,30 @@ def _onto_curve(at, p0, p1, s, scale, along):
     return tuple(((base + t * move) * scale).tolist())
 
 
-def locate(at, p0, p1, kind: str, scale, along: int) -> Tuple[float, float]:
-    """The point between stored points p0 and p1 where test `kind` is 0."""
+def locate(at, p0, p1, kind: str, scale, along: int) -> Tuple[float, float, float]:
+    """(a, b, s): the point between stored points p0 and p1 where test
+    `kind` is 0, and its place s along the segment."""
     def sign(s):
         return numpy.sign(tests(*at(*_onto_curve(at, p0, p1, s, scale, along)))[kind])
     first = sign(0.0)
     s = spectrum.bisect(lambda s: sign(s) == first, 0.0, 1.0, tol=TOL)
-    return _onto_curve(at, p0, p1, s, scale, along)
+    return (*_onto_curve(at, p0, p1, s, scale, along), s)
+
+
+# l1's slope at a GH point: from the curve's points this fraction of the
+# segment either side (l1 carries noise ~1e-5 from the rolling state at
+# side-stay angles; over 5 % of a 0.002 segment in F* that is 5 % of a
+# slope of 10)
+SLOPE_SPAN = 0.05
+
+
+def _slope(at, p0, p1, s, scale, along) -> float:
+    """dl1/db at the curve's point at s on the segment p0-p1, by l1 at its
+    points SLOPE_SPAN of the segment either side."""
+    ends = [_onto_curve(at, p0, p1, t, scale, along)
+            for t in (s - SLOPE_SPAN, s + SLOPE_SPAN)]
+    l1 = [tests(*at(*e))["GH"] for e in ends]
+    return float((l1[1] - l1[0]) / (ends[1][1] - ends[0][1]))
 
 
 def along_hopf_curve(points: Sequence[Tuple[float, float]], at: Callable,
@@ -140,14 +166,108 @@ def along_hopf_curve(points: Sequence[Tuple[float, float]], at: Callable,
     for k in range(len(points) - 1):
         for kind in TYPES:
             if numpy.sign(values[k][kind]) * numpy.sign(values[k + 1][kind]) < 0:
-                a, b = locate(at, points[k], points[k + 1], kind, scale, along)
+                a, b, s = locate(at, points[k], points[k + 1], kind, scale, along)
                 there = tests(*at(a, b))
                 point = {"type": kind, "a": a, "b": b, "omega": there["omega"],
                          "l1": there["GH"]}
                 if kind == "GH":
-                    rise = values[k + 1]["GH"] - values[k]["GH"]
-                    step = points[k + 1][1] - points[k][1]
-                    point["dl1_db"] = rise / step if step else numpy.copysign(numpy.inf, rise)
+                    point["dl1_db"] = _slope(at, points[k], points[k + 1], s, scale, along)
                 found.append(point)
     return {"l1": [v["GH"] for v in values], "omega": [v["omega"] for v in values],
             "points": found}
+
+
+# Newton on a fold curve of equilibria (_onto_fold): steps and stop
+NEWTON_STEPS = 30
+NEWTON_TOL = 1e-11      # max-norm of the residual (f, g)
+FD_STEP = 1e-7          # step of the residual's difference Jacobian, scaled coordinates
+
+
+def _null_vectors(A, ref=None):
+    """(q, p): A q ~ 0 for the eigenvalue nearest 0 (|q| = 1, oriented as
+    `ref` where given), A^T p ~ 0, <p, q> = 1 (real at a fold)."""
+    eig, vec = numpy.linalg.eig(A)
+    q = vec[:, numpy.argmin(numpy.abs(eig))].real
+    q /= numpy.linalg.norm(q)
+    if ref is not None and numpy.dot(q, ref) < 0:
+        q = -q
+    eig_t, vec_t = numpy.linalg.eig(A.T)
+    p = vec_t[:, numpy.argmin(numpy.abs(eig_t))].real
+    return q, p / numpy.dot(p, q)
+
+
+def fold_coefficient(model, u, ref=None) -> Tuple[float, numpy.ndarray]:
+    """(a, q) at a fold of equilibria: a = <p, B(q, q)> / 2, the quadratic
+    coefficient on the centre manifold (Kuznetsov, section 5.4), q oriented
+    as `ref`; zero at a cusp (section 8.2)."""
+    q, p = _null_vectors(numpy.asarray(model.jacobian(u)), ref)
+    return 0.5 * float(numpy.dot(p, model.second_form(u, q, q))), q
+
+
+def _singularity(A, q, p):
+    """g of the bordered system [[A, p], [q^T, 0]] [v; g] = [0; 1]: zero
+    exactly where A is singular (Kuznetsov, section 10.2)."""
+    n = len(q)
+    M = numpy.zeros((n + 1, n + 1))
+    M[:n, :n], M[:n, n], M[n, :n] = A, p, q
+    return numpy.linalg.solve(M, numpy.r_[numpy.zeros(n), 1.0])[n]
+
+
+def _onto_fold(at, p0, p1, s, scale):
+    """(a, b, u): the fold curve's point on the hyperplane through the
+    segment p0-p1's point at s normal to it, in (u, a, b) scaled by
+    `scale`: Newton on (f(u), g, the hyperplane) = 0 (g: _singularity,
+    bordered by the null vectors at p0).  In (u, a, b) the curve is smooth
+    through a cusp, where it has a cusp in (a, b) alone."""
+    z0, z1 = (numpy.r_[p[2], p[:2]] / scale for p in (p0, p1))
+    along = z1 - z0
+    base = z0 + s * along
+    model0 = at(*p0[:2])
+    q, p = _null_vectors(numpy.asarray(model0.jacobian(p0[2])))
+
+    def residual(z):
+        u, (a, b) = z[:-2] * scale[:-2], z[-2:] * scale[-2:]
+        model = at(a, b)
+        return numpy.r_[model.rhs(u), _singularity(numpy.asarray(model.jacobian(u)), q, p),
+                        numpy.dot(z - base, along)]
+    z = base.copy()
+    for _ in range(NEWTON_STEPS):
+        r = residual(z)
+        if numpy.max(numpy.abs(r)) < NEWTON_TOL:
+            u, (a, b) = z[:-2] * scale[:-2], z[-2:] * scale[-2:]
+            return float(a), float(b), u
+        J = numpy.column_stack([(residual(z + FD_STEP * e) - r) / FD_STEP
+                                for e in numpy.eye(len(z))])
+        z = z - numpy.linalg.solve(J, r)
+    raise RuntimeError(f"codim2: no fold of equilibria found near "
+                       f"{tuple((base[-2:] * scale[-2:]).tolist())}")
+
+
+def along_fold_curve(points, at: Callable) -> Dict[str, List]:
+    """{"a": the cusp coefficient at each stored point, "points": the cusp
+    points located between them, [{"type": "CP", "a", "b", "u"}]} on a
+    fold curve of equilibria: points [(a, b, state)] in order, at(a, b) ->
+    the model (an mlgmodel.Model or one with .rhs, .jacobian and
+    .second_form).  q is oriented along the curve by continuity."""
+    points = [(float(a), float(b), numpy.asarray(u, float)) for a, b, u in points]
+    values, ref = [], None
+    for a, b, u in points:
+        coefficient, ref = fold_coefficient(at(a, b), u, ref)
+        values.append(coefficient)
+    # each state component and parameter scaled by its extent along the curve
+    scale = numpy.ptp(numpy.array([numpy.r_[u, a, b] for a, b, u in points]), axis=0)
+    scale[scale == 0.0] = 1.0
+    found = []
+    for k in range(len(points) - 1):
+        if numpy.sign(values[k]) * numpy.sign(values[k + 1]) >= 0:
+            continue
+        _, ref = fold_coefficient(at(*points[k][:2]), points[k][2])
+
+        def sign(s):
+            a, b, u = _onto_fold(at, points[k], points[k + 1], s, scale)
+            return numpy.sign(fold_coefficient(at(a, b), u, ref)[0])
+        first = sign(0.0)
+        s = spectrum.bisect(lambda s: sign(s) == first, 0.0, 1.0, tol=TOL)
+        a, b, u = _onto_fold(at, points[k], points[k + 1], s, scale)
+        found.append({"type": "CP", "a": a, "b": b, "u": u.tolist()})
+    return {"a": values, "points": found}
