@@ -91,6 +91,7 @@ def compute(parts):
     special = located.points(drawn)
     ends = explained(stops, switch, lift, [jobs.loaded(d) for d in drawn["fold"]],
                      at_gh=located.at_gh(special, FOLD_TOL))
+    located.l2_signs(special, drawn["fold"], ends["generalised_hopf"])
     heuristic = explained(stops, switch, lift, at_gh=on_hopf_locus)["generalised_hopf"]
     notes = located.lines(special, switch) + gh_ends_compared(heuristic, ends["generalised_hopf"])
     edges += closing_segments(ends["liftoff"], lift)

@@ -76,6 +76,30 @@ def at_gh(located, tol):
     return lambda stop: any(p["type"] == "GH" and distance(p, stop) < tol for p in located)
 
 
+# the fold curve's point this many steps back from its end at a GH point
+# tells the side it leaves on (l2_signs)
+BACK = 3
+
+
+def l2_signs(located, folds, ends):
+    """Each located GH point where a fold curve of orbits ends (`ends`:
+    ends.explained's "generalised_hopf"; `folds`: the drawn fold curves,
+    stored diagrams) gets "l2_sign" and "l2_from" (the curve): near a GH
+    point the fold curve leaves along the Hopf curve on the side where
+    l1 l2 < 0 (Kuznetsov, section 8.3), so sign l2 = -sign(dl1/dF* dF*),
+    dF* from the GH point to the fold curve BACK steps before its end."""
+    for stop in ends:
+        gh = min((p for p in located if p["type"] == "GH"), key=lambda p: distance(p, stop))
+        n = int(stop["curve"][len("fold"):]) - 1
+        for branch in jobs.loaded(folds[n]):
+            V, F = numpy.asarray(branch["V"]), numpy.asarray(branch["Fstar"])
+            at = numpy.flatnonzero((V == stop["V"]) & (F == stop["Fstar"]))
+            if len(at) and at[0] >= BACK:
+                side = F[at[0] - BACK] - gh["Fstar"]
+                gh["l2_sign"] = -int(numpy.sign(gh["dl1_db"] * side))
+                gh["l2_from"] = stop["curve"]
+
+
 def coefficient(p):
     """The point's coefficient as the table writes it: at GH the sign data
     (l2 is not computed: codim2) and the oleo kink's a2 where it is more
@@ -84,6 +108,9 @@ def coefficient(p):
     if p["type"] == "GH":
         side = "F* above" if (p["dl1_db"] or 0.0) > 0 else "F* below"
         text = f"l2 not computed; dl1/dF* = {p['dl1_db']:+.3g} (subcritical for {side})"
+        if "l2_sign" in p:
+            text += (f"; l2 {'< 0' if p['l2_sign'] < 0 else '> 0'} by the side {p['l2_from']} "
+                     "leaves on")
         if abs(p["a2"] or 0.0) > A2_NOISE:
             text += f"; the oleo's kink: Re a2 = {p['a2']:+.3g}"
         return text
