@@ -58,6 +58,12 @@ def points(drawn):
                     codim2.along_hopf_curve(list(zip(branch["V"], branch["Fstar"])), at)),
                     errors=(RuntimeError, numpy.linalg.LinAlgError))
                 found += [_plain(p, curve, at) for p in (result or {"points": []})["points"]]
+    return once(found)
+
+
+def once(found):
+    """The points in V, each once: one of a type within SAME of another is
+    left out."""
     kept = []
     for p in sorted(found, key=lambda p: (p["V"], p["Fstar"])):
         if not any(q["type"] == p["type"] and distance(p, q) < SAME for q in kept):
