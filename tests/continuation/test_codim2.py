@@ -6,7 +6,8 @@ angles against l1 bisected along it."""
 import numpy as np
 import pytest
 
-from mlgshimmy.shared import codim2, continuation, lyapunov, mlgmodel, rolling, spectrum
+from mlgshimmy.shared import (codim2, continuation, lyapunov, mlgmodel, rolling, yfp_codim2, yfp_runs,
+                               spectrum)
 
 
 class Cubic:
@@ -192,3 +193,29 @@ def test_gh_on_a_side_stay_hopf_curve_agrees_with_l1_bisected_along_it():
     # central difference at the point (l1 is nearly linear over 0.002)
     slope = (l1(direct + 1e-4) - l1(direct - 1e-4)) / 2e-4
     assert slope < 0 and gh["dl1_db"] == pytest.approx(slope, rel=0.05)
+
+
+def test_gh_on_fig14s_hopf_curve_at_the_papers_gear_agrees_with_l1_bisected_along_it():
+    """Fig. 14's high-frequency Hopf curve in (y_fp, V) (F* = 1, eps = 0.1
+    mm) turns in V at y_fp ~ 0.1025 mm and has a GH point there: l1 goes
+    from -17.7 at y_fp = 0.100 to +10.8 at 0.104.  yfp_codim2.codim2_points
+    on the curve's points at y_fp = 0.098 ... 0.106 (Hopf speeds from the
+    eigenvalue scan) against l1 of the Hopf point at each y_fp bisected in
+    y_fp: the same point to 1e-9 mm and 1e-6 m/s (both to rounding of l1,
+    dl1/dy_fp = 7100 /mm), and the slope beside it to 1e-3."""
+    def hopf_speed(yfp):
+        (V, _), = spectrum.hopf_scan("figures", "V", np.linspace(35.0, 50.0, 16),
+                                     **yfp_runs.values("fixed", yfp))
+        return V
+
+    def l1(yfp):
+        model = mlgmodel.Model("figures", V=hopf_speed(yfp), **yfp_runs.values("fixed", yfp))
+        return lyapunov.first_lyapunov(model, model.equilibrium()).l1
+    yfps = (0.098, 0.100, 0.102, 0.104, 0.106)
+    gh, = yfp_codim2.codim2_points([{"V": [hopf_speed(y) for y in yfps], "yfp": yfps}], "fixed")
+    direct = spectrum.bisect(lambda y: l1(y) < 0, 0.102, 0.104, tol=1e-12)
+    assert gh["type"] == "GH"
+    assert gh["yfp"] == pytest.approx(direct, abs=1e-9)
+    assert gh["V"] == pytest.approx(hopf_speed(direct), abs=1e-6)
+    slope = (l1(direct + 1e-5) - l1(direct - 1e-5)) / 2e-5
+    assert gh["dl1_dyfp"] == pytest.approx(slope, rel=1e-3) and slope > 0

@@ -2,14 +2,17 @@
 (section IV.D.2), F* = 1: (a-f) diagrams in V for y_fp = 0.05, 0.098, 0.11,
 0.15, 0.35, 1.0 mm beside their stiffness profiles, (g, h) amplitude and
 frequency of the stable orbits at V = 15, 50, 80, 110 m/s continued in y_fp,
-with the Hopf curves in (y_fp, V) dot-dashed in (h)."""
+with the Hopf curves in (y_fp, V) dot-dashed in (h) and their
+codimension-two points (shared.codim2) marked."""
 import matplotlib.pyplot as plt
+import numpy
 
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import yfp_runs
+from mlgshimmy.shared import yfp_codim2
 from mlgshimmy.shared import yfp_stored
 from mlgshimmy.shared import mlgmodel
 from mlgshimmy.shared import paper
@@ -49,7 +52,8 @@ def parts():
 def compute(parts):
     diagrams, orbits = yfp_stored.diagrams_of(parts.all())
     return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits,
-            "hopf_curves": parts["hopf_curves"]}
+            "hopf_curves": parts["hopf_curves"],
+            "codim2": yfp_codim2.codim2_points(parts["hopf_curves"], "fixed", **gear.parameters())}
 
 
 def lowest_orbit(curve, V):
@@ -82,7 +86,7 @@ def numbers(diagrams, orbits):
 
 
 def plot(result):
-    paper.report("fig14", result["numbers"])
+    paper.report("fig14", result["numbers"], notes=yfp_codim2.codim2_lines(result["codim2"]))
     fig = plt.figure(figsize=(12, 12))
     grid = fig.add_gridspec(4, 6)
     k_tlk = mlgmodel.Model("figures")["k_tlk"]
@@ -106,8 +110,12 @@ def plot(result):
     for curve in result["hopf_curves"]:
         ax_freq.plot(curve["yfp"], curve["freq"], label=label, **{**draw.HOPF_CURVE, "lw": 0.9})
         label = None
+    for point in result["codim2"]:
+        draw.mark(ax_freq, point["yfp"], point["omega"] / (2 * numpy.pi), point["type"])
+    kinds = sorted({p["type"] for p in result["codim2"]})
     draw.legend(ax_freq, extra=[h for h in ax_freq.get_legend_handles_labels()[0]
-                                if h.get_label() == "Hopf curves"], stability=False, axes=[])
+                                if h.get_label() == "Hopf curves"] + draw.point_handles(kinds),
+                stability=False, axes=[])
     ax_amp.set(xscale="log", title="(g) orbits at fixed V continued in $y_{fp}$")
     ax_freq.set(xscale="log", ylim=(0, 45), title="(h) their frequency; Hopf curves dot-dashed")
     draw.figure_title(fig, r"Fig. 14: $F^*$ = 1, $\epsilon$ = 0.1 mm")

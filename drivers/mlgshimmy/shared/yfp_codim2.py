@@ -1,0 +1,38 @@
+"""The codimension-two points on the freeplay-magnitude figures' Hopf curves
+in (y_fp, V) (yfp_stored.stored_curves), located by shared.codim2, and the
+table's lines for them (Figs. 14 and 18)."""
+import numpy
+
+from mlgshimmy.shared import codim2, mlgmodel, rolling
+from mlgshimmy.shared.freeplay import SCALINGS
+from mlgshimmy.shared.yfp_runs import FSTAR, values
+
+
+def codim2_points(curves, scaling, Fstar=FSTAR, **model):
+    """The codimension-two points shared.codim2 locates on Hopf curves in
+    (y_fp, V) (stored_curves), straight rolling continued from zero
+    freeplay (rolling.state): [{"type", "V", "yfp", "omega", "l1", and at
+    GH "dl1_dyfp"}], a curve it cannot follow reported and left out."""
+    def at(V, yfp):
+        model_there = mlgmodel.Model("figures", V=V, **values(scaling, yfp, Fstar, **model))
+        return model_there, rolling.state("figures", Fstar, yfp, SCALINGS[scaling], **model)
+    out = []
+    for n, curve in enumerate(curves):
+        try:
+            found = codim2.along_hopf_curve(list(zip(curve["V"], curve["yfp"])), at)
+        except (RuntimeError, numpy.linalg.LinAlgError) as exc:
+            print(f"REPORTED: codimension-two points on Hopf curve {n + 1} left out: {exc}")
+            continue
+        out += [{"type": p["type"], "V": p["a"], "yfp": p["b"], "omega": p["omega"],
+                 "l1": p["l1"] if numpy.isfinite(p["l1"]) else None,
+                 **({"dl1_dyfp": p["dl1_db"]} if "dl1_db" in p else {})}
+                for p in found["points"]]
+    return out
+
+
+def codim2_lines(points):
+    """The table's lines of codim2_points."""
+    return [f"{p['type']} on a Hopf curve at V = {p['V']:.6g} m/s, y_fp = {p['yfp']:.6g} mm "
+            f"({p['omega'] / (2 * numpy.pi):.4g} Hz)"
+            + (f": l2 not computed; dl1/dy_fp = {p['dl1_dyfp']:+.4g} /mm" if p["type"] == "GH"
+               else "") for p in points] or ["codimension-two points on the Hopf curves: none"]
