@@ -53,7 +53,7 @@ def compute(parts):
     diagrams, orbits = yfp_stored.diagrams_of(parts.all())
     return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits,
             "hopf_curves": parts["hopf_curves"],
-            "codim2": yfp_codim2.codim2_points(parts["hopf_curves"], "fixed", **gear.parameters())}
+            "codim2": yfp_codim2.codim2_points(parts["hopf_curves"], "fixed", "V", **gear.parameters())}
 
 
 def lowest_orbit(curve, V):

@@ -8,8 +8,9 @@ inside R1.  Fig. 19 reads kappa* from its cached result.
 a, b, c and the region map come from the eigenvalues of straight rolling
 (kappa_criterion.window_points, kappa_criterion.growth) on an F* grid; a and b are also
 continued by AUTO as curves of Hopf points at V = 120 m/s in (y_fp, F*) as a
-check.  The regions drawn are bounded by the curves a, b, c and the
-pitchfork; the cells of the eigenvalue grid only label them (shared.regions)."""
+check, with their codimension-two points (shared.codim2).  The regions
+drawn are bounded by the curves a, b, c and the pitchfork; the cells of the
+eigenvalue grid only label them (shared.regions)."""
 import matplotlib.pyplot as plt
 import numpy
 from matplotlib.colors import ListedColormap
@@ -21,6 +22,7 @@ from mlgshimmy.shared import draw
 from mlgshimmy.shared import gear
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import kappa_criterion
+from mlgshimmy.shared import yfp_codim2
 from mlgshimmy.shared import yfp_runs
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
@@ -145,11 +147,13 @@ def compute(name="fig18", variant=0):
     points, grid, auto = runs(name, **model)
     kappa, best = kappa_star(points, **model)
     yfp_runs.progress(name, "kappa* refined")
+    curves = [{"yfp": run[0]["yfp"], "Fstar": run[0]["Fstar"]}
+              for name_runs in auto.values() for run in name_runs]
     return {"name": name, "variant": variant, "numbers": numbers(points, auto, kappa, best),
             "kappa_star": kappa,
             "kappa_star_Fstar": best["Fstar"], "points": points, "grid": grid,
-            "auto": [{"yfp": run[0]["yfp"], "Fstar": run[0]["Fstar"]}
-                     for name_runs in auto.values() for run in name_runs]}
+            "auto": curves,
+            "codim2": yfp_codim2.codim2_points(curves, "fixed", "Fstar", {"V": yfp_runs.V_LIMIT}, **model)}
 
 
 RASTER_KAPPA = numpy.geomspace(MAP_KAPPA[0], MAP_KAPPA[-1], 600)
@@ -179,7 +183,8 @@ def painted_regions(points, grid, raster_F):
 
 
 def plot(result):
-    paper.report(result["name"], result["numbers"])
+    paper.report(result["name"], result["numbers"],
+                 notes=yfp_codim2.codim2_lines(result["codim2"], "Fstar"))
     points, auto, kappa = result["points"], result["auto"], result["kappa_star"]
     raster_F = numpy.linspace(FSTARS[0], FSTARS[-1], 400)   # where the curves are known
     painted, check = painted_regions(points, numpy.asarray(result["grid"]), raster_F)
@@ -197,13 +202,16 @@ def plot(result):
             ax.plot(ys, Fs, color=colour, ls=line, lw=1.6,
                     label=name if name != "p" else "pitchfork")
     for run in auto:
-        ax.plot(numpy.asarray(run["yfp"]) / freeplay.EPSILON, run["Fstar"],
-                color=draw.palette.ON_FILL, ls=":", lw=1)
+        ax.plot(numpy.asarray(run["yfp"]) / freeplay.EPSILON, run["Fstar"], color=draw.palette.ON_FILL,
+                ls=":", lw=1)
+    for point in result["codim2"]:
+        draw.mark(ax, point["yfp"] / freeplay.EPSILON, point["Fstar"], point["type"])
     ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
                                FSTARS[-1] - FSTARS[0], fill=False, hatch="//", lw=1.2))
     handles = ax.get_legend_handles_labels()[0] + [
         Patch(facecolor=colour, edgecolor=draw.palette.GUIDE, alpha=0.8, label=name)
-        for colour, name in zip(COLOURS[1:], ("R1, R2: straight rolling stable",) + REGIONS[2:])]
+        for colour, name in zip(COLOURS[1:], ("R1, R2: straight rolling stable",) + REGIONS[2:])
+    ] + draw.point_handles(draw.marked_kinds(ax))
     ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0], FSTARS[-1]),
            xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$")
     draw.figure_title(ax, r"Fig. 18: straight rolling for V $\leq$ 120 m/s, $\epsilon$ = 0.1 mm"
