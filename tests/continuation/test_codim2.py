@@ -219,3 +219,27 @@ def test_gh_on_fig14s_hopf_curve_at_the_papers_gear_agrees_with_l1_bisected_alon
     assert gh["V"] == pytest.approx(hopf_speed(direct), abs=1e-6)
     slope = (l1(direct + 1e-5) - l1(direct - 1e-5)) / 2e-5
     assert gh["dl1_dyfp"] == pytest.approx(slope, rel=1e-3) and slope > 0
+
+
+def test_zh_on_fig11s_h3_curve_at_the_pitchforks():
+    """Fig. 11 at the paper's gear (y_fp = 1 mm, eps = 0.1 y_fp): its H3
+    Hopf curve runs down through both pitchfork loads of straight rolling,
+    where a real eigenvalue crosses zero: two ZH points.  Located by
+    codim2 between its Hopf speeds at F* = 0.02 ... 0.5, they lie at the
+    pitchfork loads that stability_changes finds in F* at V = 50 m/s
+    (straight rolling and its real eigenvalues do not depend on V), to
+    1e-9 (each bisected to 1e-8 of its bracket)."""
+    freeplay_ = {"yfp": 1.0, "eps_rel": 0.1}
+
+    def at(V, F):
+        model = mlgmodel.Model("figures", V=V, Fstar=F, **freeplay_)
+        return model, model.equilibrium()
+    loads = (0.02, 0.03, 0.05, 0.1, 0.2, 0.3, 0.4, 0.45, 0.5)
+    points = [(max(V for V, _ in spectrum.hopf_scan("figures", "V", np.linspace(100, 160, 13),
+                                                    Fstar=F, **freeplay_)), F) for F in loads]
+    found = codim2.along_hopf_curve(points, at)
+    pitchforks = [F for F, kind, _ in spectrum.stability_changes(
+        "figures", "Fstar", np.linspace(0.02, 0.5, 49), V=50.0, **freeplay_) if kind == "BP"]
+    assert [p["type"] for p in found["points"]] == ["ZH", "ZH"]
+    assert [p["b"] for p in found["points"]] == pytest.approx(pitchforks, abs=1e-9)
+    assert all(p["l1"] > 0 for p in found["points"])   # on H3's subcritical curve
