@@ -121,8 +121,7 @@ def coefficient(p):
             text += f"; the oleo's kink: Re a2 = {p['a2']:+.3g}"
         return text
     if p["type"] in ("ZH", "HH"):
-        return f"omega = {p['omega']:.5g} rad/s, l1 = " + (
-            "none" if p["l1"] is None else f"{p['l1']:+.4g}")
+        return "l1 = " + ("none" if p["l1"] is None else f"{p['l1']:+.4g}")
     return "omega -> 0"
 
 
@@ -130,7 +129,8 @@ def lines(located, switch):
     """The table's lines, one per located point; those inside the stage
     switch's window `switch` (ends.inside) say so: l1 swings there with
     the switch's stiffness, smoothed over 1e-5 m."""
-    return [f"{p['type']} on {p['curve']} at V = {p['V']:.6g} m/s, F* = {p['Fstar']:.6g}"
+    return [f"{p['type']} on {p['curve']} at V = {p['V']:.6g} m/s, F* = {p['Fstar']:.6g}, "
+            f"{p['omega'] / (2 * numpy.pi):.4g} Hz"
             f"{' (inside the oleo stage switch)' if inside(switch, p['Fstar']) else ''}: "
             f"{coefficient(p)}" for p in located] or ["codimension-two points on the Hopf "
                                                       "curves (codim2): none"]
