@@ -3,7 +3,7 @@ drawn Hopf curve of straight rolling (GH, BT, ZH, HH; the zero-freeplay
 curve too), each once, and the fold curves' ends they explain."""
 import numpy
 
-from mlgshimmy.figures.fig11.ends import inside
+from mlgshimmy.figures.fig11.ends import in_plane, inside
 from mlgshimmy.figures.fig11.orbits import ROLLING
 from mlgshimmy.figures.fig11.plane import F_MAX, GEOMETRY, MODEL, V_MAX
 from mlgshimmy.shared import codim2
@@ -47,8 +47,9 @@ def _plain(point, curve, at):
 def points(drawn):
     """[{"type", "V", "Fstar", "curve", "omega", "l1", and at GH "dl1_db",
     "a2"}] on the drawn Hopf curves ({"hopf": [...], "zero":
-    [...]}, stored diagrams), in V; a branch codim2 cannot follow is
-    reported and left out."""
+    [...]}, stored diagrams), in V, those inside the plane (ends.in_plane: a
+    curve started on its lower edge may run below it); a branch codim2
+    cannot follow is reported and left out."""
     found = []
     for kind, at in (("hopf", model_at(MODEL, ROLLING)), ("zero", model_at(ZERO_FREEPLAY, None))):
         for n, diagram in enumerate(drawn.get(kind, [])):
@@ -58,7 +59,7 @@ def points(drawn):
                     codim2.along_hopf_curve(list(zip(branch["V"], branch["Fstar"])), at)),
                     errors=(RuntimeError, numpy.linalg.LinAlgError))
                 found += [_plain(p, curve, at) for p in (result or {"points": []})["points"]]
-    return once(found)
+    return once([p for p in found if in_plane(p)])
 
 
 def once(found):
