@@ -45,7 +45,7 @@ def made_up():
             "pitchfork": [[], [0.2, 0.4]], "torus_points": [{"V": 210.0, "Fstar": 1.2}],
             "edge_curves": [{"kind": "liftoff", "V": [450.0, 450.0], "Fstar": [0.02, 3.5]}],
             "liftoff": {"points": [[450.0, 0.5], [450.0, 1.5]], "t_end": 2.0, "psi0": 0.05},
-            "stage_switch": [0.63, 0.70], "numbers": {}, **ends}
+            "stage_switch": [0.63, 0.70], "numbers": {}, "codim2": [], "codim2_notes": [], **ends}
 
 
 def draw_fig11(tmp_path, monkeypatch, mark=None):
