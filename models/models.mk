@@ -1,7 +1,8 @@
 # The AUTO equations executable of the MLG model, linked with the c/ library.
 # Drivers run it with e='<repo>/build/models/mlg'.
 MLG_MODEL := build/models/mlg
-$(eval $(call auto_equations,$(MLG_MODEL),models/mlg.c,$(MLG_LIB),-I$(CURDIR)/c))
+MODEL_INCLUDES := -I$(CURDIR)/c -I$(CURDIR)/models
+$(eval $(call auto_equations,$(MLG_MODEL),models/mlg.c,$(MLG_LIB),$(MODEL_INCLUDES)))
 
 # make demo [DEMO_DIR=build/demo]: a run directory for AUTO's own workflow,
 # as in AUTO's demos: `auto mlg.auto`, `@r mlg`, `@sv mlg` (docs/auto-workflow.md).
@@ -35,7 +36,7 @@ $(DEMO)/mlg.c $(DEMO)/c.mlg $(DEMO)/mlg.auto:
 
 $(DEMO)/.obj/mlg.o: $(DEMO)/mlg.c $(AUTO_USED) | auto
 	@mkdir -p $(@D)
-	$(AUTO_CC) $(call AUTO_C_ONLY,$(AUTO_CFLAGS) $(AUTO_OPT)) -I$(CURDIR)/c -MMD -MP -c $< -o $@
+	$(AUTO_CC) $(call AUTO_C_ONLY,$(AUTO_CFLAGS) $(AUTO_OPT)) $(MODEL_INCLUDES) -MMD -MP -c $< -o $@
 -include $(DEMO)/.obj/mlg.d
 
 $(DEMO)/mlg.o: $(DEMO)/.obj/mlg.o $(MLG_OBJECTS)
