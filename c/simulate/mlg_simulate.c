@@ -53,6 +53,7 @@ typedef struct {
     double max_memory_mb, max_output_mb;    /* budgets (file comment) */
     int lmm;                    /* CV_BDF or CV_ADAMS */
     const char *out;
+    const char *events_out;     /* --events: one row per switch crossed */
 } options;
 
 /* Data passed to the CVODE callbacks: the parameters, the modes and the
@@ -94,6 +95,9 @@ static void usage(FILE *stream)
         "                        order (e.g. a point of an AUTO orbit), instead of the\n"
         "                        equilibrium; --psi0 and --delta0 default to 0 then\n"
         "  --out FILE            CSV output (default: none)\n"
+        "  --events FILE         CSV of the switches crossed (freeplay law nonsmooth):\n"
+        "                        t, the switching function, its direction (+1 up),\n"
+        "                        the mode after it and the state there\n"
         "  --max-memory MB       memory budget of the last second's samples (default\n"
         "                        1024, or MLG_SIMULATE_MAX_MEMORY_MB): a run needing more\n"
         "                        (88 bytes a sample) is refused before it starts\n"
@@ -280,6 +284,7 @@ static options parse_options(int argc, char **argv)
             o.has_u0 = 1;
         }
         else if (strcmp(opt, "--out") == 0) o.out = arg;
+        else if (strcmp(opt, "--events") == 0) o.events_out = arg;
         else if (strcmp(opt, "--max-memory") == 0) o.max_memory_mb = parse_budget(opt, arg);
         else if (strcmp(opt, "--max-output") == 0) o.max_output_mb = parse_budget(opt, arg);
         else {
@@ -533,6 +538,20 @@ int main(int argc, char **argv)
         write_row(csv, 0.0, u0);
     }
 
+    FILE *crossed = NULL;
+    if (o.events_out != NULL) {
+        crossed = fopen(o.events_out, "w");
+        if (crossed == NULL) {
+            fprintf(stderr, "mlg_simulate: cannot write %s: %s\n", o.events_out,
+                    strerror(errno));
+            return 1;
+        }
+        fputs("t,switch,direction,mode", crossed);
+        for (int i = 0; i < MLG_NX; i++)
+            fprintf(crossed, ",%s", STATE_NAMES[i]);
+        fputc('\n', crossed);
+    }
+
     model m = {.p = &o.p, .status = MLG_OK};
     if (events_init(&m.switching, &o.p, u0) != MLG_OK) {
         fprintf(stderr, "mlg_simulate: the initial state lies outside the model's domain\n");
@@ -583,6 +602,15 @@ int main(int argc, char **argv)
                         mlg_status_text(-changed));
                 return 1;
             }
+            for (int i = 0; crossed != NULL && i < m.switching.count; i++) {
+                if (found[i] == 0) continue;
+                int k = m.switching.index[i];
+                fprintf(crossed, "%.17e,%s,%d,%d", t, mlg_switching_name(k), found[i],
+                        m.switching.modes[mlg_switching_variable(k)]);
+                for (int j = 0; j < MLG_NX; j++)
+                    fprintf(crossed, ",%.17e", N_VGetArrayPointer(y)[j]);
+                fputc('\n', crossed);
+            }
             add_statistics(cvode, &stats);     /* CVodeReInit zeroes CVODE's own */
             check_flag(CVodeReInit(cvode, t, y), "CVodeReInit");
             flag = CVode(cvode, t_want, y, &t, CV_NORMAL);
@@ -615,6 +643,10 @@ int main(int argc, char **argv)
         return 1;
     }
 
+    if (crossed != NULL && fclose(crossed) != 0) {
+        fprintf(stderr, "mlg_simulate: error writing %s\n", o.events_out);
+        return 1;
+    }
     add_statistics(cvode, &stats);
 
     oscillation osc[MLG_ETA + 1];

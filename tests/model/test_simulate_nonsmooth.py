@@ -60,3 +60,24 @@ def test_the_fold_by_simulation_is_auto_s_fold():
                                                  "eps_rel": 0.1})
     print(f"# S: AUTO {auto_s:.6f} m/s, by simulation {s:.6f} m/s")
     assert auto_s - 3e-3 < s < auto_s + 1e-3
+
+
+def test_the_events_file_lists_every_switch_on_its_surface(tmp_path):
+    """--events: one row per crossing, as many as the summary counts, each
+    state on its surface (|r_tlk(eta) psi| = y_fp within 1e-9 of y_fp) and
+    the mode after it the table's (mlg_switching_mode_after)."""
+    import numpy
+    law14 = {"freeplay_law": mlgmodel.LAWS.index("nonsmooth")}
+    path = tmp_path / "events.csv"
+    summary = simulator.simulate(None, "--V", 100, "--Fstar", 1, "--yfp", 1, "--t-end", 1,
+                                 "--psi0", 0.01, "--events", str(path), params=law14)
+    rows = numpy.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding=None)
+    for surface, sign in (("upper", 1.0), ("lower", -1.0)):
+        mine = rows[rows["switch"] == f"freeplay_{surface}"]
+        assert len(mine) == summary[f"crossings_freeplay_{surface}"] > 0
+        model = mlgmodel.Model("figures", V=100.0, Fstar=1.0, yfp=1.0, **law14)
+        y = numpy.array([model.r_tlk(r["eta"]) * r["psi"] for r in mine])
+        assert numpy.allclose(y, sign * 1e-3, rtol=0, atol=1e-12)
+        # upper: up into contact+ (1), down into the gap; lower: down into contact- (2)
+        after = {("upper", 1): 1, ("upper", -1): 0, ("lower", -1): 2, ("lower", 1): 0}
+        assert all(r["mode"] == after[surface, r["direction"]] for r in mine)
