@@ -3,6 +3,9 @@
 MLG_MODEL := build/models/mlg
 MODEL_INCLUDES := -I$(CURDIR)/c -I$(CURDIR)/models
 $(eval $(call auto_equations,$(MLG_MODEL),models/mlg.c,$(MLG_LIB),$(MODEL_INCLUDES)))
+# The periodic orbits of eq. (14) as segments (models/mlg_segmented.c)
+MLG_SEGMENTED := build/models/mlg_segmented
+$(eval $(call auto_equations,$(MLG_SEGMENTED),models/mlg_segmented.c,$(MLG_LIB),$(MODEL_INCLUDES)))
 
 # make demo [DEMO_DIR=build/demo]: a run directory for AUTO's own workflow,
 # as in AUTO's demos: `auto mlg.auto`, `@r mlg`, `@sv mlg` (docs/auto-workflow.md).
