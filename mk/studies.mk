@@ -154,6 +154,13 @@ REGRESS_FIGURES += smoothing
 # (studies.smoothing_fig14): a few minutes.
 $(eval $(call cached_study,smoothing_fig14))
 
+# Fig. 10 under the non-smooth eq. (14): its periodic orbits as segmented
+# boundary-value problems (studies.segmented, models/mlg_segmented.c), checked
+# against the event-located simulation; about 5 min; the table in
+# $(RUN_ROOT)/tables/segmented.txt.
+$(eval $(call cached_study,segmented))
+$(call result,segmented): $(MLG_SEGMENTED).exe
+
 # Eq. (17)'s kappa* for every freeplay law of c/freeplay_laws.h (studies.laws,
 # eigenvalue scans): under a minute; the table in $(RUN_ROOT)/tables/laws.txt.
 $(eval $(call cached_study,laws))

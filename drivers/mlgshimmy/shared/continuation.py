@@ -87,8 +87,9 @@ def ends_branch(point, parameter: str) -> bool:
 
 
 def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[str] = None,
-        **kw: Any):
-    """autoglue.run on the MLG model: the base constants, then the run-type
+        model: str = MODEL, **kw: Any):
+    """autoglue.run on the MLG model (or another equations file of models/:
+    model, its executable's path without .exe): the base constants, then the run-type
     file constants/runs/c.<kind> if given, then the overlay file
     constants/runs/c.<overlay> if given, then the keyword overrides.  A run
     that does not converge (MX, or the model stops it at a non-finite
@@ -110,7 +111,7 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
         options = {**kw, "allow_mx": mx or ends is not None, **rung}
         if rung and kw.get("time_limit"):
             options["time_limit"] = kw["time_limit"] * rung_cost(own(), rung)
-        bd = autoglue.run(rundir, name, constants=files, e=MODEL, **options)
+        bd = autoglue.run(rundir, name, constants=files, e=model, **options)
         stops = [p for p in bd("MX") if not ends.explains(p, kw["ICP"][0])] if ends else []
         if stops and not mx:
             error = runerror.RunError(

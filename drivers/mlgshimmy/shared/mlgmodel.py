@@ -66,6 +66,7 @@ def library() -> ctypes.CDLL:
     lib.mlg_equilibrium.argtypes = [P, ctypes.c_double, D]
     lib.mlg_rhs.argtypes = [P, D, D]
     lib.mlg_rhs_jacobian.argtypes = [P, D, D, D, D]
+    lib.mlg_rhs_jacobian_in_modes.argtypes = [P, ctypes.POINTER(ctypes.c_int), D, D, D, D]
     lib.mlg_rhs_taylor.argtypes = [P, D, D, D]
     lib.mlg_second_form.argtypes = [P, D, D, D, D]
     lib.mlg_third_form.argtypes = [P, D, D, D, D, D]
@@ -273,6 +274,21 @@ class Model:
         if status != 0:
             raise RuntimeError(f"jacobian: {library().mlg_status_text(status).decode()}")
         return numpy.array(J, dtype=float).reshape(nx, nx).T
+
+    def jacobian_in_mode(self, u: State, mode: int) -> Tuple[numpy.ndarray, numpy.ndarray]:
+        """(f, df/du) of eq. (14) held in the freeplay mode `mode` (0 gap, 1
+        contact+, 2 contact-: c/mlg_model.h), each mode's field continued
+        beyond its switching surfaces; needs freeplay_law nonsmooth."""
+        nx = _table("NX")
+        x = _state(u)
+        f = (ctypes.c_double * nx)()
+        J = (ctypes.c_double * (nx * nx))()   # column-major
+        modes = (ctypes.c_int * 1)(mode)
+        status = library().mlg_rhs_jacobian_in_modes(ctypes.byref(self._p), modes, x, f, J,
+                                                     None)
+        if status != 0:
+            raise RuntimeError(f"jacobian_in_mode: {library().mlg_status_text(status).decode()}")
+        return numpy.array(f, dtype=float), numpy.array(J, dtype=float).reshape(nx, nx).T
 
     def taylor(self, u: Sequence[float], d: Sequence[float]) -> numpy.ndarray:
         """[f, D f[d], D^2 f[d, d], D^3 f[d, d, d]] at the state u along d

@@ -64,6 +64,8 @@ POINTS = {
            "legend": "torus (Neimark-Sacker) point"},
     "PD": {"name": "PD", "marker": "v", "mfc": palette.OPEN, "ms": 5.0,
            "legend": "period doubling"},
+    "GR": {"name": "G", "marker": "p", "mfc": palette.OPEN, "ms": 5.5,
+           "legend": "grazing (a contact segment's duration reaches zero)"},
     "change": {"name": "", "marker": "o", "mfc": palette.OPEN, "ms": 4.5,
                "legend": "stability change AUTO did not label"},
     # codimension-two points on curves of Hopf points (shared.codim2)

@@ -1,0 +1,240 @@
+"""Periodic orbits of the non-smooth freeplay law (14) as segmented
+boundary-value problems in AUTO (models/mlg_segmented.c; docs/model.md
+9.6): one segment per mode visited, each with its duration as an unknown,
+glued by continuity and h = 0 at the switches.
+
+    orbit = simulated(values, 100.0)       # event-located, settled (mlg_simulate)
+    bd = follow(rundir, "up", values, orbit, 100.0, stop={"V": 600}, DS=0.5)
+    stability(model, bd(2))                 # the monodromy's multipliers
+    grazings(bd)                            # where a contact segment's duration is 0
+
+The start is an event-located simulation: its last full period gives the
+sequence of modes and their durations, and its samples the segments'
+profiles.
+"""
+import os
+import tempfile
+from typing import Dict, List, Optional, Sequence
+
+import numpy
+
+from mlgshimmy.shared import continuation as ct
+from mlgshimmy.shared import autoglue, mlgmodel, paths, simulator
+
+MODEL = os.path.join(paths.BUILD, "models", "mlg_segmented")
+DURATION, MODE = 30, 40       # T_k is PAR(DURATION + k), its mode PAR(MODE + k)
+SEG_MAX = 8
+GAP, CONTACT_POS, CONTACT_NEG = 0, 1, 2    # enum mlg_freeplay_mode
+MODE_NAMES = {GAP: "gap", CONTACT_POS: "contact+", CONTACT_NEG: "contact-"}
+# the settled orbit: 16 s from psi = 0.01 rad at CVODE rtol 1e-10 (as
+# studies/smoothing), then 0.5 s more sampled every 10 us with its switches
+TOLERANCES = ("--rtol", 1e-10, "--atol", 1e-12)
+SETTLE = ("--t-end", 16, "--dt-out", 1e-3, *TOLERANCES)
+DENSE = ("--t-end", 0.5, "--dt-out", 1e-5, *TOLERANCES)
+SAMPLES = 201       # points of each segment in AUTO's starting data
+PAST_GRAZING = 1e-4   # s: a contact duration this far below zero ends a run
+
+
+def law14(values: Dict[str, float]) -> Dict[str, float]:
+    """The model values with eq. (14) as the freeplay law."""
+    return {**values, "freeplay_law": mlgmodel.LAWS.index("nonsmooth")}
+
+
+def durations(n: int) -> List[int]:
+    """The PAR numbers of the n segments' durations."""
+    if not 2 <= n <= SEG_MAX:
+        raise ValueError(f"segments: {n} segments, must be 2 to {SEG_MAX} "
+                         "(models/mlg_segmented.c SEG_MAX)")
+    return [DURATION + k + 1 for k in range(n)]
+
+
+def duration_names(n: int) -> Dict[int, str]:
+    return {par: f"T{k + 1}" for k, par in enumerate(durations(n))}
+
+
+def simulated(values: Dict[str, float], V: float, psi0: float = 0.01) -> dict:
+    """The settled orbit of eq. (14) at speed V by event-located simulation:
+    {"modes", "durations", "states" (one array of rows t, u per segment, t
+    from its switch), "psi_amplitude_rad", "frequency_hz" (the simulator's
+    summary of its last, densely sampled stretch), "period"}: the segments
+    of the last full period (the switch that ends it crossed the same way
+    as the one that starts it, the sequence repeating)."""
+    params = law14(values)
+    with tempfile.TemporaryDirectory() as tmp:
+        csv, events = os.path.join(tmp, "orbit.csv"), os.path.join(tmp, "events.csv")
+        simulator.simulate(csv, "--set", "figures", "--V", V, "--psi0", psi0, *SETTLE,
+                           params=params)
+        settled = numpy.loadtxt(csv, delimiter=",", skiprows=1)[-1, 1:]
+        summary = simulator.simulate(csv, "--set", "figures", "--V", V, *simulator.state_args(
+            dict(zip(mlgmodel.UNAMES, settled))), *DENSE, "--events", events, params=params)
+        samples = numpy.loadtxt(csv, delimiter=",", skiprows=1)
+        crossed = numpy.genfromtxt(events, delimiter=",", skip_header=1, dtype=None,
+                                   encoding=None)
+    if crossed.size < 4:
+        raise RuntimeError(f"segmented: at V = {V:g} m/s the simulation crosses "
+                           f"{crossed.size} switches: no orbit that reaches contact")
+    rows = [(float(r[0]), str(r[1]), int(r[2]), int(r[3]), numpy.array(list(r)[4:], float))
+            for r in numpy.atleast_1d(crossed)]
+    period = next((back for back in range(2, min(SEG_MAX, len(rows) // 2) + 1)
+                   if all(rows[-1 - j][1:4] == rows[-1 - j - back][1:4]
+                          for j in range(back))), None)
+    if period is None:
+        raise RuntimeError(f"segmented: at V = {V:g} m/s the switches do not repeat within "
+                           f"{SEG_MAX} segments: no periodic orbit settled")
+    cycle = rows[-1 - period:]
+    modes, times, states = [], [], []
+    for start_row, end_row in zip(cycle[:-1], cycle[1:]):
+        t0, t1 = start_row[0], end_row[0]
+        inside = samples[(samples[:, 0] > t0) & (samples[:, 0] < t1)]
+        states.append(numpy.vstack([numpy.r_[t0, start_row[4]], inside,
+                                    numpy.r_[t1, end_row[4]]]))
+        states[-1][:, 0] -= t0
+        modes.append(start_row[3])
+        times.append(t1 - t0)
+    return {"modes": modes, "durations": times, "states": states,
+            "psi_amplitude_rad": summary["psi_amplitude_rad"],
+            "frequency_hz": summary["frequency_hz"], "period": float(sum(times))}
+
+
+def start_data(orbit: dict) -> numpy.ndarray:
+    """AUTO's starting data (dat): rows s, u_1(s), ..., u_n(s), s in [0, 1],
+    each segment's samples interpolated (cubic) to one grid of s."""
+    from scipy.interpolate import CubicSpline
+    s = numpy.linspace(0.0, 1.0, SAMPLES)
+    columns = [s]
+    for rows, T in zip(orbit["states"], orbit["durations"]):
+        t = rows[:, 0] / T
+        keep = numpy.r_[True, numpy.diff(t) > 1e-12]   # the switch may repeat a sample
+        columns.append(CubicSpline(t[keep], rows[keep, 1:])(s).T)
+    return numpy.vstack(columns).T
+
+
+def parameters(values: Dict[str, float], orbit: dict, V: float) -> Dict:
+    """PAR of the segmented run: the model's, the modes and the durations."""
+    model = mlgmodel.Model("figures", **law14(values), V=V)
+    mlgmodel.register_constants(model)
+    n = len(orbit["modes"])
+    par = {**model.par()}
+    par.update({par_T: T for par_T, T in zip(durations(n), orbit["durations"])})
+    par.update({MODE + k + 1: float(m) for k, m in enumerate(orbit["modes"])})
+    return par
+
+
+def follow(rundir: str, name: str, values: Dict[str, float], orbit: dict, V: float,
+           parameter: str = "V", stop: Optional[dict] = None, at: Sequence[float] = (),
+           **kw):
+    """The segmented orbits through the simulated `orbit` at speed V,
+    continued in `parameter` (its direction: the sign of kw DS), labelled
+    (UZ) at the values `at` of the parameter.  Where a contact segment's
+    duration reaches zero the orbit grazes; AUTO labels it a fold (LP: the
+    penetration grows like the square of the duration, so the branch turns
+    back in the parameter, into negative durations).  The run stops just
+    past it (a duration of -PAST_GRAZING) or at `stop`; physical() keeps
+    the branch up to the grazing."""
+    n = len(orbit["modes"])
+    rundir = autoglue.claim(rundir)
+    dat = os.path.join(rundir, f"{name}.dat")
+    numpy.savetxt(dat, start_data(orbit), fmt="%.17e")
+    parnames = {**dict(autoglue.read_constants(ct.CONSTANTS)["parnames"]), **duration_names(n)}
+    T_pars = durations(n)
+    contact = [p for p, mode in zip(T_pars, orbit["modes"]) if mode != GAP]
+    return ct.run(rundir, name, "segmented", model=MODEL, dat=dat,
+                  PAR=parameters(values, orbit, V), NDIM=mlgmodel.NX * n,
+                  NBC=(mlgmodel.NX + 1) * n, parnames=parnames,
+                  ICP=[parameter] + T_pars + mlgmodel.MEASURES,
+                  UZR={parameter: list(at)},
+                  UZSTOP={**(stop or {}), **{p: -PAST_GRAZING for p in contact}}, **kw)
+
+
+def amplitude(solution, state: str = "psi") -> float:
+    """Half the peak-to-peak of a state over a segmented orbit (an AUTO
+    solution), each segment's extremes from a cubic spline through its
+    collocation points (AUTO's own measure takes the mesh points alone)."""
+    from scipy.interpolate import CubicSpline
+    t = numpy.array(solution.indepvararray)
+    u = numpy.array(solution.coordarray)
+    fine = numpy.linspace(0.0, 1.0, 50 * len(t))
+    i = mlgmodel.UNAMES.index(state)
+    values = numpy.concatenate([CubicSpline(t, u[mlgmodel.NX * k + i])(fine)
+                                for k in range(len(modes_of(solution)))])
+    return 0.5 * float(values.max() - values.min())
+
+
+def period(solution) -> float:
+    """The sum of a segmented orbit's durations [s]."""
+    return float(sum(solution[f"T{k + 1}"] for k in range(len(modes_of(solution)))))
+
+
+def physical(branch, modes: Sequence[int]) -> int:
+    """The number of leading points of a branch whose contact durations are
+    all >= 0: the branch up to its grazing."""
+    negative = numpy.zeros(len(branch), dtype=bool)
+    for k, mode in enumerate(modes):
+        if mode != GAP:
+            negative |= numpy.asarray(branch[f"T{k + 1}"]) < 0
+    return int(numpy.argmax(negative)) if negative.any() else len(branch)
+
+
+def modes_of(solution) -> List[int]:
+    """The modes of an AUTO solution's segments."""
+    n = solution["NDIM"] // mlgmodel.NX
+    return [int(solution.PAR[MODE + k]) for k in range(n)]    # PAR is 0-based here
+
+
+def monodromy(model: "mlgmodel.Model", solution) -> numpy.ndarray:
+    """The monodromy matrix of a segmented orbit (an AUTO solution): the
+    product of its segments' (eq. (14) is continuous across h = 0, so the
+    saltation matrices are the identity), each the variational equation
+    Phi' = T_k J_k(u_k(s)) Phi integrated by RK4 on the collocation points
+    (NCOL = 4 equally spaced in each mesh interval: two steps each)."""
+    t = numpy.array(solution.indepvararray)
+    u = numpy.array(solution.coordarray)
+    ncol = solution["NCOL"]
+    if ncol % 2:
+        raise ValueError(f"monodromy: NCOL = {ncol} must be even (RK4 on its points)")
+    total = numpy.eye(mlgmodel.NX)
+    for k, mode in enumerate(modes_of(solution)):
+        T = solution[f"T{k + 1}"]
+        rows = u[mlgmodel.NX * k:mlgmodel.NX * (k + 1)]
+        J = [T * model.jacobian_in_mode(rows[:, j], mode)[1] for j in range(len(t))]
+        phi = numpy.eye(mlgmodel.NX)
+        for a in range(0, len(t) - 1, 2):
+            h = t[a + 2] - t[a]
+            k1 = J[a] @ phi
+            k2 = J[a + 1] @ (phi + 0.5 * h * k1)
+            k3 = J[a + 1] @ (phi + 0.5 * h * k2)
+            k4 = J[a + 2] @ (phi + h * k3)
+            phi = phi + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
+        total = phi @ total
+    return total
+
+
+def stability(model: "mlgmodel.Model", solution) -> dict:
+    """{"multipliers", "trivial" (the one nearest 1), "largest" (|mu| of
+    the others), "stable"} of a segmented orbit."""
+    mu = numpy.linalg.eigvals(monodromy(model, solution))
+    trivial = int(numpy.argmin(abs(mu - 1.0)))
+    others = numpy.delete(mu, trivial)
+    largest = float(max(abs(others)))
+    return {"multipliers": mu, "trivial": complex(mu[trivial]), "largest": largest,
+            "stable": largest < 1.0}
+
+
+def grazings(bd, columns: Sequence[str] = ("V",)) -> List[dict]:
+    """Where segments' durations pass zero along each branch: {segments (the
+    1-based numbers of those that reach zero there together, as the two
+    contact segments of a symmetric orbit do), and the columns interpolated
+    linearly in the duration between the two points either side}."""
+    found = []
+    for branch in bd:
+        at = {}
+        for k in range(SEG_MAX):
+            if f"T{k + 1}" not in branch.coordnames:
+                break
+            T = numpy.asarray(branch[f"T{k + 1}"])
+            for i in numpy.nonzero(T[:-1] * T[1:] < 0)[0]:
+                w = T[i] / (T[i] - T[i + 1])
+                at.setdefault(int(i), {"segments": [], **{c: float(branch[c][i] + w * (
+                    branch[c][i + 1] - branch[c][i])) for c in columns}})["segments"].append(k + 1)
+        found += [at[i] for i in sorted(at)]
+    return found

@@ -1,0 +1,61 @@
+"""Segmented orbits of eq. (14) (shared.segmented) on Fig. 10's gear (F* =
+1, y_fp = 1 mm) end to end: the event-located simulation at 100 m/s gives
+the segments, AUTO continues them to 104 m/s, and the orbit there agrees
+with an independent simulation (studies.segmented.check, its tolerance
+1e-4 relative; measured 4e-7 and 1e-7 on the study's five speeds), is
+stable, with its trivial Floquet multiplier 1 (the product of the
+segments' monodromies).  About 40 s.
+
+Run: /usr/bin/python3 -m pytest -q tests/test_segmented.py
+"""
+import pytest
+
+from mlgshimmy.shared import autoglue, segmented
+from mlgshimmy.studies import segmented as study
+
+CASE = study.CASE
+START, AT = 100.0, 104.0
+
+
+@pytest.fixture(scope="module")
+def orbits(tmp_path_factory):
+    root = tmp_path_factory.mktemp("segmented")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        mp.setenv("MLG_RUN_ROOT", str(root))
+        orbit = segmented.simulated(CASE, START)
+        bd = segmented.follow(str(root / "runs"), "up", CASE, orbit, START,
+                              stop={"V": AT + 1.0}, at=[AT], DS=0.5, DSMAX=1.0)
+        yield orbit, bd
+
+
+def test_the_simulation_gives_four_segments_symmetric_in_contact(orbits):
+    """gap, contact+, gap, contact- (in some rotation); at rho = mu = 0 the
+    gear is symmetric, so both contacts last as long, and both gaps."""
+    orbit, _ = orbits
+    modes = orbit["modes"]
+    k = modes.index(segmented.CONTACT_POS)
+    assert modes[k:] + modes[:k] == [segmented.CONTACT_POS, segmented.GAP,
+                                     segmented.CONTACT_NEG, segmented.GAP]
+    T = orbit["durations"][k:] + orbit["durations"][:k]
+    assert T[0] == pytest.approx(T[2], rel=1e-6)
+    assert T[1] == pytest.approx(T[3], rel=1e-6)
+    assert sum(T) == pytest.approx(1.0 / orbit["frequency_hz"], rel=1e-6)
+
+
+def test_auto_s_orbit_agrees_with_the_simulation(orbits):
+    _, bd = orbits
+    solution, = [s for s in bd("UZ") if abs(s["V"] - AT) < 1e-6]
+    row, = study.check(CASE, [{"V": solution["V"], "psi_amp": segmented.amplitude(solution),
+                               "freq": 1.0 / segmented.period(solution)}])
+    assert abs(row["amp_rel"]) < study.TOLERANCE
+    assert abs(row["freq_rel"]) < study.TOLERANCE
+
+
+def test_the_orbit_is_stable_with_its_trivial_multiplier_at_one(orbits):
+    _, bd = orbits
+    solution, = [s for s in bd("UZ") if abs(s["V"] - AT) < 1e-6]
+    model = segmented.mlgmodel.Model("figures", **segmented.law14(CASE), V=AT)
+    verdict = segmented.stability(model, solution)
+    assert abs(verdict["trivial"] - 1.0) < 1e-5
+    assert verdict["stable"] and verdict["largest"] < 1.0
