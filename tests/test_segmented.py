@@ -24,9 +24,10 @@ def orbits(tmp_path_factory):
         mp.delenv(autoglue.CLAIMED_ENV, raising=False)
         mp.setenv("MLG_RUN_ROOT", str(root))
         orbit = segmented.simulated(CASE, START)
-        bd = segmented.follow(str(root / "runs"), "up", CASE, orbit, START,
-                              stop={"V": AT + 1.0}, at=[AT], DS=0.5, DSMAX=1.0)
-        yield orbit, bd
+        runs = segmented.follow(str(root / "runs"), "up", CASE, orbit, START,
+                                stop={"V": AT + 1.0}, at=[AT], DS=0.5, DSMAX=1.0)
+        assert len(runs) == 1       # no fold on the way
+        yield orbit, runs[0]
 
 
 def test_the_simulation_gives_four_segments_symmetric_in_contact(orbits):
@@ -45,8 +46,9 @@ def test_the_simulation_gives_four_segments_symmetric_in_contact(orbits):
 
 def test_auto_s_orbit_agrees_with_the_simulation(orbits):
     _, bd = orbits
-    solution, = [s for s in bd("UZ") if abs(s["V"] - AT) < 1e-6]
-    row, = study.check(CASE, [{"V": solution["V"], "psi_amp": segmented.amplitude(solution),
+    solution, = [s for s in bd("UZ") if abs(s["V"] - AT) < study.AT_SPEED]
+    row, = study.check(CASE, [{"family": "high-frequency", "V": solution["V"],
+                               "psi_amp": segmented.amplitude(solution),
                                "freq": 1.0 / segmented.period(solution)}])
     assert abs(row["amp_rel"]) < study.TOLERANCE
     assert abs(row["freq_rel"]) < study.TOLERANCE
@@ -54,8 +56,19 @@ def test_auto_s_orbit_agrees_with_the_simulation(orbits):
 
 def test_the_orbit_is_stable_with_its_trivial_multiplier_at_one(orbits):
     _, bd = orbits
-    solution, = [s for s in bd("UZ") if abs(s["V"] - AT) < 1e-6]
+    solution, = [s for s in bd("UZ") if abs(s["V"] - AT) < study.AT_SPEED]
     model = segmented.mlgmodel.Model("figures", **segmented.law14(CASE), V=AT)
     verdict = segmented.stability(model, solution)
     assert abs(verdict["trivial"] - 1.0) < 1e-5
     assert verdict["stable"] and verdict["largest"] < 1.0
+
+
+def test_a_grazing_is_a_contact_of_zero_duration():
+    """segmented.grazing: the contact segments (not the gaps) whose duration
+    is below GRAZED at a fold."""
+    modes = [segmented.GAP, segmented.CONTACT_POS, segmented.GAP, segmented.CONTACT_NEG]
+    short = 0.5 * segmented.GRAZED
+    assert segmented.grazing({"T1": 0.02, "T2": short, "T3": 0.02, "T4": short}, modes) == [2, 4]
+    assert segmented.grazing({"T1": short, "T2": 0.0127, "T3": short, "T4": 0.0127}, modes) == []
+    assert segmented.grazing({"T1": 0.02, "T2": 2 * segmented.GRAZED, "T3": 0.02,
+                              "T4": short}, modes) == [4]

@@ -4,9 +4,9 @@ boundary-value problems in AUTO (models/mlg_segmented.c; docs/model.md
 glued by continuity and h = 0 at the switches.
 
     orbit = simulated(values, 100.0)       # event-located, settled (mlg_simulate)
-    bd = follow(rundir, "up", values, orbit, 100.0, stop={"V": 600}, DS=0.5)
-    stability(model, bd(2))                 # the monodromy's multipliers
-    grazings(bd)                            # where a contact segment's duration is 0
+    runs = follow(rundir, "up", values, orbit, 100.0, stop={"V": 600}, DS=0.5)
+    stability(model, runs[0](2))            # the monodromy's multipliers
+    grazing(runs[-1]("LP")[-1], orbit["modes"])   # the contacts that graze there
 
 The start is an event-located simulation: its last full period gives the
 sequence of modes and their durations, and its samples the segments'
@@ -27,12 +27,13 @@ SEG_MAX = 8
 GAP, CONTACT_POS, CONTACT_NEG = 0, 1, 2    # enum mlg_freeplay_mode
 MODE_NAMES = {GAP: "gap", CONTACT_POS: "contact+", CONTACT_NEG: "contact-"}
 # the settled orbit: 16 s from psi = 0.01 rad at CVODE rtol 1e-10 (as
-# studies/smoothing), then 0.5 s more sampled every 10 us with its switches
+# studies/smoothing), then DENSE s more (at least DENSE_PERIODS periods)
+# sampled every 10 us with its switches
 TOLERANCES = ("--rtol", 1e-10, "--atol", 1e-12)
 SETTLE = ("--t-end", 16, "--dt-out", 1e-3, *TOLERANCES)
-DENSE = ("--t-end", 0.5, "--dt-out", 1e-5, *TOLERANCES)
+DENSE, DENSE_PERIODS = 0.5, 4
 SAMPLES = 201       # points of each segment in AUTO's starting data
-PAST_GRAZING = 1e-4   # s: a contact duration this far below zero ends a run
+GRAZED = 1e-4   # s: a fold where a contact lasts less than this is a grazing
 
 
 def law14(values: Dict[str, float]) -> Dict[str, float]:
@@ -62,11 +63,14 @@ def simulated(values: Dict[str, float], V: float, psi0: float = 0.01) -> dict:
     params = law14(values)
     with tempfile.TemporaryDirectory() as tmp:
         csv, events = os.path.join(tmp, "orbit.csv"), os.path.join(tmp, "events.csv")
-        simulator.simulate(csv, "--set", "figures", "--V", V, "--psi0", psi0, *SETTLE,
-                           params=params)
+        rough = simulator.simulate(csv, "--set", "figures", "--V", V, "--psi0", psi0, *SETTLE,
+                                   params=params)
         settled = numpy.loadtxt(csv, delimiter=",", skiprows=1)[-1, 1:]
+        dense = max(DENSE, DENSE_PERIODS / rough["frequency_hz"]) if rough["frequency_hz"] \
+            else DENSE
         summary = simulator.simulate(csv, "--set", "figures", "--V", V, *simulator.state_args(
-            dict(zip(mlgmodel.UNAMES, settled))), *DENSE, "--events", events, params=params)
+            dict(zip(mlgmodel.UNAMES, settled))), "--t-end", dense, "--dt-out", 1e-5,
+            *TOLERANCES, "--events", events, params=params)
         samples = numpy.loadtxt(csv, delimiter=",", skiprows=1)
         crossed = numpy.genfromtxt(events, delimiter=",", skip_header=1, dtype=None,
                                    encoding=None)
@@ -122,28 +126,43 @@ def parameters(values: Dict[str, float], orbit: dict, V: float) -> Dict:
 
 def follow(rundir: str, name: str, values: Dict[str, float], orbit: dict, V: float,
            parameter: str = "V", stop: Optional[dict] = None, at: Sequence[float] = (),
-           **kw):
+           **kw) -> list:
     """The segmented orbits through the simulated `orbit` at speed V,
     continued in `parameter` (its direction: the sign of kw DS), labelled
-    (UZ) at the values `at` of the parameter.  Where a contact segment's
-    duration reaches zero the orbit grazes; AUTO labels it a fold (LP: the
-    penetration grows like the square of the duration, so the branch turns
-    back in the parameter, into negative durations).  The run stops just
-    past it (a duration of -PAST_GRAZING) or at `stop`; physical() keeps
-    the branch up to the grazing."""
+    (UZ) at the values `at` of the parameter, as a list of runs (diagrams)
+    <name>, <name>_1, ...: each run stops at its first fold (LP) or where a
+    contact segment's duration reaches zero (a UZ: a grazing, grazing()).
+    A fold whose contact segments last (a turning point of the orbits) is
+    passed by the next run, started there.  At a grazing the
+    boundary-value problem is singular (the orbits that meet h = 0
+    anywhere with a contact of duration 0 solve it too), and AUTO may flag
+    it as a fold instead: a fold with a contact shorter than GRAZED is a
+    grazing too, and ends the branch."""
     n = len(orbit["modes"])
     rundir = autoglue.claim(rundir)
     dat = os.path.join(rundir, f"{name}.dat")
     numpy.savetxt(dat, start_data(orbit), fmt="%.17e")
     parnames = {**dict(autoglue.read_constants(ct.CONSTANTS)["parnames"]), **duration_names(n)}
     T_pars = durations(n)
-    contact = [p for p, mode in zip(T_pars, orbit["modes"]) if mode != GAP]
-    return ct.run(rundir, name, "segmented", model=MODEL, dat=dat,
-                  PAR=parameters(values, orbit, V), NDIM=mlgmodel.NX * n,
-                  NBC=(mlgmodel.NX + 1) * n, parnames=parnames,
-                  ICP=[parameter] + T_pars + mlgmodel.MEASURES,
-                  UZR={parameter: list(at)},
-                  UZSTOP={**(stop or {}), **{p: -PAST_GRAZING for p in contact}}, **kw)
+    common = dict(NDIM=mlgmodel.NX * n, NBC=(mlgmodel.NX + 1) * n, parnames=parnames,
+                  ICP=[parameter] + T_pars + mlgmodel.MEASURES, UZR={parameter: list(at)},
+                  UZSTOP={**(stop or {}), **{p: 0.0 for p, m in zip(T_pars, orbit["modes"])
+                                             if m != GAP}}, STOP=["LP1"])
+    runs = [ct.run(rundir, name, "segmented", model=MODEL, dat=dat,
+                   PAR=parameters(values, orbit, V), **common, **kw)]
+    while True:
+        end = runs[-1][-1][-1]
+        folds = runs[-1]("LP")
+        if end["TY name"] != "LP" or not folds or grazing(folds[-1], orbit["modes"]):
+            return runs
+        runs.append(ct.run(rundir, f"{name}_{len(runs)}", "segmented", model=MODEL,
+                           data=folds[-1], **common, **kw))   # DS's sign: on, not back
+
+
+def grazing(solution, modes: Sequence[int]) -> List[int]:
+    """The (1-based) contact segments of a solution whose duration is zero
+    (below GRAZED): both, at the grazing of a symmetric orbit."""
+    return [k + 1 for k, m in enumerate(modes) if m != GAP and solution[f"T{k + 1}"] < GRAZED]
 
 
 def amplitude(solution, state: str = "psi") -> float:
@@ -163,16 +182,6 @@ def amplitude(solution, state: str = "psi") -> float:
 def period(solution) -> float:
     """The sum of a segmented orbit's durations [s]."""
     return float(sum(solution[f"T{k + 1}"] for k in range(len(modes_of(solution)))))
-
-
-def physical(branch, modes: Sequence[int]) -> int:
-    """The number of leading points of a branch whose contact durations are
-    all >= 0: the branch up to its grazing."""
-    negative = numpy.zeros(len(branch), dtype=bool)
-    for k, mode in enumerate(modes):
-        if mode != GAP:
-            negative |= numpy.asarray(branch[f"T{k + 1}"]) < 0
-    return int(numpy.argmax(negative)) if negative.any() else len(branch)
 
 
 def modes_of(solution) -> List[int]:
@@ -218,23 +227,3 @@ def stability(model: "mlgmodel.Model", solution) -> dict:
     largest = float(max(abs(others)))
     return {"multipliers": mu, "trivial": complex(mu[trivial]), "largest": largest,
             "stable": largest < 1.0}
-
-
-def grazings(bd, columns: Sequence[str] = ("V",)) -> List[dict]:
-    """Where segments' durations pass zero along each branch: {segments (the
-    1-based numbers of those that reach zero there together, as the two
-    contact segments of a symmetric orbit do), and the columns interpolated
-    linearly in the duration between the two points either side}."""
-    found = []
-    for branch in bd:
-        at = {}
-        for k in range(SEG_MAX):
-            if f"T{k + 1}" not in branch.coordnames:
-                break
-            T = numpy.asarray(branch[f"T{k + 1}"])
-            for i in numpy.nonzero(T[:-1] * T[1:] < 0)[0]:
-                w = T[i] / (T[i] - T[i + 1])
-                at.setdefault(int(i), {"segments": [], **{c: float(branch[c][i] + w * (
-                    branch[c][i + 1] - branch[c][i])) for c in columns}})["segments"].append(k + 1)
-        found += [at[i] for i in sorted(at)]
-    return found

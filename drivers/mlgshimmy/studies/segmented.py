@@ -5,16 +5,17 @@ F* = 1, y_fp = 1 mm.
 
 - Straight rolling lies in the gap, where eq. (14) is smooth: its Hopf
   points and stability by the eigenvalue scan (naming.scanned, spectrum).
-- The high-frequency orbits: started from an event-located simulation at
-  START (its last period gives the modes gap, contact+, gap, contact- and
-  their durations), continued in V both ways: up to V_MAX, and down
-  through the fold S and back along the unstable orbits to where the
-  contact segments' durations reach zero (the grazing).  Stability from
-  the monodromy, the product of the segments' (segmented.stability), at
-  every saved solution.
-- The check: at CHECKS on the stable branch, the psi amplitude and the
-  frequency of AUTO's orbit against an independent event-located
-  simulation from psi = 0.01 rad, within TOLERANCE (relative).
+- Each family of orbits (FAMILIES: high and low frequency) from an
+  event-located simulation at its start speed (its last period gives the
+  modes, gap, contact+, gap, contact-, and their durations), continued in
+  V both ways until a contact segment's duration reaches zero (a
+  grazing) or V leaves [V_MIN, V_MAX]: the high-frequency orbits up to
+  600 m/s, and down through the fold S and back, unstable, to their
+  grazing.  Stability from the monodromy, the product of the segments'
+  (segmented.stability), at every saved solution.
+- The check: at each family's check speeds, on its stable part, the psi
+  amplitude and the frequency of AUTO's orbit against an independent
+  event-located simulation from psi = 0.01 rad, within TOLERANCE.
 
     make segmented          # compute (about 7 min), the table and the figure
     make segmented-plot     # redraw from the cache
@@ -43,29 +44,35 @@ DECLARED = {
 FIGURE = "segmented"
 CASE = {"Fstar": 1.0, "yfp": 1.0, "eps_abs": 0.0, "eps_rel": 0.0}   # eq. (14) has no eps
 SMOOTHED = {"Fstar": 1.0, "yfp": 1.0, "eps_abs": 0.0, "eps_rel": 0.1}
-START = 100.0                   # m/s: the simulated orbit the branch starts from
-CHECKS = (50.0, 80.0, 150.0, 300.0, 500.0)   # m/s, on the stable high-frequency branch
+# each family of orbits: the speed of the simulated orbit it starts from,
+# and the speeds of the check, on its stable part [m/s]
+FAMILIES = {"high-frequency": {"start": 100.0, "checks": (50.0, 80.0, 150.0, 300.0, 500.0)},
+            "low-frequency": {"start": 15.0, "checks": (7.0, 10.0, 13.0, 18.0, 24.0)}}
 TOLERANCE = 1e-4                # relative, AUTO against simulation
+AT_SPEED = 1e-3                 # m/s: AUTO's UZ at a check speed lies this close (the
+                                # simulation runs at its own V)
+MARGINAL = 1e-5                 # |mu| - 1 of a multiplier at a fold (or a run's start there)
 # the check's simulation: 40 s from psi = 0.01 rad, the last second sampled every
 # 10 us (the amplitude's sampling error below 3e-7 at 45 Hz)
 CHECK_RUN = ("--t-end", 40, "--dt-out", 1e-5, "--psi0", 0.01, *segmented.TOLERANCES)
 COLUMNS = ("V", "psi_amp", "freq")
+ZOOM_V = 160.0                  # m/s: panel (a2)'s range
 
 
-def stability_mask(bd, branch, n, model):
-    """(stable per point of the first n, [(V, kind)] of its changes): the
+def stability_mask(bd, branch, model):
+    """(stable per point, [(V, kind, V before, V after)] of its changes): the
     monodromy's verdict at every saved solution, a change placed at the
     fold (LP) between two verdicts that differ, else midway, its kind from
     the multiplier that left the unit circle (TR: a complex pair, PD: -1)."""
-    saved = [(i, lab, ty) for i, lab, ty in branches.labelled_points(branch) if i < n]
+    saved = branches.labelled_points(branch)
     verdicts = []
     for i, lab, ty in saved:
-        if ty == "LP":
-            continue      # a multiplier at 1: no verdict
         solution = bd(lab)
-        verdicts.append((i, segmented.stability(model.set(V=solution["V"]), solution)))
+        verdict = segmented.stability(model.set(V=solution["V"]), solution)
+        if ty != "LP" and abs(verdict["largest"] - 1.0) > MARGINAL:   # not at a fold
+            verdicts.append((i, verdict))
     folds = [i for i, _, ty in saved if ty == "LP"]
-    mask = numpy.zeros(n, dtype=bool)
+    mask = numpy.zeros(len(branch), dtype=bool)
     changes = []
     for (a, sa), (b, sb) in zip(verdicts, verdicts[1:]):
         mask[a:b] = sa["stable"]
@@ -79,8 +86,9 @@ def stability_mask(bd, branch, n, model):
         unstable = sb if sa["stable"] else sa
         mu = unstable["multipliers"]
         outside = mu[abs(mu) > 1.0]
+        # a real multiplier through +1 away from a fold: a symmetric orbit's pitchfork
         kind = "TR" if abs(outside.imag).max() > 1e-6 else "PD" if outside.real.min() < 0 \
-            else "LP"
+            else "BP"
         changes.append((float(0.5 * (branch["V"][a] + branch["V"][b])), kind,
                         float(branch["V"][a]), float(branch["V"][b])))
     if verdicts:
@@ -89,31 +97,39 @@ def stability_mask(bd, branch, n, model):
     return mask, changes
 
 
-def orbit_branches(rundir, values, orbit):
-    """The segmented orbits through `orbit` at START, up and down in V:
-    stored branches, folds, grazings, stability changes and the checked
-    solutions at CHECKS."""
+def orbit_branches(rundir, family, values):
+    """One family of orbits (FAMILIES), from its simulated orbit up and down
+    in V: its modes, stored branches, folds, grazings, stability changes and
+    the solutions at its check speeds."""
+    start, checks = FAMILIES[family]["start"], FAMILIES[family]["checks"]
+    print(f"segmented: {family} orbit of eq. (14) at V = {start:g} m/s by simulation",
+          flush=True)
+    orbit = segmented.simulated(values, start)
+    print("segmented: modes " + ", ".join(segmented.MODE_NAMES[m] for m in orbit["modes"])
+          + ", durations " + ", ".join(f"{T:.6e}" for T in orbit["durations"]) + " s",
+          flush=True)
     model = mlgmodel.Model("figures", **segmented.law14(values))
-    out = {"branches": [], "folds": [], "grazings": [], "changes": [], "at": []}
+    out = {"modes": [segmented.MODE_NAMES[m] for m in orbit["modes"]], "branches": [],
+           "folds": [], "grazings": [], "changes": [], "at": []}
     for name, ds, stop in (("up", 0.5, {"V": ct.V_MAX}), ("down", -0.5, {"V": ct.V_MIN})):
-        bd = segmented.follow(rundir, name, values, orbit, START, stop=stop, DS=ds,
-                              at=[v for v in CHECKS if (v - START) * ds > 0])
-        for branch in bd:
-            n = segmented.physical(branch, orbit["modes"])
-            mask, changes = stability_mask(bd, branch, n, model)
-            out["branches"].append({
-                "columns": {c: numpy.asarray(branch[c])[:n] for c in COLUMNS},
-                "stable": mask, "labels": []})
-            out["changes"] += changes
-            for i, lab, ty in branches.labelled_points(branch):
-                point = bd(lab)
-                if ty == "LP" and i < n:
-                    out["folds"].append({c: point[c] for c in COLUMNS})
-                if ty == "UZ" and i < n and mask[i]:
-                    out["at"].append({"V": point["V"],
-                                      "psi_amp": segmented.amplitude(point),
-                                      "freq": 1.0 / segmented.period(point)})
-            out["grazings"] += segmented.grazings([branch], COLUMNS)
+        for bd in segmented.follow(rundir, f"{family}-{name}", values, orbit, start, stop=stop,
+                                   DS=ds, at=[v for v in checks if (v - start) * ds > 0]):
+            for branch in bd:
+                mask, changes = stability_mask(bd, branch, model)
+                out["branches"].append({"columns": {c: numpy.asarray(branch[c]) for c in COLUMNS},
+                                        "stable": mask, "labels": []})
+                out["changes"] += changes
+                for i, lab, ty in branches.labelled_points(branch):
+                    point = bd(lab)
+                    grazed = segmented.grazing(point, orbit["modes"])
+                    if ty == "LP" or (ty == "UZ" and grazed):
+                        out["grazings" if grazed else "folds"].append(
+                            {"segments": grazed, **{c: point[c] for c in COLUMNS}})
+                    checked = any(abs(point["V"] - v) < AT_SPEED for v in checks)
+                    if ty == "UZ" and mask[i] and checked:
+                        out["at"].append({"V": point["V"],
+                                          "psi_amp": segmented.amplitude(point),
+                                          "freq": 1.0 / segmented.period(point)})
     return out
 
 
@@ -123,14 +139,15 @@ def _sorted(xs, ys):
 
 
 def check(values, solutions):
-    """The solutions at CHECKS against the event-located simulation there:
+    """The solutions (at the check speeds) against the event-located
+    simulation there:
     [{V, AUTO's and the simulation's psi amplitude and frequency, relative
     errors}]."""
     rows = []
     for point in sorted(solutions, key=lambda p: p["V"]):
         sim = simulator.simulate(None, "--set", "figures", "--V", point["V"], *CHECK_RUN,
                                  params=segmented.law14(values))
-        rows.append({"V": point["V"], "amp_auto": point["psi_amp"],
+        rows.append({"family": point["family"], "V": point["V"], "amp_auto": point["psi_amp"],
                      "amp_sim": sim["psi_amplitude_rad"], "freq_auto": point["freq"],
                      "freq_sim": sim["frequency_hz"],
                      "amp_rel": point["psi_amp"] / sim["psi_amplitude_rad"] - 1.0,
@@ -155,43 +172,38 @@ def compute():
     at = gear.parameters()
     values = {**at, **CASE}
     rundir = paths.rundir(FIGURE)
-    print(f"segmented: the orbit of eq. (14) at V = {START:g} m/s by simulation", flush=True)
-    orbit = segmented.simulated(values, START)
-    print("segmented: modes " + ", ".join(segmented.MODE_NAMES[m] for m in orbit["modes"])
-          + ", durations " + ", ".join(f"{T:.6e}" for T in orbit["durations"]) + " s",
-          flush=True)
-    orbits = orbit_branches(rundir, values, orbit)
-    rows = check(values, orbits.pop("at"))
+    families = {family: orbit_branches(rundir, family, values) for family in FAMILIES}
+    rows = check(values, [{**p, "family": f} for f, o in families.items() for p in o.pop("at")])
     print("segmented: eq. (15) at eps = 0.1 y_fp, for the overlay", flush=True)
     smooth = ct.speed_diagram(paths.rundir(f"{FIGURE}/smoothed"), "figures", {**at, **SMOOTHED},
                               figure=FIGURE, **ct.SPEED_ORBIT_STEPS)
-    return {"orbits": orbits, "check": rows, "rolling": rolling(values),
-            "modes": [segmented.MODE_NAMES[m] for m in orbit["modes"]],
+    return {"families": families, "check": rows, "rolling": rolling(values),
             "smoothed": [jobs.stored(run, COLUMNS) for _, run in smooth.parts],
             "smoothed_hopf": smooth.hopf}
 
 
 def text(result) -> str:
-    orbits = result["orbits"]
-    lines = ["segmented: Fig. 10 (F* = 1, y_fp = 1 mm) under eq. (14), segments "
-             + ", ".join(result["modes"]), ""]
+    lines = ["segmented: Fig. 10 (F* = 1, y_fp = 1 mm) under eq. (14)", ""]
     lines += [f"  {name} = {v:.6f} m/s (straight rolling, eigenvalue scan)"
               for name, v in result["rolling"]["hopf"].items()]
-    lines += [f"  S = {p['V']:.6f} m/s (fold of the segmented orbits, psi amplitude "
-              f"{p['psi_amp']:.6e} rad)" for p in orbits["folds"]]
-    lines += [f"  grazing at V = {g['V']:.6f} m/s (the duration of segment"
-              f"{'s' if len(g['segments']) > 1 else ''} "
-              f"{', '.join(map(str, g['segments']))} reaches 0)" for g in orbits["grazings"]]
-    lines += [f"  stability change ({kind}) between V = {a:.3f} and {b:.3f} m/s"
-              for _, kind, a, b in orbits["changes"]]
-    lines += ["", f"  the stable orbit against the event-located simulation (tolerance "
+    for family, orbits in result["families"].items():
+        lines += ["", f"  {family} orbits, segments " + ", ".join(orbits["modes"]) + ":"]
+        lines += [f"  S = {p['V']:.6f} m/s (fold, psi amplitude {p['psi_amp']:.6e} rad)"
+                  for p in orbits["folds"]]
+        lines += [f"  grazing at V = {g['V']:.6f} m/s (the duration of segment"
+                  f"{'s' if len(g['segments']) > 1 else ''} "
+                  f"{', '.join(map(str, g['segments']))} reaches 0)"
+                  for g in orbits["grazings"]]
+        lines += [f"  stability change ({kind}) between V = {a:.3f} and {b:.3f} m/s"
+                  for _, kind, a, b in orbits["changes"]]
+    lines += ["", f"  the stable orbits against the event-located simulation (tolerance "
               f"{TOLERANCE:g} relative):",
-              "  V [m/s]  psi amp AUTO [rad]  psi amp sim. [rad]  rel.      "
+              "  orbits          V [m/s]  psi amp AUTO [rad]  psi amp sim. [rad]  rel.      "
               "freq AUTO [Hz]  freq sim. [Hz]  rel."]
     for r in result["check"]:
-        lines.append(f"  {r['V']:<7g}  {r['amp_auto']:.10e}    {r['amp_sim']:.10e}    "
-                     f"{r['amp_rel']:+.2e} {r['freq_auto']:.8f}     {r['freq_sim']:.8f}     "
-                     f"{r['freq_rel']:+.2e}")
+        lines.append(f"  {r['family']:<14}  {r['V']:<7g}  {r['amp_auto']:.10e}    "
+                     f"{r['amp_sim']:.10e}    {r['amp_rel']:+.2e} {r['freq_auto']:.8f}     "
+                     f"{r['freq_sim']:.8f}     {r['freq_rel']:+.2e}")
     return "\n".join(lines) + "\n"
 
 
@@ -203,8 +215,9 @@ def plot(result):
     table = text(result)
     jobs.write_text(f"{paths.tables_dir()}/{FIGURE}.txt", table)
     print(table, end="")
-    orbits = result["orbits"]
-    ours = jobs.loaded(orbits["branches"])
+    families = result["families"].values()
+    ours = [jobs.loaded(orbits["branches"]) for orbits in families]
+    folds = [p for orbits in families for p in orbits["folds"]]
     smoothed = [jobs.loaded(run) for run in result["smoothed"]]
     fig = plt.figure(figsize=(10, 7.4))
     grid = fig.add_gridspec(2, 2, width_ratios=(1.6, 1))
@@ -217,19 +230,24 @@ def plot(result):
                               (freq, "freq", 1.0)):
         for runs in smoothed:
             draw.plot_branch(ax, runs, "V", column, scale=scale, color=draw.palette.GUIDE)
-        draw.plot_branch(ax, ours, "V", column, scale=scale)
+        for branch in ours:
+            draw.plot_branch(ax, branch, "V", column, scale=scale)
         if column == "psi_amp":
             for a, b in zip(edges, edges[1:]):
                 ok = any(lo <= 0.5 * (a + b) <= hi for lo, hi in stable)
                 ax.plot([a, b], [0, 0], **draw.style_of(ok))
-        for k, p in enumerate(orbits["folds"]):
+        for k, p in enumerate(folds):
             draw.mark(ax, p["V"], p[column] * scale, "LP", name=f"S{k + 1}" if k else "S")
-        for g in orbits["grazings"]:
-            draw.mark(ax, g["V"], g[column] * scale, "GR")
-        for V, kind, _, _ in orbits["changes"]:
-            y = numpy.interp(V, *_sorted(numpy.concatenate([b["V"] for b in ours]),
-                                         numpy.concatenate([b[column] for b in ours])))
-            draw.mark(ax, V, y * scale, kind)
+        for orbits, branch in zip(families, ours):
+            # in (a1) the points below the zoom's 160 m/s are left to the zoom
+            low = ZOOM_V if ax is amp else 0.0
+            for g in orbits["grazings"]:
+                if g["V"] > low:
+                    draw.mark(ax, g["V"], g[column] * scale, "GR")
+            for V, kind, _, _ in [c for c in orbits["changes"] if c[0] > low]:
+                y = numpy.interp(V, *_sorted(numpy.concatenate([b["V"] for b in branch]),
+                                             numpy.concatenate([b[column] for b in branch])))
+                draw.mark(ax, V, y * scale, kind)
         if column == "psi_amp":
             for name, V in result["rolling"]["hopf"].items():
                 draw.mark(ax, V, 0.0, "HB", name=name)
@@ -241,7 +259,7 @@ def plot(result):
         ax.set_ylabel(r"$\psi$ amplitude [deg]")
     amp.set_xlim(0, ct.V_MAX)
     amp.set_title("(a1) torsional amplitude")
-    zoom.set_xlim(0, 160)
+    zoom.set_xlim(0, ZOOM_V)
     zoom.set_ylim(-0.01, 0.3)
     zoom.set_title("(a2) zoom of (a1)")
     freq.set_xlim(0, ct.V_MAX)
