@@ -83,10 +83,12 @@ int func(integer ndim, const doublereal *u, const integer *icp, const doublereal
     if (ijac > 0)
         memset(dfdu, 0, sizeof *dfdu * (size_t)(ndim * ndim));
     for (int k = 0; k < n; k++) {
-        int mode = mode_of(par, k), row = MLG_NX * k;
+        int modes[MLG_NDISCRETE] = {[MLG_DISCRETE_FREEPLAY] = mode_of(par, k),
+                                    [MLG_DISCRETE_FRICTION] = MLG_MODE_BY_STATE};
+        int row = MLG_NX * k;
         double T = par[SEG_DURATION + k], fk[MLG_NX], J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
-        int status = ijac == 0 ? mlg_rhs_in_modes(&p, &mode, u + row, fk)
-                               : mlg_rhs_jacobian_in_modes(&p, &mode, u + row, fk, J,
+        int status = ijac == 0 ? mlg_rhs_in_modes(&p, modes, u + row, fk)
+                               : mlg_rhs_jacobian_in_modes(&p, modes, u + row, fk, J,
                                                            ijac == 2 ? P : NULL);
         if (status != MLG_OK) {
             start_failed(started, "starting point outside the model's domain",
@@ -117,7 +119,7 @@ static int switch_value(const mlg_params *p, const doublereal *par, int n, int k
 {
     int s = surface_between(mode_of(par, k), mode_of(par, (k + 1) % n));
     double all[MLG_NSWITCH], grad[MLG_NSWITCH * MLG_NX];
-    int status = mlg_switching(p, u, all, grad);
+    int status = mlg_switching(p, NULL, u, all, grad);
     *h = all[s];
     if (dh != NULL) memcpy(dh, grad + MLG_NX * s, sizeof grad[0] * MLG_NX);
     return status;

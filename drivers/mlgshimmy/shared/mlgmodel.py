@@ -283,7 +283,9 @@ class Model:
         x = _state(u)
         f = (ctypes.c_double * nx)()
         J = (ctypes.c_double * (nx * nx))()   # column-major
-        modes = (ctypes.c_int * 1)(mode)
+        # enum mlg_discrete (c/mlg_model.h): the freeplay held, the friction by
+        # state (MLG_MODE_BY_STATE = -1)
+        modes = (ctypes.c_int * 2)(mode, -1)
         status = library().mlg_rhs_jacobian_in_modes(ctypes.byref(self._p), modes, x, f, J,
                                                      None)
         if status != 0:

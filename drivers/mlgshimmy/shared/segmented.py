@@ -19,7 +19,7 @@ from typing import Dict, List, Optional, Sequence
 import numpy
 
 from mlgshimmy.shared import continuation as ct
-from mlgshimmy.shared import autoglue, mlgmodel, paths, simulator
+from mlgshimmy.shared import autoglue, mlgmodel, paths, rundirs, simulator
 
 MODEL = os.path.join(paths.BUILD, "models", "mlg_segmented")
 DURATION, MODE = 30, 40       # T_k is PAR(DURATION + k), its mode PAR(MODE + k)
@@ -139,7 +139,7 @@ def follow(rundir: str, name: str, values: Dict[str, float], orbit: dict, V: flo
     it as a fold instead: a fold with a contact shorter than GRAZED is a
     grazing too, and ends the branch."""
     n = len(orbit["modes"])
-    rundir = autoglue.claim(rundir)
+    rundir = rundirs.claim(rundir)
     dat = os.path.join(rundir, f"{name}.dat")
     numpy.savetxt(dat, start_data(orbit), fmt="%.17e")
     parnames = {**dict(autoglue.read_constants(ct.CONSTANTS)["parnames"]), **duration_names(n)}

@@ -4,7 +4,7 @@ boundary conditions at an orbit's switches, and the clear refusals of a
 mode sequence that cannot be (two contact modes side by side) and of a
 smoothed law.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_segmented_plugin.py
+Run: /usr/bin/python3 -m pytest -q tests/model/test_segmented_plugin.py
 """
 import os
 import subprocess
@@ -12,7 +12,7 @@ import subprocess
 import numpy
 import pytest
 
-from mlgshimmy.shared import autoglue, mlgmodel, paths
+from mlgshimmy.shared import autosession, mlgmodel, paths
 
 # four segments gap, contact+, gap, contact-: each at a state near the
 # freeplay edge, y_tlk = r_tlk psi of about +-y_fp (psi = +-2.1e-3 rad)
@@ -60,7 +60,7 @@ def harness(tmp_path_factory):
     (where / "harness.c").write_text(HARNESS)
     (where / "mlg.constants.1").write_text("freeplay_law 1\n")
     exe = str(where / "harness")
-    subprocess.run(["gcc", "-I", os.path.join(autoglue.auto_dir(), "include"),
+    subprocess.run(["gcc", "-I", os.path.join(autosession.auto_dir(), "include"),
                     "-I", os.path.join(paths.ROOT, "c"), "-I", os.path.join(paths.ROOT, "models"),
                     str(where / "harness.c"), os.path.join(paths.BUILD, "lib", "libmlg.a"),
                     "-lm", "-o", exe], check=True)

@@ -6,11 +6,11 @@ with an independent simulation (studies.segmented.check, its tolerance
 stable, with its trivial Floquet multiplier 1 (the product of the
 segments' monodromies).  About 40 s.
 
-Run: /usr/bin/python3 -m pytest -q tests/test_segmented.py
+Run: /usr/bin/python3 -m pytest -q tests/continuation/test_segmented.py
 """
 import pytest
 
-from mlgshimmy.shared import autoglue, segmented
+from mlgshimmy.shared import rundirs, segmented
 from mlgshimmy.studies import segmented as study
 
 CASE = study.CASE
@@ -21,7 +21,7 @@ START, AT = 100.0, 104.0
 def orbits(tmp_path_factory):
     root = tmp_path_factory.mktemp("segmented")
     with pytest.MonkeyPatch.context() as mp:
-        mp.delenv(autoglue.CLAIMED_ENV, raising=False)
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
         mp.setenv("MLG_RUN_ROOT", str(root))
         orbit = segmented.simulated(CASE, START)
         runs = segmented.follow(str(root / "runs"), "up", CASE, orbit, START,
