@@ -160,6 +160,8 @@ $(eval $(call cached_study,smoothing_fig14))
 # $(RUN_ROOT)/tables/segmented.txt.
 $(eval $(call cached_study,segmented))
 $(call result,segmented): $(MLG_SEGMENTED).exe
+# tests/continuation/test_segmented.py runs its orbits
+TEST_DEPS += $(MLG_SEGMENTED).exe
 
 # Eq. (17)'s kappa* for every freeplay law of c/freeplay_laws.h (studies.laws,
 # eigenvalue scans): under a minute; the table in $(RUN_ROOT)/tables/laws.txt.

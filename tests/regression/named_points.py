@@ -16,10 +16,13 @@ UNFOLLOWED = "stops (MX"     # fig10.numbers: where a branch stopped with no con
 
 
 def of_run(run_dir):
-    """{quantity: value} of the result.json in run_dir, or None."""
+    """{quantity: value} of the result.json in run_dir, or None; a reference
+    set given as the run (compared with itself) has its named.json."""
     try:
         with open(os.path.join(run_dir, "result.json")) as f:
             numbers = json.load(f)["data"]["numbers"]
+    except FileNotFoundError:
+        return of_reference(run_dir)
     except (OSError, ValueError, KeyError, TypeError):
         return None
     return {q: v for q, v in numbers.items() if isinstance(v, (int, float))} \
