@@ -32,9 +32,15 @@ class MissingResult(RuntimeError):
 def path(figure: str, part: Optional[str] = None, root: Optional[str] = None) -> str:
     """$MLG_RUN_ROOT/<fig>/result.json, or parts/<part>.json there (root:
     another run root, e.g. the baseline's beside a geometry's)."""
-    where = [figure] if part is None else [figure, "parts"]
-    name = "result.json" if part is None else f"{part}.json"
-    return os.path.join(root, *where, name) if root else paths.under_root(*where, name)
+    if part is not None:
+        return os.path.join(parts_dir(figure, root), f"{part}.json")
+    return os.path.join(root, figure, "result.json") if root else \
+        paths.under_root(figure, "result.json")
+
+
+def parts_dir(figure: str, root: Optional[str] = None) -> str:
+    """Where a figure's cached parts are: $MLG_RUN_ROOT/<fig>/parts (root: as path)."""
+    return os.path.join(root, figure, "parts") if root else paths.under_root(figure, "parts")
 
 
 def _sha256(path: str) -> Optional[str]:

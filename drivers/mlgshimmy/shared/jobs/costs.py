@@ -17,7 +17,7 @@ def costs(figure: str, root: Optional[str] = None) -> List[Dict]:
     and its assembly ("result"), most CPU first; a record computed before
     costs were kept has None for both."""
     found = []
-    where = os.path.dirname(cache.path(figure, "x", root))
+    where = cache.parts_dir(figure, root)
     names = sorted(n[:-len(".json")] for n in os.listdir(where)
                    if n.endswith(".json")) if os.path.isdir(where) else []
     for part, path in [(n, cache.path(figure, n, root)) for n in names] + \
