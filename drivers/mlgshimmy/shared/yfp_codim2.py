@@ -4,7 +4,7 @@ table's lines for them (Figs. 14 and 18)."""
 import numpy
 
 from mlgshimmy.shared import codim2, mlgmodel, rolling
-from mlgshimmy.shared.freeplay import SCALINGS
+from mlgshimmy.shared.freeplay import width
 from mlgshimmy.shared.yfp_runs import FSTAR, values
 
 
@@ -23,7 +23,8 @@ def codim2_points(curves, scaling, other="V", fixed=None, **model):
         there = {**fixed, other: x}
         Fstar = there.pop("Fstar")
         model_there = mlgmodel.Model("figures", **there, **values(scaling, yfp, Fstar, **model))
-        return model_there, rolling.state("figures", Fstar, yfp, SCALINGS[scaling], **model)
+        eps, rest = width(scaling, model)   # the Model's smoothing width, as values() sets it
+        return model_there, rolling.state("figures", Fstar, yfp, eps, **rest)
     out = []
     for n, curve in enumerate(curves):
         try:
