@@ -73,13 +73,15 @@ def region(Fstar, kappa, b, **model):
     return 0 if b is None or kappa * freeplay.EPSILON < b else 1
 
 
-def auto_check(rundir, **model):
+def auto_check(rundir, points, **model):
     """a and b continued by AUTO in (y_fp, F*) at V = 120 from F* = 1:
-    {name: [runs]}; a run that fails is reported and left out."""
+    ({name: [runs]}, {name: [(F*, AUTO's y_fp or RunError, the scan's)]});
+    where a run stops, the point is located by AUTO at every scanned load
+    on V = 120 instead (yfp_runs.window_point_values)."""
     window = kappa_criterion.window_points(yfp_runs.FSTAR, **model)
-    out = {}
+    curves, values = {}, {}
     for name in ("a", "b"):
-        out[name] = []
+        curves[name] = []
         if not numpy.isfinite(window[name]):
             yfp_runs.progress("fig18", f"AUTO: {name} lies beyond the scan (y_fp > "
                                        f"{yfp_runs.YFP_MAX:g} mm) at F* = "
@@ -89,12 +91,20 @@ def auto_check(rundir, **model):
                                       (FSTARS[0], FSTARS[-1]), **model)
         for d, run in curve.items():
             if isinstance(run, runerror.RunError):
-                yfp_runs.progress("fig18", f"AUTO: {name} continued {d} in F* stops, left out: "
+                yfp_runs.progress("fig18", f"AUTO: {name} continued {d} in F* stops: "
                                            f"{run.brief}")
             else:
-                out[name].append(run)
+                curves[name].append(run)
                 yfp_runs.progress("fig18", f"AUTO: {name} continued {d} in F*")
-    return out
+        if len(curves[name]) < len(curve):
+            values[name] = yfp_runs.window_point_values(rundir, f"{name}_at", name, points,
+                                                        **model)
+            failed = [F for F, found, _ in values[name] if isinstance(found, runerror.RunError)]
+            yfp_runs.progress("fig18", f"AUTO: {name} located at {len(values[name])} loads "
+                                       "on V = 120 instead, one run each"
+                              + (f"; not at F* = {', '.join(f'{F:g}' for F in failed)}"
+                                 if failed else ""))
+    return curves, values
 
 
 def runs(where="fig18", **model):
@@ -110,7 +120,7 @@ def runs(where="fig18", **model):
     grid = numpy.array([[region(p["Fstar"], k, p["b"], **model) for k in MAP_KAPPA]
                         for p in points])
     yfp_runs.progress(where, "region map done")
-    return points, grid, auto_check(rundir, **model)
+    return points, grid, auto_check(rundir, points, **model)
 
 
 def kappa_star(points, **model):
@@ -120,14 +130,14 @@ def kappa_star(points, **model):
                                       model, points)
 
 
-def numbers(points, auto, kappa, best):
+def numbers(points, curves, values, kappa, best):
     out = {"kappa*": kappa, "kappa*: at F*": best["Fstar"], "kappa*: at V [m/s]": best["first_V"]}
     for p in points:
         if round(p["Fstar"] * 10, 6) % 2 == 0:
             for k in "abcp":
                 if p[k] is not None and numpy.isfinite(p[k]):
                     out[f"F* = {p['Fstar']:.1f}: {k} [y_fp/eps]"] = p[k] / freeplay.EPSILON
-    for name, runs in auto.items():
+    for name, runs in curves.items():
         # where the scan's point lies on V = 120 (b may lie at lower V)
         at_limit = [p for p in points
                     if p["V_" + name] == yfp_runs.V_LIMIT and numpy.isfinite(p[name])]
@@ -138,22 +148,29 @@ def numbers(points, auto, kappa, best):
             diff = [abs(numpy.interp(p["Fstar"], Fs[order], ys[order]) - p[name]) for p in grid]
             out[f"check: AUTO {name}, F* {Fs.min():.2f}-{Fs.max():.2f} ({len(grid)} grid "
                 "points at V = 120), largest |AUTO - scan| [mm]"] = max(diff, default=None)
+    for name, found in values.items():
+        located = [abs(y - scan) for _, y, scan in found if not isinstance(y, runerror.RunError)]
+        out[f"check: AUTO {name} located at {len(located)} of {len(found)} loads at V = 120, "
+            "one run each, largest |AUTO - scan| [mm]"] = max(located, default=None)
     return out
 
 
 def compute(name="fig18", variant=0):
     model = {"strut_variant": float(variant)} if variant else {}
     model.update(gear.parameters())   # the side-stay geometry ({} at the paper's)
-    points, grid, auto = runs(name, **model)
+    points, grid, (curves, values) = runs(name, **model)
     kappa, best = kappa_star(points, **model)
     yfp_runs.progress(name, "kappa* refined")
-    curves = [{"yfp": run[0]["yfp"], "Fstar": run[0]["Fstar"]}
-              for name_runs in auto.values() for run in name_runs]
-    return {"name": name, "variant": variant, "numbers": numbers(points, auto, kappa, best),
+    drawn = [{"yfp": run[0]["yfp"], "Fstar": run[0]["Fstar"]}
+             for name_runs in curves.values() for run in name_runs]
+    return {"name": name, "variant": variant,
+            "numbers": numbers(points, curves, values, kappa, best),
             "kappa_star": kappa,
             "kappa_star_Fstar": best["Fstar"], "points": points, "grid": grid,
-            "auto": curves,
-            "codim2": yfp_codim2.codim2_points(curves, "fixed", "Fstar", {"V": yfp_runs.V_LIMIT}, **model)}
+            "auto": drawn,
+            "auto_located": [{"yfp": y, "Fstar": F} for found in values.values()
+                             for F, y, _ in found if not isinstance(y, runerror.RunError)],
+            "codim2": yfp_codim2.codim2_points(drawn, "fixed", "Fstar", {"V": yfp_runs.V_LIMIT}, **model)}
 
 
 RASTER_KAPPA = numpy.geomspace(MAP_KAPPA[0], MAP_KAPPA[-1], 600)
@@ -204,6 +221,12 @@ def plot(result):
     for run in auto:
         ax.plot(numpy.asarray(run["yfp"]) / freeplay.EPSILON, run["Fstar"], color=draw.palette.ON_FILL,
                 ls=":", lw=1)
+    located = result.get("auto_located", [])
+    if located:
+        ax.plot([p["yfp"] / freeplay.EPSILON for p in located], [p["Fstar"] for p in located],
+                ls="none", marker="o", ms=3, mfc=draw.palette.ON_FILL, mec=draw.palette.GUIDE,
+                mew=0.6,
+                label="AUTO, one run per load")
     for point in result["codim2"]:
         draw.mark(ax, point["yfp"] / freeplay.EPSILON, point["Fstar"], point["type"])
     ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],

@@ -222,6 +222,30 @@ def window_point_curve(rundir, tag, yfp, Fstar, stop, dsmax=0.02, **model):
     return out
 
 
+def window_point_values(rundir, tag, name, points, **model):
+    """The window point `name` ("a" or "b") of each scanned point on V =
+    V_LIMIT (kappa_criterion.window_points) located by AUTO in y_fp at that
+    point's load, one run each (<tag>_<i>): [(F*, AUTO's y_fp or the
+    RunError, the scan's y_fp)].  The check where the curve of Hopf points
+    (window_point_curve) cannot be continued: AUTO differences its Hopf
+    system with a step of 1e-7 (1 + omega^2) in every state
+    (equilibrium.f90, FNHBF), 7e-4 rad at omega = 82 rad/s, wider than the
+    smoothed freeplay corner when the point's equilibrium sits on it (b at
+    rho = 15, mu = -5 deg); a one-parameter run has no such step."""
+    out = []
+    for i, p in enumerate(p for p in points
+                          if p["V_" + name] == V_LIMIT and p[name] is not None
+                          and numpy.isfinite(p[name])):
+        vals = {"Fstar": p["Fstar"], "V": V_LIMIT, **SCALINGS["fixed"], **model}
+        try:
+            found = ct.hopf_point(rundir, f"{tag}_{i}", "figures", "yfp", p[name],
+                                  width=0.05 * p[name], **vals)["yfp"]
+        except runerror.RunError as exc:
+            found = exc
+        out.append((p["Fstar"], found, p[name]))
+    return out
+
+
 def fold_curves(rundir, tag, diagrams, figure="magnitude"):
     """Curves of folds of cycles in (y_fp, V) through the folds of the given
     Diagrams; a fold already on a computed curve is not started again."""
