@@ -56,7 +56,12 @@ COLOURS = (draw.palette.ALLOWED, draw.palette.ALLOWED, draw.palette.ATTRACTOR["l
            draw.palette.ATTRACTOR["high"], draw.palette.ATTRACTOR["yaw"])
 # (curve, colour, line style) of the threshold curves a, b, c and the pitchfork
 CURVES = (("a", draw.STABLE, "-"), ("b", draw.STABLE, "--"), ("c", draw.palette.HOPF, "-"),
-          ("p", draw.palette.PITCHFORK, ":"))
+          ("p", draw.palette.PITCHFORK, ":"), ("a_end", draw.STABLE, "-."),
+          ("next", draw.STABLE, "-."))
+# a's window ends at b unless straight rolling is stable again below b: then
+# its end, and the next window's start, are drawn (dash-dot)
+LABELS = {"p": "pitchfork", "a_end": "stable again below b: its edges", "next": None}
+NAMES = {"a_end": "end of a's window", "next": "next window"}
 
 
 def region(Fstar, kappa, b, **model):
@@ -71,6 +76,20 @@ def region(Fstar, kappa, b, **model):
     if worst["low"] > 0:
         return 2
     return 0 if b is None or kappa * freeplay.EPSILON < b else 1
+
+
+def gap(Fstar, **model):
+    """{"a_end", "next"}: the end of a's window of high-frequency
+    instability in y_fp (b itself if straight rolling is not stable again
+    below b at every V <= 120) and the start of the next window (None if
+    there is none), from kappa_criterion.unstable_windows; None each if the
+    mode is never unstable."""
+    windows = kappa_criterion.unstable_windows(Fstar, "high", **model)
+    if len(windows) > 2:
+        yfp_runs.progress("fig18", f"F* = {Fstar:g}: {len(windows) - 1} bands of stable "
+                                   "straight rolling between a and b; the first is drawn")
+    return {"a_end": windows[0][1] if windows else None,
+            "next": windows[1][0] if len(windows) > 1 else None}
 
 
 def auto_check(rundir, points, **model):
@@ -114,6 +133,7 @@ def runs(where="fig18", **model):
     for Fstar in FSTARS:
         points.append(kappa_criterion.window_points(Fstar, **model))
         p = points[-1]
+        p.update(gap(Fstar, **model))
         yfp_runs.progress(where, f"F* = {Fstar:.2f}: a {p['a']}, b {p['b']}, c {p['c']:.5g} "
                            f"(V {'-' if p['V_c'] is None else format(p['V_c'], '.3g')}), "
                            f"pitchfork {p['p']:.5g}")
@@ -137,6 +157,8 @@ def numbers(points, curves, values, kappa, best):
             for k in "abcp":
                 if p[k] is not None and numpy.isfinite(p[k]):
                     out[f"F* = {p['Fstar']:.1f}: {k} [y_fp/eps]"] = p[k] / freeplay.EPSILON
+            for k in (("a_end", "next") if p.get("next") is not None else ()):
+                out[f"F* = {p['Fstar']:.1f}: {NAMES[k]} [y_fp/eps]"] = p[k] / freeplay.EPSILON
     for name, runs in curves.items():
         # where the scan's point lies on V = 120 (b may lie at lower V)
         at_limit = [p for p in points
@@ -174,7 +196,7 @@ def compute(name="fig18", variant=0):
 
 
 RASTER_KAPPA = numpy.geomspace(MAP_KAPPA[0], MAP_KAPPA[-1], 600)
-EDGES = ("a", "b", "c", "p")   # the curves bounding the regions
+EDGES = ("a", "b", "c", "p", "a_end", "next")   # the curves bounding the regions
 BEYOND = 10.0                  # a point at infinity is drawn this far beyond the plot
 
 
@@ -183,7 +205,7 @@ def edge_curves(points):
     not exist (None: no crossing for y_fp up to YFP_MAX, beyond the plot) is
     placed beyond the plot's right edge, so the curve leaves through it."""
     Fs = [p["Fstar"] for p in points]
-    return {name: ([BEYOND * MAP_KAPPA[-1] if p[name] is None or not numpy.isfinite(p[name])
+    return {name: ([BEYOND * MAP_KAPPA[-1] if p.get(name) is None or not numpy.isfinite(p[name])
                     else p[name] / freeplay.EPSILON for p in points], Fs) for name in EDGES}
 
 
@@ -197,6 +219,19 @@ def painted_regions(points, grid, raster_F):
     samples[numpy.ix_(rows, cols)] = grid
     edges = regions.curve_pixels(RASTER_KAPPA, raster_F, edge_curves(points).values())
     return regions.paint(edges, samples)
+
+
+def drawn_values(points, name):
+    """y_fp/eps of the curve `name` at each load, NaN where it is not drawn:
+    where it does not exist, and a's window's end where it is b (drawn as
+    b) but at the loads next to where it is not, so that it meets b."""
+    ys = numpy.array([numpy.nan if p.get(name) is None else p[name] / freeplay.EPSILON
+                      for p in points])
+    if name == "a_end":
+        apart = numpy.array([p.get("next") is not None for p in points])
+        near = apart | numpy.r_[apart[1:], False] | numpy.r_[False, apart[:-1]]
+        ys[~near] = numpy.nan
+    return ys
 
 
 def plot(result):
@@ -213,11 +248,9 @@ def plot(result):
                   vmax=len(REGIONS) - 0.5, alpha=0.8, shading="nearest", rasterized=True)
     Fs = [p["Fstar"] for p in points]
     for name, colour, line in CURVES:
-        ys = numpy.array([numpy.nan if p[name] is None else p[name] / freeplay.EPSILON
-                          for p in points])
+        ys = drawn_values(points, name)
         if numpy.isfinite(ys).any():   # a curve with no point (no pitchfork at a geometry)
-            ax.plot(ys, Fs, color=colour, ls=line, lw=1.6,
-                    label=name if name != "p" else "pitchfork")
+            ax.plot(ys, Fs, color=colour, ls=line, lw=1.6, label=LABELS.get(name, name))
     for run in auto:
         ax.plot(numpy.asarray(run["yfp"]) / freeplay.EPSILON, run["Fstar"], color=draw.palette.ON_FILL,
                 ls=":", lw=1)

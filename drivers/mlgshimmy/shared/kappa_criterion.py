@@ -116,6 +116,45 @@ def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN
     return best
 
 
+def unstable_windows(Fstar, band, speeds=numpy.linspace(V_MIN, V_LIMIT, 25), **model):
+    """[(start, end)]: the windows of y_fp in which the mode `band` is
+    unstable for some V in [V_MIN, V_LIMIT], the union over the speeds of
+    each speed's unstable intervals (yfp_crossings; end inf where it is
+    still unstable at YFP_MAX), from the lowest.  The edges between two
+    windows are refined on a V grid three times around the speed that sets
+    each, as extreme_yfp_crossing refines a and b.  A gap between windows is
+    a band of y_fp, beyond a and below b, in which straight rolling is
+    stable again at every speed."""
+    intervals = {}
+
+    def add(Vs):
+        for V in Vs:
+            ends = list(yfp_crossings(Fstar, V, band, **model))
+            ends += [numpy.inf] * (len(ends) % 2)
+            intervals[float(V)] = list(zip(ends[::2], ends[1::2]))
+
+    def merged():
+        out = []   # [start, end, V of start, V of end]
+        for lo, hi, V in sorted((lo, hi, V) for V, spans in intervals.items()
+                                for lo, hi in spans):
+            if out and lo <= out[-1][1]:
+                if hi > out[-1][1]:
+                    out[-1][1], out[-1][3] = hi, V
+            else:
+                out.append([lo, hi, V, V])
+        return out
+    add(speeds)
+    step = speeds[1] - speeds[0]
+    for _ in range(3):
+        windows = merged()
+        inner = [w[3] for w in windows[:-1]] + [w[2] for w in windows[1:]]
+        add(V for edge in inner for V in numpy.linspace(max(V_MIN, edge - step),
+                                                          min(V_LIMIT, edge + step), 9)
+            if float(V) not in intervals)
+        step /= 4
+    return [(w[0], w[1]) for w in merged()]
+
+
 def least_unstable(Fstar, **model):
     """At one load: the smallest y_fp [mm] with straight rolling unstable for
     some V <= V_LIMIT ("first"), that speed ("V"), the static compression
