@@ -43,6 +43,10 @@ minus that, steady otherwise.  Kinds and criteria:
 The kind `domain` (the model left its domain, e.g. a wheel lifts off) comes
 from the simulator's error, not from here.
 """
+from __future__ import annotations
+
+from typing import Any, Dict, Mapping, Optional, Tuple
+
 import numpy
 
 ENGAGED = 1.305       # low/high boundary of the amplitude / psi_fp: on the
@@ -84,7 +88,7 @@ GAP = 0.2             # a gap in the sorted peaks wider than this share of their
 QUARTIC = numpy.linalg.inv(numpy.vander(numpy.arange(-2.0, 3.0), 5, increasing=True))
 
 
-def peaks(t, x):
+def peaks(t: numpy.ndarray, x: numpy.ndarray) -> Tuple[numpy.ndarray, numpy.ndarray]:
     """Times and values of the local maxima of x (uniform samples), refined
     by the quartic through each maximum and two neighbours on either side:
     the peak error is then ~1e-7 of the amplitude at 25 samples per period
@@ -103,14 +107,14 @@ def peaks(t, x):
     return t[i] + s * (t[1] - t[0]), value
 
 
-def zero_crossings(t, x):
+def zero_crossings(t: numpy.ndarray, x: numpy.ndarray) -> Tuple[numpy.ndarray, numpy.ndarray]:
     """Indices and times of the upward crossings of x through its mean."""
     y = x - x.mean()
     k = numpy.nonzero((y[:-1] < 0) & (y[1:] >= 0))[0]
     return k, t[k] - y[k] * (t[k + 1] - t[k]) / (y[k + 1] - y[k])
 
 
-def envelope_frequency(tp, p):
+def envelope_frequency(tp: numpy.ndarray, p: numpy.ndarray) -> float:
     """Strongest frequency [Hz] of the peak sequence (the modulation)."""
     grid = numpy.linspace(tp[0], tp[-1], 4 * len(tp))
     e = numpy.interp(grid, tp, p)
@@ -119,7 +123,7 @@ def envelope_frequency(tp, p):
     return float(f[1 + numpy.argmax(spectrum[1:])])
 
 
-def window_numbers(t, psi):
+def window_numbers(t: numpy.ndarray, psi: numpy.ndarray) -> Dict[str, Any]:
     """Mean, amplitude, frequency and peak statistics of one window.  The
     mean is taken over whole periods (first to last upward crossing), so
     that a part-period at the window's ends does not move it.  Not the
@@ -142,7 +146,7 @@ def window_numbers(t, psi):
             "peaks": (tp, p), "spread": spread}
 
 
-def levels(p):
+def levels(p: numpy.ndarray) -> int:
     """Number of separate values the peaks take (1 + gaps wider than GAP of
     their range)."""
     s = numpy.sort(p)
@@ -150,7 +154,8 @@ def levels(p):
     return 1 + int(numpy.sum(numpy.diff(s) > GAP * width)) if width > 0 else 1
 
 
-def spread_trend(t, psi, t0, t1, span=SPAN):
+def spread_trend(t: numpy.ndarray, psi: numpy.ndarray, t0: float, t1: float,
+                 span: float = SPAN) -> Optional[Dict[str, float]]:
     """The modulation's trend over [t0, t1): the least-squares slope of
     log(peak spread) against time, one spread per `span` seconds, as
     {"rate" [1/s], "rate_error" (its standard error), "first", "last"
@@ -171,7 +176,7 @@ def spread_trend(t, psi, t0, t1, span=SPAN):
             "first": float(spreads[0]), "last": float(spreads[-1])}
 
 
-def trend_kind(fit):
+def trend_kind(fit: Optional[Mapping[str, float]]) -> Optional[str]:
     """"growing", "decaying" or "steady" (see the module's docstring);
     None without a fit."""
     if fit is None:
@@ -180,7 +185,8 @@ def trend_kind(fit):
     return "growing" if fit["rate"] > bound else "decaying" if fit["rate"] < -bound else "steady"
 
 
-def mode_shape(t, psi, other, frequency):
+def mode_shape(t: numpy.ndarray, psi: numpy.ndarray, other: numpy.ndarray,
+               frequency: float) -> complex:
     """other's fundamental at `frequency` relative to psi's (complex: the
     amplitude ratio and the phase lead of `other`), over whole periods."""
     k, _ = zero_crossings(t, psi)
@@ -191,13 +197,14 @@ def mode_shape(t, psi, other, frequency):
     return complex(c_other / c_psi) if c_psi != 0 else complex("nan")
 
 
-def off_centre(mean, psi_straight):
+def off_centre(mean: float, psi_straight: Optional[float]) -> bool:
     """Whether a stationary state of mean psi `mean` is not straight rolling
     (psi_straight, or None where there is none)."""
     return psi_straight is None or abs(mean - psi_straight) >= CENTRE
 
 
-def classify(t, psi, window, psi_fp, psi_straight):
+def classify(t: numpy.ndarray, psi: numpy.ndarray, window: float, psi_fp: float,
+             psi_straight: Optional[float]) -> Dict[str, Any]:
     """The kind of state reached over the last 2 * window seconds, with its
     numbers (amplitude, mean [rad], frequency, modulation [Hz]); psi_fp [rad]
     is the freeplay angle (low/high), psi_straight [rad] straight rolling's

@@ -4,12 +4,14 @@ import: the labelled points of a branch and its split by stability.
     for index, label, kind in labelled_points(branch): ...
     for xs, ys, stable in segments(branch, "V", "psi_amp"): ...
 """
-from typing import List, Optional, Tuple
+from __future__ import annotations
+
+from typing import Any, List, Optional, Tuple
 
 import numpy
 
 
-def labelled_points(branch, kind: Optional[str] = None) -> List[Tuple[int, int, str]]:
+def labelled_points(branch: Any, kind: Optional[str] = None) -> List[Tuple[int, int, str]]:
     """[(point index, label, type)] of the labelled special points of one
     branch, in order (of type `kind` only, if given).  AUTO also lists
     unlabelled stability entries ({"No Label": ...}); they are skipped."""
@@ -21,7 +23,7 @@ def labelled_points(branch, kind: Optional[str] = None) -> List[Tuple[int, int, 
     return found
 
 
-def stable_mask(branch) -> numpy.ndarray:
+def stable_mask(branch: Any) -> numpy.ndarray:
     """Per point: True where stable.  AUTO's stability() lists the last point
     index of each run of equal stability, negative for stable runs."""
     mask = numpy.zeros(len(branch), dtype=bool)
@@ -32,7 +34,7 @@ def stable_mask(branch) -> numpy.ndarray:
     return mask
 
 
-def runs_of(mask, overlap: bool = True) -> List[slice]:
+def runs_of(mask: numpy.ndarray, overlap: bool = True) -> List[slice]:
     """Slices of equal values of a boolean array; with overlap each reaches
     one point into the next, so that plotted segments join."""
     mask = numpy.asarray(mask)
@@ -44,7 +46,7 @@ def runs_of(mask, overlap: bool = True) -> List[slice]:
     return out
 
 
-def segments(branch, x: str, y: str) -> List[Tuple[numpy.ndarray, numpy.ndarray, bool]]:
+def segments(branch: Any, x: str, y: str) -> List[Tuple[numpy.ndarray, numpy.ndarray, bool]]:
     """One branch split into runs of equal stability: [(xs, ys, stable)]."""
     xs, ys = numpy.asarray(branch[x]), numpy.asarray(branch[y])
     stable = stable_mask(branch)

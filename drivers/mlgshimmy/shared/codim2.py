@@ -37,17 +37,20 @@ side of the GH point where the Hopf points are subcritical).  kink(model, u): th
 (where the mode moves eta', a2 decides the criticality up to an amplitude,
 and l1 = 0 is then the one-sided expansion's).
 """
-from typing import Callable, Dict, List, Sequence, Tuple
+from __future__ import annotations
+
+from typing import Any, Callable, Dict, List, Sequence, Tuple
 
 import numpy
+from numpy.typing import ArrayLike
 
-from mlgshimmy.shared import lyapunov, spectrum
+from mlgshimmy.shared import lyapunov, mlgmodel, spectrum
 
 TOL = 1e-8       # of the curve's extent in each parameter
 TYPES = ("GH", "BT", "ZH", "HH")
 
 
-def kink(model, u):
+def kink(model: Any, u: Any) -> Tuple[float, float]:
     """(Re a2, the psi amplitude up to which it decides) at a Hopf point of
     the curve (lyapunov.kink_coefficient, lyapunov.kink_amplitude)."""
     hopf = lyapunov.first_lyapunov(model, u)
@@ -68,7 +71,7 @@ def _critical(A):
     return eig, i, j
 
 
-def tests(model, u) -> Dict[str, float]:
+def tests(model: mlgmodel.Model, u: ArrayLike) -> Dict[str, float]:
     """The test functions at a point of the Hopf curve, and omega there
     (GH NaN on neutral saddles, which have no l1, omega 0 there)."""
     A = model.jacobian(u)
@@ -125,7 +128,8 @@ def _onto_curve(at, p0, p1, s, scale, along):
     return tuple(((base + t * move) * scale).tolist())
 
 
-def locate(at, p0, p1, kind: str, scale, along: int) -> Tuple[float, float, float]:
+def locate(at: Callable, p0: Sequence[float], p1: Sequence[float], kind: str, scale: numpy.ndarray,
+           along: int) -> Tuple[float, float, float]:
     """(a, b, s): the point between stored points p0 and p1 where test
     `kind` is 0, and its place s along the segment."""
     def sign(s):

@@ -8,10 +8,13 @@ curves of Hopf points and folds of cycles.
     po = periodic_from(rundir, "po_F1", eq("HB1"), stop={"V": 600})
     d = speed_diagram(rundir, "figures", {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1})
 """
+from __future__ import annotations
+
 import os
-from typing import Any, Optional, Sequence
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import autoglue, autosession, diagrams, rundirs, runerror
 from mlgshimmy.shared import branches
@@ -64,7 +67,7 @@ class Start:
         mlgmodel.register_constants(self.model)
 
 
-def ends_branch(point, parameter: str) -> bool:
+def ends_branch(point: Any, parameter: str) -> bool:
     """An MX point that is an end, not a failure: a wheel lifts off there
     (the model's domain ends), or the orbits approach a connection of
     saddles (their period grows without bound: domain.stop_reason), or a
@@ -133,7 +136,8 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
                        keep_last=ends is not None and ends.keep)
 
 
-def reported(what: str, make, errors=(runerror.RunError,)):
+def reported(what: str, make: Callable[[], Any],
+             errors: Tuple[type, ...] = (runerror.RunError,)) -> Any:
     """make() (a run or a curve), or None with one REPORTED line naming
     `what` and why when it fails: a figure draws the curves it has and says
     which it left out."""
@@ -144,7 +148,7 @@ def reported(what: str, make, errors=(runerror.RunError,)):
         return None
 
 
-def load(rundir: str, name: str):
+def load(rundir: str, name: str) -> Any:
     """A run saved by run() (b./s./d.<name> in rundir) read back as a
     diagram, checked as run() checks it (MX allowed: such runs are kept)."""
     files = [os.path.join(rundir, f"{kind}.{name}") for kind in "bsd"]
@@ -161,15 +165,15 @@ def load(rundir: str, name: str):
 
 
 def equilibria(rundir: str, name: str, start: Start, parameter: str = "V",
-               stop: Optional[dict] = None, overlay: Optional[str] = None, **kw: Any):
+               stop: Optional[dict] = None, overlay: Optional[str] = None, **kw: Any) -> Any:
     """Straight rolling continued in `parameter` from `start` (overlay: a
     constants/runs/c.<overlay> on top of c.equilibria)."""
     return run(rundir, name, "equilibria", overlay, PAR=start.PAR, U=start.U,
                ICP=[parameter] + mlgmodel.MEASURES, UZSTOP=stop or {}, **kw)
 
 
-def periodic_from(rundir: str, name: str, point, parameter: str = "V",
-                  stop: Optional[dict] = None, overlay: Optional[str] = None, **kw: Any):
+def periodic_from(rundir: str, name: str, point: Any, parameter: str = "V",
+                  stop: Optional[dict] = None, overlay: Optional[str] = None, **kw: Any) -> Any:
     """The periodic orbits born at the Hopf point `point` (or through the
     orbit `point`), continued in `parameter` (overlay as for equilibria)."""
     return run(rundir, name, "periodic", overlay, data=point,
@@ -178,7 +182,8 @@ def periodic_from(rundir: str, name: str, point, parameter: str = "V",
 
 
 def hopf_point(rundir: str, name: str, parameter_set: str, parameter: str, value: float,
-               width: Optional[float] = None, state=None, **values: float):
+               width: Optional[float] = None, state: Optional[Callable[[float], Any]] = None,
+               **values: float) -> Any:
     """AUTO's HB solution at the Hopf point near `value` (from a spectrum
     scan): straight rolling continued through a narrow window around it with
     steps small enough for AUTO's Hopf test (state(value): straight rolling
@@ -207,8 +212,10 @@ def hopf_points(rundir: str, name: str, parameter_set: str, parameter: str,
             for k, (v, _) in enumerate(found, 1)]
 
 
-def follow_orbits(rundir, names, start, parameter, hopf, gap, bounds, allow_failed=False,
-                  figure="orbits", **kw):
+def follow_orbits(rundir: str, names: Callable[[int], str], start: Any, parameter: str,
+                  hopf: Mapping[float, float], gap: Callable[[float], float],
+                  bounds: Sequence[float], allow_failed: Any = False, figure: str = "orbits",
+                  **kw: Any) -> Tuple[List[Any], Dict[float, bool]]:
     """The periodic orbits from `start` (an HB point or an orbit) continued
     in `parameter` within `bounds`, across the Hopf points of straight
     rolling on the way, `hopf` = {value: frequency in Hz}.
@@ -348,7 +355,7 @@ class Ends:
 EDGE = Ends(ends_branch, "inside the model's domain")
 
 
-def rung_constants(own, factors):
+def rung_constants(own: Mapping[str, float], factors: Mapping[str, float]) -> Dict[str, float]:
     """A rung's AUTO constants: each factor times the run's own value
     (own: {constant: value}), NTST as a whole number."""
     out = {}
@@ -358,14 +365,15 @@ def rung_constants(own, factors):
     return out
 
 
-def rung_cost(own, rung):
+def rung_cost(own: Mapping[str, float], rung: Mapping[str, float]) -> float:
     """How many times its own run a rung costs: collocation work grows
     with NTST, the number of steps with 1/DSMAX."""
     return (rung.get("NTST", own["NTST"]) / own["NTST"]) * (own["DSMAX"]
                                                             / rung.get("DSMAX", own["DSMAX"]))
 
 
-def with_ladder(attempt, own, what, keep_mx=False, keep_last=False):
+def with_ladder(attempt: Callable[..., Any], own: Callable[[], Mapping[str, float]], what: str,
+                keep_mx: bool = False, keep_last: bool = False) -> Any:
     """attempt(mx, **constants) -> diagram; own() -> the run's own
     STEP_CONSTANTS.  With keep_mx (the caller draws a branch up to an MX
     and reports where it stopped) the run as given, MX allowed.  Else the
@@ -423,7 +431,9 @@ def _leaving_jump(values, kw):
     return int(jumps[0])
 
 
-def collapse_within(branch, parameter, hopf, gap, largest=0.0):
+def collapse_within(branch: Any, parameter: str, hopf: Mapping[float, float],
+                    gap: Callable[[float], float],
+                    largest: float = 0.0) -> Optional[Tuple[int, float]]:
     """(index, h): the first point after the run's start where its orbits
     reach straight rolling at the Hopf point h of `hopf` ({value: frequency
     in Hz}), or None.  There the amplitude has a least value below COLLAPSING
@@ -473,15 +483,15 @@ class Diagram:
         self.names, self.named = names, list(named)
         self.__dict__.update(about)
 
-    def name_of(self, run):
+    def name_of(self, run: Any) -> Optional[str]:
         """The name of one of the diagram's runs."""
         return next(name for (_, r), name in zip(self.parts, self.names) if r is run)
 
     @property
-    def branches(self):
+    def branches(self) -> List[Any]:
         return [run for _, run in self.parts]
 
-    def folds(self):
+    def folds(self) -> List[Tuple[Any, int, float, float]]:
         """[(run, label, value, psi_amp)] of every fold of cycles, except LP
         labels within 0.1% of a Hopf value: AUTO's fold test fires spuriously
         on the first steps from a Hopf point (seen at y_fp = 0.35, 0.5 and
@@ -497,7 +507,7 @@ class Diagram:
 SPEED_ORBIT_STEPS = {"DS": 0.05, "DSMAX": 1.0, "NMX": 2000}
 
 
-def geometry_orbit_steps(baseline):
+def geometry_orbit_steps(baseline: bool) -> Dict[str, float]:
     """The orbit runs' constants beyond the paper's ({} at the baseline):
     with side-stay angles the links sit off-centre in the freeplay, and the
     low-frequency orbits fold sharply (four folds between H1 and H2 at
@@ -510,9 +520,11 @@ def geometry_orbit_steps(baseline):
     return {} if baseline else {"DSMIN": 1e-9, "DS": 0.005}
 
 
-def speed_diagram(rundir, parameter_set, values, grid=SPEED_SCAN,
-                  parameter="V", tag="", first=1, gap=0.01, allow_failed=False,
-                  figure="orbits", about=None, state=None, **steps):
+def speed_diagram(rundir: str, parameter_set: str, values: Mapping[str, float],
+                  grid: ArrayLike = SPEED_SCAN, parameter: str = "V", tag: str = "",
+                  first: int = 1, gap: float = 0.01, allow_failed: Any = False,
+                  figure: str = "orbits", about: Optional[Mapping[str, Any]] = None,
+                  state: Optional[Callable[[float], Any]] = None, **steps: Any) -> Diagram:
     """The Hopf points of straight rolling along `grid` of `parameter` and
     the periodic orbits born at each, followed across the others
     (follow_orbits) within the grid's range; a Hopf point where an earlier
@@ -569,8 +581,9 @@ def diagram_from_rest(rundir, parameter_set, allow_failed=False, figure="fig10",
                                                **(steps or {})})
 
 
-def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, with_period=False,
-               overlay=None, **kw):
+def hopf_curve(rundir: str, name: str, point: Any, parameters: Sequence[str] = ("Fstar", "V"),
+               stop: Optional[Mapping[str, Sequence[float]]] = None, with_period: bool = False,
+               overlay: Optional[str] = None, **kw: Any) -> Any:
     """Continue the Hopf point `point` in two parameters (with_period: the
     period PAR(11) printed too; overlay: constants/runs/c.<overlay> on top
     of c.hopf_curve)."""
@@ -579,7 +592,7 @@ def hopf_curve(rundir, name, point, parameters=("Fstar", "V"), stop=None, with_p
                **kw)
 
 
-def fold_icp(parameters):
+def fold_icp(parameters: Sequence[str]) -> List[Union[str, int]]:
     """ICP of a fold-of-cycles continuation in two parameters: the period
     PAR(11) must come third, or AUTO keeps it fixed (periodic.f90, INITPS:
     the period is free only if ICP(3) = 11 or exactly two parameters are
@@ -590,8 +603,9 @@ def fold_icp(parameters):
 FOLD_START = {"DS": 0.01, "DSMAX": 0.05}
 
 
-def fold_curve(rundir, name, point, parameters=("V", "Fstar"), stop=None, start=FOLD_START,
-               both_ways=False, **kw):
+def fold_curve(rundir: str, name: str, point: Any, parameters: Sequence[str] = ("V", "Fstar"),
+               stop: Optional[Mapping[str, Sequence[float]]] = None,
+               start: Mapping[str, float] = FOLD_START, both_ways: bool = False, **kw: Any) -> Any:
     """Continue the fold of periodic orbits `point` (an LP label of an orbit
     run) in two parameters.  AUTO 0.9.2 first only generates the extended
     system's starting data (5 steps, ending in EP; run <name>_start with the

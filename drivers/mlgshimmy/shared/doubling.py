@@ -8,6 +8,10 @@ not followed further (a cascade is not chased).
     doubled = follow(rundir, "pd", diagram.branches, "Fstar", (0.02, 3.5), DS=0.002)
     for point, run in doubled: ...   # the PD solution and the run from it
 """
+from __future__ import annotations
+
+from typing import Any, List, Sequence, Tuple
+
 from mlgshimmy.shared import continuation as ct
 
 # relative: a PD point this close to a doubled run's end (its BP) is that
@@ -16,12 +20,14 @@ from mlgshimmy.shared import continuation as ct
 REACHED = 1e-3
 
 
-def points(diagrams):
+def points(diagrams: Sequence[Any]) -> List[Any]:
     """The PD solutions of the runs `diagrams`, in order."""
     return [point for diagram in diagrams for point in diagram("PD")]
 
 
-def follow(rundir, name, diagrams, parameter, bounds, allow_mx=ct.EDGE, **steps):
+def follow(rundir: str, name: str, diagrams: Sequence[Any], parameter: str,
+           bounds: Sequence[float], allow_mx: Any = ct.EDGE,
+           **steps: Any) -> List[Tuple[Any, Any]]:
     """[(PD point, run <name><k>)] for each PD point of `diagrams`: the
     orbits of twice the period from it, continued in `parameter` until it
     leaves `bounds` or meets the orbits of single period again (their
@@ -42,7 +48,7 @@ def follow(rundir, name, diagrams, parameter, bounds, allow_mx=ct.EDGE, **steps)
     return out
 
 
-def describe(parameter, doubled):
+def describe(parameter: str, doubled: Sequence[Tuple[Any, Any]]) -> List[str]:
     """The table's lines: where each PD point is and where its doubled
     orbits run and end (BP: back on the single-period orbits, at another
     PD point); one line saying there is none otherwise."""

@@ -6,7 +6,12 @@ magnitude figures (shared.yfp_runs) run AUTO on it.
 Scalings: "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1, eps_abs = 0),
 "fixed" keeps eps = 0.1 mm (eps_abs = 0.1, eps_rel = 0).
 """
+from __future__ import annotations
+
+from typing import Mapping, Tuple
+
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import gear, mlgmodel, overlay
 
@@ -27,7 +32,7 @@ FIG13_FREEPLAYS = (0.2, 0.5, 1.0, 2.0)                 # y_fp [mm], "ratio"
 FIG14_FREEPLAYS = (0.05, 0.098, 0.11, 0.15, 0.35, 1.0)  # y_fp [mm], "fixed"
 
 
-def epsilon(case):
+def epsilon(case: Mapping[str, float]) -> float:
     """The smoothing width eps = eps_abs + eps_rel * y_fp [mm] of a freeplay case."""
     return case["eps_abs"] + case["eps_rel"] * case["yfp"]
 
@@ -38,14 +43,15 @@ def law_label() -> str:
     return "eq. (15)" if law == 0 else f"the {overlay.law_name(law)} law"
 
 
-def force(y_m, yfp_m, eps_m, k_tlk=1.0):
+def force(y_m: ArrayLike, yfp_m: float, eps_m: float, k_tlk: float = 1.0) -> numpy.ndarray:
     """The gear's freeplay law: force [N] at the deflections y_m [m]
     (eq. (14) at eps_m = 0)."""
     law = gear.current().law()
     return numpy.array([mlgmodel.torque_link_force(law, k_tlk, v, yfp_m, eps_m) for v in y_m])
 
 
-def profile(yfp, scaling, k_tlk, span=3.0, n=801):
+def profile(yfp: float, scaling: str, k_tlk: float, span: float = 3.0,
+            n: int = 801) -> Tuple[numpy.ndarray, numpy.ndarray]:
     """The gear's law: (y_tlk [mm], M_kpsi/r_tlk [N]) over |y_tlk| <= span*y_fp."""
     eps = epsilon({**SCALINGS[scaling], "yfp": yfp})
     y = numpy.linspace(-span * yfp, span * yfp, n)

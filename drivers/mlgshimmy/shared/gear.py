@@ -21,11 +21,13 @@ Every cached result records record() and is refused on read when it was
 made for another gear (shared.jobs.cache).  Figures say so in their
 title (stamp()) and tables in a line (describe()).
 """
+from __future__ import annotations
+
 import functools
 import json
 import os
 import sys
-from typing import Dict, Optional, Tuple
+from typing import Any, Dict, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import geometry, overlay
 
@@ -50,7 +52,7 @@ class Gear:
     def __hash__(self) -> int:
         return hash(self.key())
 
-    def key(self):
+    def key(self) -> Tuple[Tuple[float, float, int], Tuple[Tuple[str, float], ...]]:
         return (self.geometry.key(), self.overlay)
 
     @property
@@ -105,7 +107,7 @@ class Gear:
         return cls(geometry.Geometry(record["rho_deg"], record["mu_deg"], record["eom_terms"]),
                    tuple(record["set"].items()))
 
-def from_environment(environ=os.environ) -> Gear:
+def from_environment(environ: Mapping[str, str] = os.environ) -> Gear:
     """The gear MLG_RHO_DEG, MLG_MU_DEG, MLG_EOM and MLG_SET name;
     GeometryError or OverlayError naming the make variable."""
     return Gear(geometry.from_environment(environ), overlay.from_environment(environ))
@@ -178,7 +180,7 @@ def baseline_numbers(figure: str) -> Optional[dict]:
     return numbers if isinstance(numbers, dict) else None
 
 
-def stamp(fig) -> None:
+def stamp(fig: Any) -> None:
     """Name the gear in a figure's title (shared.draw.save calls it):
     appended to its suptitle, or a suptitle of its own; nothing at the
     baseline."""
@@ -205,7 +207,7 @@ def check() -> None:
             raise ValueError(f"SET='{given}': {exc}" if model.overlay else str(exc)) from None
 
 
-def main(argv) -> None:
+def main(argv: Sequence[str]) -> None:
     """`make BASE`: "<tag> <tree> <rho> <mu> <eom>" of the environment's
     gear, for mk/gear.mk; a bad one exits 1 naming the variable."""
     if len(argv) != 2 or argv[0] != "make":

@@ -17,11 +17,13 @@ conserves energy at non-zero angles) when an angle is given, else to 0.
 y_tlk(): the torque-link apex deflection at a state, y_tlk = r_tlk(eta)
 (psi + beta sin p) (docs/model.md 8.1; c/freeplay.h).
 """
+from __future__ import annotations
+
 import functools
 import math
 import os
 import re
-from typing import Dict, Mapping, Optional
+from typing import Any, Dict, Mapping, Optional, Tuple
 
 from mlgshimmy.shared import number_text, overlay
 
@@ -105,7 +107,7 @@ class Geometry:
     def __hash__(self) -> int:
         return hash(self.key())
 
-    def key(self):
+    def key(self) -> Tuple[float, float, int]:
         return (self.rho_deg, self.mu_deg, self.eom_terms)
 
     @property
@@ -180,7 +182,7 @@ def from_environment(environ: Mapping[str, str] = os.environ) -> Geometry:
 V_FROM = 0.5    # m/s, continuation.V_MIN: where runs along V start with side-stay angles
 
 
-def y_tlk(model, u) -> float:
+def y_tlk(model: Any, u: Mapping[str, float]) -> float:
     """The torque-link apex deflection [m] at the state u ({name: value}):
     r_tlk(eta) psi_s, psi_s = psi + beta sin p, the twist the links resist
     (eq. 15; c/freeplay.h), p the side-stay angle of mlg_diagnose."""

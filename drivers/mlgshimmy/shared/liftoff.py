@@ -13,7 +13,10 @@ a negative tyre load within T_END.
     lifts_off(csv, 580.0, 0.3)                        # True / False
     edge_speed(csv, 0.3, 450.0, 600.0)                # lowest V, or None
 """
+from __future__ import annotations
+
 import os
+from typing import Any, Callable, Mapping, Optional
 
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import simulator
@@ -27,7 +30,9 @@ TOL_F = 0.005             # the edge's ends in F* (on V = V_MAX)
 LOWER_BY, LOWEST_V = 100.0, 100.0   # m/s: edge_speed's bracket moves down this way
 
 
-def lifts_off(csv, V, Fstar, case=freeplay.NOMINAL, t_end=T_END, params=None, rolling=None):
+def lifts_off(csv: str, V: float, Fstar: float, case: Mapping[str, float] = freeplay.NOMINAL,
+              t_end: float = T_END, params: Optional[Mapping[str, float]] = None,
+              rolling: Optional[Callable[[float], Mapping[str, float]]] = None) -> bool:
     """Whether the run from straight rolling (psi + PSI0) at (V, F*) stops
     on a negative tyre load within t_end; a stop for another reason raises
     SimulationError naming it.  params: more model parameters for the
@@ -57,7 +62,8 @@ class HoldsAtLow(ValueError):
     """The bisection's test holds at its low end already."""
 
 
-def bisected(test, lo, hi, tol, what, checked=False):
+def bisected(test: Callable[[float], bool], lo: float, hi: float, tol: float, what: str,
+             checked: bool = False) -> Optional[float]:
     """The value between lo and hi (either order) nearest lo where test()
     starts to hold, bisected to tol (test must fail at lo and hold at hi),
     or None if it fails at hi.  lo is run only when the value comes out
@@ -76,7 +82,8 @@ def bisected(test, lo, hi, tol, what, checked=False):
     return found
 
 
-def edge_speed(csv, Fstar, lo, hi, tol=TOL_V, **options):
+def edge_speed(csv: str, Fstar: float, lo: float, hi: float, tol: float = TOL_V,
+               **options: Any) -> Optional[float]:
     """The lowest speed in [lo, hi] at which a wheel lifts off (within
     T_END) at load F*, or None if none does up to hi (one crossing: lift-off
     within a fixed time need not be monotone in V).  Where a wheel lifts
@@ -93,7 +100,8 @@ def edge_speed(csv, Fstar, lo, hi, tol=TOL_V, **options):
         raise
 
 
-def edge_load(csv, V, lo, hi, tol=TOL_F, checked=False, **options):
+def edge_load(csv: str, V: float, lo: float, hi: float, tol: float = TOL_F, checked: bool = False,
+              **options: Any) -> Optional[float]:
     """The load between lo (no lift-off) and hi (lift-off) where lift-off
     starts at speed V, or None if none at hi (checked: as for bisected)."""
     return bisected(lambda f: lifts_off(csv, V, f, **options), lo, hi, tol, "F*", checked)

@@ -18,10 +18,13 @@ f need only be smooth along q: the oleo's quadratic damping |eta'| eta'
 is not at eta' = 0, but the critical modes of straight rolling have no axial
 part (q_eta = q_eta' = 0), so f is differentiated only where it is smooth.
 """
+from __future__ import annotations
+
 import itertools
-from typing import Callable, NamedTuple
+from typing import Any, Callable, NamedTuple, Tuple
 
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import mlgmodel
 
@@ -85,7 +88,7 @@ def complex_form(real_form: Callable) -> Callable:
     return form
 
 
-def exact_forms(model, u):
+def exact_forms(model: Any, u: ArrayLike) -> Tuple[Callable, Callable]:
     """(B, C) at u for complex arguments, exact to rounding: the c/ library's
     real forms (Model.second_form, Model.third_form)."""
     u = numpy.asarray(u, dtype=float)
@@ -93,7 +96,7 @@ def exact_forms(model, u):
             complex_form(lambda x, y, z: model.third_form(u, x, y, z)))
 
 
-def difference_forms(model, u, h: float):
+def difference_forms(model: Any, u: ArrayLike, h: float) -> Tuple[Callable, Callable]:
     """(B, C) at u for complex arguments from central differences of the
     exact Jacobian, step h: B(x, y) = d/ds J(u + s x) y, C(x, y, z) =
     d2/ds dt J(u + s x + t y) z."""
@@ -102,7 +105,7 @@ def difference_forms(model, u, h: float):
             complex_form(lambda x, y, z: _mixed(model, u, x, y, h) @ z))
 
 
-def critical_pair(A: numpy.ndarray):
+def critical_pair(A: numpy.ndarray) -> Tuple[float, numpy.ndarray, numpy.ndarray, float]:
     """(omega, q, p, Re lambda) of the eigenvalue lambda of A nearest the
     imaginary axis with Im lambda > 0: A q = lambda q, <q, q> = 1, and the
     left eigenvector p (A^T p = conj(lambda) p) with <p, q> = conj(p) . q = 1."""
@@ -139,21 +142,21 @@ def _state(u) -> numpy.ndarray:
     return numpy.asarray(u, dtype=float)
 
 
-def first_lyapunov(model, u) -> Hopf:
+def first_lyapunov(model: Any, u: Any) -> Hopf:
     """l1 at the equilibrium u (a sequence or {state name: value}) of a
     model with exact forms (an mlgmodel.Model)."""
     u = _state(u)
     return coefficient(model.jacobian(u), *exact_forms(model, u))
 
 
-def at_step(model, u, h: float) -> Hopf:
+def at_step(model: Any, u: Any, h: float) -> Hopf:
     """coefficient() with B and C by central differences of step h."""
     u = _state(u)
     hopf = coefficient(model.jacobian(u), *difference_forms(model, u, h))
     return hopf._replace(h=h)
 
 
-def by_differences(model, u, steps=STEPS) -> Hopf:
+def by_differences(model: Any, u: Any, steps: ArrayLike = STEPS) -> Hopf:
     """l1 at the equilibrium u (at_step) for each of `steps` (decreasing by
     halves), kept at the step whose value and its two neighbours' differ
     least relative to their size: their spread is the error estimate.
@@ -182,7 +185,7 @@ def by_differences(model, u, steps=STEPS) -> Hopf:
 KINK_STEPS = 64
 
 
-def kink_coefficient(model, u, hopf: Hopf, steps: int = KINK_STEPS) -> complex:
+def kink_coefficient(model: Any, u: Any, hopf: Hopf, steps: int = KINK_STEPS) -> complex:
     """a2 of the normal form z' = (mu + i omega) z + a2 |z| z + c1 |z|^2 z
     where f has a kink on the critical plane (the oleo's |eta'| eta' at
     eta' = 0, when q moves eta'): the first harmonic of the one-sided

@@ -25,9 +25,12 @@ two disagree, no branch tells or |l1| is small (weak), against short
 simulations on each side (simulated).  Where they disagree, the
 description says so.
 """
-from typing import Dict, List, Optional, Sequence
+from __future__ import annotations
+
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import branches, lyapunov, mlgmodel, simulator, spectrum
 
@@ -66,8 +69,8 @@ DECAYED, PERSISTS = 0.1, 0.5
 WEAK_ZERO_FREEPLAY = 0.05   # rad: simulator.STARTS["shimmy"], a large swing
 
 
-def mode(parameter_set: str, parameter: str, value: float, state=None,
-         **values: float) -> Dict[str, object]:
+def mode(parameter_set: str, parameter: str, value: float,
+         state: Optional[Callable[[float], Any]] = None, **values: float) -> Dict[str, object]:
     """The mode crossing the imaginary axis at the Hopf point `value`:
     {"freq_hz", "band" ("low"/"high"), "dof" (DEGREES_OF_FREEDOM's word for
     the largest angle of its eigenvector), "loses" (True where straight
@@ -126,7 +129,7 @@ def names(modes: Sequence[Dict[str, object]]) -> List[str]:
     return out
 
 
-def weak(model: mlgmodel.Model, u, hopf: lyapunov.Hopf) -> bool:
+def weak(model: mlgmodel.Model, u: ArrayLike, hopf: lyapunov.Hopf) -> bool:
     """|l1| small: the normal form's orbit where the pair's real part is
     0.01 omega would reach beyond the angle over which the field is cubic
     (module constants)."""
@@ -136,7 +139,7 @@ def weak(model: mlgmodel.Model, u, hopf: lyapunov.Hopf) -> bool:
     return 2 * abs(hopf.q[0]) * numpy.sqrt(0.01 / abs(hopf.l1)) > angle
 
 
-def criticality(value: float, loses: bool, orbits, parameter: str = "V",
+def criticality(value: float, loses: bool, orbits: Sequence[Any], parameter: str = "V",
                 others: Sequence[float] = ()) -> Optional[str]:
     """"supercritical" or "subcritical" from the orbit branches `orbits`
     (runs of AUTO diagrams, or stored branches) where they come nearest to
@@ -202,7 +205,8 @@ def _amplitude(parameter_set, parameter, value, psi0, t_end, state, values):
 
 
 def simulated(parameter_set: str, parameter: str, value: float, m: Dict[str, object],
-              state=None, others: Sequence[float] = (), **values: float) -> Dict[str, object]:
+              state: Optional[Callable[[float], Any]] = None, others: Sequence[float] = (),
+              **values: float) -> Dict[str, object]:
     """The criticality short simulations on each side give (module
     constants): {"verdict": "supercritical", "subcritical" or "unsettled"
     (the motion died out on the unstable side, or neither decayed nor
@@ -278,7 +282,8 @@ def agreement(points: Sequence[Dict[str, object]]) -> str:
     return f"criticality: {agree} of {len(points)} Hopf points agree (l1, branch, simulation)"
 
 
-def named_points(hopf, orbits, parameter_set: str, parameter: str, state=None,
+def named_points(hopf: Sequence[Tuple[float, float]], orbits: Sequence[Any], parameter_set: str,
+                 parameter: str, state: Optional[Callable[[float], Any]] = None,
                  **values: float) -> List[Dict[str, object]]:
     """[{"name", <parameter>, "freq_hz", "band", "dof", "loses", "l1",
     "mu_slope", "weak", "a2", "kink_psi", "criticality" (by_coefficients),
@@ -300,7 +305,8 @@ def named_points(hopf, orbits, parameter_set: str, parameter: str, state=None,
     return out
 
 
-def scanned(parameter_set: str, parameter: str, grid, **values: float) -> Dict[str, float]:
+def scanned(parameter_set: str, parameter: str, grid: ArrayLike,
+            **values: float) -> Dict[str, float]:
     """{name: value} of the Hopf points of straight rolling along `grid` of
     `parameter`, found by the eigenvalue scan (spectrum.hopf_scan, no AUTO)
     and named by their mode."""

@@ -16,10 +16,12 @@ FREEPLAY=tanh adds that entry): a name of the table MLG_FREEPLAY_LAWS of
 c/freeplay_laws.h, read as text too, held as its index there (the switch
 freeplay_law); the paper's law (15), atan, is no overlay.
 """
+from __future__ import annotations
+
 import math
 import os
 import re
-from typing import Dict, Mapping, Tuple
+from typing import Callable, Dict, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import number_text
 from mlgshimmy.shared.suggest import did_you_mean
@@ -128,7 +130,7 @@ def value_text(value: float) -> str:
     return f"{value:.12g}"
 
 
-def text(items, number=repr) -> str:
+def text(items: Sequence[Tuple[str, float]], number: Callable[[float], str] = repr) -> str:
     """SET's text of (name, value) pairs, the law by its name: with the
     default number=repr, parse(text(items)) == items; value_text for messages."""
     return " ".join(f"{name}={law_name(value) if name == LAW else number(value)}"
@@ -140,7 +142,7 @@ def tag_word(name: str, value: float) -> str:
     return f"freeplay_{law_name(value)}" if name == LAW else f"{name}_{value_text(value)}"
 
 
-def describe(items, units=None) -> str:
+def describe(items: Sequence[Tuple[str, float]], units: Optional[Mapping[str, str]] = None) -> str:
     """'k_tlk = 3.51e+07 N/m, I_psi = 160 kg m^2, freeplay law tanh' ('' for none)."""
     units = units if units is not None else known()
     return ", ".join(f"freeplay law {law_name(value)}" if name == LAW else

@@ -9,8 +9,11 @@ the paper prints numbers (PAPER) gets the columns paper, ours, relative
 error and a status (status()); a figure for which it prints none gets the
 column of ours alone, and a note naming the values the paper withholds as
 held-out checks (HELD_OUT), if any."""
+from __future__ import annotations
+
 import json
 import os
+from typing import Any, Dict, List, Mapping, Optional, Sequence
 
 import numpy
 
@@ -37,14 +40,14 @@ REPEATS = {(e["name"], q): tuple(first) for e in _FIGURES
 CLOSE = 0.02   # relative error up to which a value outside the printed digits is "close"
 
 
-def printed_precision(value):
+def printed_precision(value: float) -> float:
     """Half a unit of the last digit the paper prints (346.1 -> 0.05)."""
     text = repr(float(value))
     decimals = len(text.split(".")[1].rstrip("0")) if "." in text else 0
     return 0.5 * 10.0 ** -decimals
 
 
-def status(figure, quantity, printed, ours):
+def status(figure: str, quantity: str, printed: Optional[float], ours: Optional[float]) -> str:
     """How ours compares with the printed value: "calibrated" (the
     parameter set was fitted to it, and ours agrees with it within the
     printed digits), "off its calibration" (fitted to it, but ours no
@@ -61,7 +64,7 @@ def status(figure, quantity, printed, ours):
     return "close" if abs(ours - printed) <= CLOSE * abs(printed) else "off"
 
 
-def changed_status(ours):
+def changed_status(ours: Optional[float]) -> str:
     """The status of a printed quantity at a changed gear, where the paper's
     number describes another gear: "vanished" (no such point any more),
     "changed gear" (the relative error is to the paper's gear's number)."""
@@ -70,7 +73,8 @@ def changed_status(ours):
     return "changed gear"
 
 
-def rows(figure, ours, ours_table=None):
+def rows(figure: str, ours: Mapping[str, Optional[float]],
+         ours_table: Optional[Mapping[str, Optional[float]]] = None) -> List[Dict[str, Any]]:
     """[{"quantity", "paper", "ours", "ours_table", "rel_error", "status",
     "held_out"}]: the printed quantities first, then the rest of ours."""
     paper = PAPER.get(figure, {})
@@ -102,14 +106,14 @@ def _cell(value):
     return "-" if value is None else f"{value:.6g}"
 
 
-def relative(error):
+def relative(error: Optional[float]) -> str:
     """A relative error as text: +1.24%, or +7.2e-09 when below 0.005 %."""
     if error is None:
         return "-"
     return f"{error:+.1e}" if abs(error) < 5e-5 else f"{error:+.2%}"
 
 
-def text_of(figure, table):
+def text_of(figure: str, table: Sequence[Mapping[str, Any]]) -> str:
     """The plain-text table of rows()."""
     printed = any(r["paper"] is not None for r in table)
     with_table = any(r["ours_table"] is not None for r in table)
@@ -148,11 +152,13 @@ def text_of(figure, table):
     return f"{title}\n{body}{note}\n"
 
 
-def table_path(figure, ext="txt"):
+def table_path(figure: str, ext: str = "txt") -> str:
     return os.path.join(paths.tables_dir(), f"{figure}.{ext}")
 
 
-def report(figure, ours, ours_table=None, notes=()):
+def report(figure: str, ours: Mapping[str, Optional[float]],
+           ours_table: Optional[Mapping[str, Optional[float]]] = None,
+           notes: Sequence[str] = ()) -> str:
     """Print and store the table (<fig>.txt, and <fig>.json for the
     reproduction report); notes: lines after it (what each named point is);
     returns its text."""
@@ -166,7 +172,7 @@ def report(figure, ours, ours_table=None, notes=()):
     return text
 
 
-def read_table(figure):
+def read_table(figure: str) -> Optional[List[Dict[str, Any]]]:
     """The rows a figure's plot step stored (report()), or None."""
     try:
         with open(table_path(figure, "json")) as source:
@@ -175,7 +181,7 @@ def read_table(figure):
         return None
 
 
-def in_degrees(numbers):
+def in_degrees(numbers: Mapping[str, Optional[float]]) -> Dict[str, Optional[float]]:
     """A copy of {quantity: value} with the quantities in radians ("[rad]",
     "[rad/mm]") in degrees, as the figures plot them."""
     out = {}

@@ -13,12 +13,15 @@ themselves take the label of the nearest labelled pixel.  `check` counts the
 samples that disagree with their piece's label: a missing edge curve shows
 up there, as two regions merged into one piece.
 """
+from __future__ import annotations
+
 from typing import Any, Dict, Iterable, Optional, Sequence, Tuple
 
 import numpy
+from numpy.typing import ArrayLike
 
 
-def index_of(grid, values):
+def index_of(grid: numpy.ndarray, values: ArrayLike) -> numpy.ndarray:
     """Fractional raster index of `values` on the increasing `grid` (uneven
     grids, e.g. logarithmic, need no transform), extended linearly beyond
     its ends with the end spacing."""
@@ -30,7 +33,8 @@ def index_of(grid, values):
     return numpy.where(values < grid[0], below, numpy.where(values > grid[-1], above, at))
 
 
-def curve_pixels(x, y, curves):
+def curve_pixels(x: numpy.ndarray, y: numpy.ndarray,
+                 curves: Sequence[Tuple[ArrayLike, ArrayLike]]) -> numpy.ndarray:
     """[len(y), len(x)] True on the pixels each polyline (xs, ys) passes
     through: every segment sampled at least twice per pixel, so the curve is
     8-connected and 4-connected pieces cannot leak across it.  NaN breaks a
@@ -50,7 +54,7 @@ def curve_pixels(x, y, curves):
     return mask
 
 
-def boundary_pixels(field):
+def boundary_pixels(field: numpy.ndarray) -> numpy.ndarray:
     """True where an integer raster differs from a 4-neighbour (both sides):
     the edges of a map computed pixel by pixel, e.g. an eigenvalue grid."""
     field = numpy.asarray(field)
@@ -64,7 +68,7 @@ def boundary_pixels(field):
     return out
 
 
-def paint(edges, samples):
+def paint(edges: numpy.ndarray, samples: numpy.ndarray) -> Tuple[numpy.ndarray, Dict[str, Any]]:
     """(labels, check): each 4-connected piece of ~edges labelled by the
     most common sample label in it (samples: int raster, -1 where there is
     none), the rest by the nearest labelled pixel.  check: {"samples",
@@ -108,7 +112,7 @@ ATTRACTOR_NAMES = {1: "straight rolling", 2: "low-frequency shimmy", 4: "high-fr
 END_STATE_ATTRACTOR = {"domain": "liftoff"}
 
 
-def code(kinds):
+def code(kinds: Iterable[str]) -> int:
     """The region code of a set of attractors (or of atlas end-state kinds)."""
     bits = 0
     for kind in kinds:

@@ -15,7 +15,9 @@ period of 2.42 s.
 
     visited, share = saddle_stays(model, solution)   # equilibria, part of the period near them
 """
-from typing import List, Tuple
+from __future__ import annotations
+
+from typing import Any, List, Tuple
 
 import numpy
 
@@ -27,7 +29,7 @@ MOST = 0.5        # part of the period near saddles that makes a connection
 MAX_SADDLES = 4   # equilibria looked for, one from each slowest stay
 
 
-def saddle_stays(model: mlgmodel.Model, sol) -> Tuple[List[numpy.ndarray], float]:
+def saddle_stays(model: mlgmodel.Model, sol: Any) -> Tuple[List[numpy.ndarray], float]:
     """(saddles, share): the saddle equilibria of `model` (an unstable
     eigenvalue, or a zero one) next to which the orbit `sol` (an AUTO
     solution: t in [0, 1] and the states) stays, found by Newton from its
@@ -60,7 +62,7 @@ def _saddle(model: mlgmodel.Model, u: numpy.ndarray) -> bool:
     return bool(numpy.max(lam.real) > -1e-9 * numpy.max(numpy.abs(lam)))
 
 
-def connects(model: mlgmodel.Model, sol) -> bool:
+def connects(model: mlgmodel.Model, sol: Any) -> bool:
     """Whether the orbit `sol` is close to a connection of saddles: most
     of its period (MOST) near them."""
     return saddle_stays(model, sol)[1] >= MOST

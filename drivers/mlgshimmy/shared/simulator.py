@@ -5,9 +5,12 @@ Python: the one place that runs it and reads its summary.
     numbers = summary(proc.stdout)    # {"psi_amplitude_rad": ..., ...}
     numbers = simulate(csv_path, "--V", "300")   # the same, raising on failure
 """
+from __future__ import annotations
+
 import os
 import subprocess
 import tempfile
+from typing import Any, Dict, List, Mapping, Optional
 
 import numpy
 
@@ -28,7 +31,8 @@ class SimulationError(RuntimeError):
     """mlg_simulate exited non-zero (its stderr is the message)."""
 
 
-def run(csv, *args, params=None):
+def run(csv: Optional[str], *args: Any,
+        params: Optional[Mapping[str, float]] = None) -> subprocess.CompletedProcess:
     """Run the simulator writing the samples to csv (None: none, only the
     summary); the completed process.  params: {name: value} passed as
     --param name=value."""
@@ -39,19 +43,21 @@ def run(csv, *args, params=None):
     return subprocess.run(command, capture_output=True, text=True)
 
 
-def freeplay_args(freeplay):
+def freeplay_args(freeplay: Mapping[str, float]) -> List[Any]:
     """--yfp/--eps-abs/--eps-rel of a freeplay case {yfp, eps_abs, eps_rel}."""
     return ["--yfp", freeplay["yfp"], "--eps-abs", freeplay["eps_abs"],
             "--eps-rel", freeplay["eps_rel"]]
 
 
-def state_args(u):
+def state_args(u: Optional[Mapping[str, float]]) -> List[str]:
     """--u0 of a state {name: value} (the simulator then starts there, not at
     its own straight-rolling Newton solve); [] for None."""
     return [] if u is None else ["--u0", ",".join(repr(u[n]) for n in mlgmodel.UNAMES)]
 
 
-def start_args(V, Fstar, freeplay, u0, psi0, t_end, dt_out, params):
+def start_args(V: float, Fstar: float, freeplay: Mapping[str, float],
+               u0: Optional[Mapping[str, float]], psi0: float, t_end: float, dt_out: float,
+               params: Optional[Mapping[str, float]]) -> List[Any]:
     """The options of a run of the `figures` set from the state u0 (None: the
     simulator's own straight rolling) with psi displaced by psi0, at a
     freeplay case {yfp, eps_abs, eps_rel} and the gear's --param values
@@ -61,7 +67,7 @@ def start_args(V, Fstar, freeplay, u0, psi0, t_end, dt_out, params):
             "--t-end", t_end, "--dt-out", dt_out, "--psi0", psi0, *state_args(u0), *at]
 
 
-def left_domain(proc):
+def left_domain(proc: subprocess.CompletedProcess) -> Optional[str]:
     """The simulator's reason if the model left its domain, else None."""
     for line in proc.stderr.splitlines():
         if line.startswith("mlg_simulate: model evaluation failed"):
@@ -69,13 +75,14 @@ def left_domain(proc):
     return None
 
 
-def summary(stdout):
+def summary(stdout: str) -> Dict[str, float]:
     """The simulator's summary, one `key value` per line, as {key: float}."""
     return {key: float(value) for key, value in
             (line.split(None, 1) for line in stdout.splitlines() if line.strip())}
 
 
-def simulate(csv, *args, params=None):
+def simulate(csv: Optional[str], *args: Any,
+             params: Optional[Mapping[str, float]] = None) -> Dict[str, float]:
     """run() and summary(); raises SimulationError if the simulator fails."""
     proc = run(csv, *args, params=params)
     if proc.returncode != 0:
@@ -90,7 +97,8 @@ def simulate(csv, *args, params=None):
 FOLD_SETTLE, FOLD_TRIAL, FOLD_GONE = 20.0, 80.0, 0.1
 
 
-def fold_speed(lo, hi, tol, params):
+def fold_speed(lo: float, hi: float, tol: float,
+               params: Optional[Mapping[str, float]]) -> Optional[float]:
     """The speed S in (lo, hi) below which the stable orbit reached at hi
     (from psi = 0.01 rad) ceases to exist: bisected (spectrum.bisect) on
     whether it survives FOLD_TRIAL s started from its state at hi, to tol.

@@ -37,7 +37,9 @@ there, else also yaw<k>_down), so every branch is kept once.  A branch
 that exists only away from the companion's pitchforks, or with a yaw
 beyond SPREAD times the companion's, is not looked for.
 """
-from typing import Dict, List, Tuple
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
@@ -117,8 +119,8 @@ def symmetric(values: Dict[str, float]) -> bool:
     return all(values.get(a, 0.0) == 0.0 for a in ANGLES)
 
 
-def states(rundir: str, parameter_set: str, loads: Tuple[float, float], steps=None,
-           **values: float) -> States:
+def states(rundir: str, parameter_set: str, loads: Tuple[float, float],
+           steps: Optional[Mapping[str, Any]] = None, **values: float) -> States:
     """All stationary states for F* in `loads` = (lowest, highest) at
     `values` (V, freeplay, geometry; see the module's text); `steps`: AUTO
     constants of the straight-rolling run (e.g. an overlay)."""
@@ -170,7 +172,7 @@ def _imperfect(rundir, parameter_set, loads, values, steps):
     return found
 
 
-def seed_loads(pitchforks, loads):
+def seed_loads(pitchforks: Sequence[float], loads: Tuple[float, float]) -> List[float]:
     """SEEDS loads from half a pitchfork interval below the symmetric gear's
     first pitchfork to half above its last, within the range: where the
     yawed states of the gear with side-stay angles are looked for."""
@@ -179,7 +181,8 @@ def seed_loads(pitchforks, loads):
                                min(loads[1], pitchforks[-1] + half), SEEDS))
 
 
-def newton_states(parameter_set, at_loads, reach, values):
+def newton_states(parameter_set: str, at_loads: Sequence[float], reach: float,
+                  values: Mapping[str, float]) -> List[Tuple[float, Dict[str, float]]]:
     """[(F*, state)]: the distinct stationary states Newton (rolling.solve)
     converges to at each load from FAN starting yaws psi in [-reach, reach],
     the other states those of straight rolling of the symmetric gear."""
@@ -209,7 +212,7 @@ def _follow(rundir, name, seed, loads):
     return Joined([b for d in (up, down) for b in d], (up, down))
 
 
-def interpolated(diagram, Fstar: float) -> List[Tuple[float, bool]]:
+def interpolated(diagram: Any, Fstar: float) -> List[Tuple[float, bool]]:
     """[(psi_mean, stable)] where the branches of a diagram cross the load
     F*, by linear interpolation between the two points either side."""
     out = []

@@ -14,14 +14,20 @@ pieces gets empty ones at its start (where the curve leaves its Hopf point):
 a fold born at a degenerate Hopf point has zero length there.  Joined pieces
 are resampled at equal arclength in scaled (V, amp) and their points paired.
 """
+from __future__ import annotations
+
+from typing import Any, List, Mapping, Optional, Sequence, Tuple
+
 import numpy
+from numpy.typing import ArrayLike
 
 TURN = 0.2         # [V units]: a turn in V counts once V has gone back this far
 RETRACE = 0.01     # relative amplitude difference below which a turn retraces
 POINTS = 40        # resampled points per piece
+Piece = Tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]   # V, amplitude, stable
 
 
-def turns(V, tol=TURN):
+def turns(V: numpy.ndarray, tol: float = TURN) -> List[int]:
     """Indices where V turns back by more than tol (hysteresis: wiggles of
     AUTO's first steps from a Hopf point are not turns)."""
     V = numpy.asarray(V, dtype=float)
@@ -53,7 +59,7 @@ def _retraces(V, amp, before, after):
     return True
 
 
-def pieces(curve):
+def pieces(curve: Mapping[str, ArrayLike]) -> List[Piece]:
     """The curve cut at its turns into pieces monotone in V, [(V, amp,
     stable)], up to the first turn after which it retraces itself."""
     V, amp = numpy.asarray(curve["V"], float), numpy.asarray(curve["amp"], float)
@@ -68,7 +74,7 @@ def pieces(curve):
     return out
 
 
-def resample(piece, scale, n=POINTS):
+def resample(piece: Piece, scale: Tuple[float, float], n: int = POINTS) -> Piece:
     """n points of a piece at equal arclength in (V/scale[0], amp/scale[1]):
     (V, amp, stable) arrays."""
     V, amp, stable = piece
@@ -108,7 +114,9 @@ def _join(y1, pieces1, y2, pieces2, scale):
     return [_strip(y1, p, y2, q, scale) for p, q in zip(a, b)]
 
 
-def loft(slices, apexes=None, scale=(1.0, 1.0)):
+def loft(slices: Sequence[Tuple[float, Mapping[str, Any]]],
+         apexes: Optional[Mapping[str, Sequence[Tuple[float, float]]]] = None,
+         scale: Tuple[float, float] = (1.0, 1.0)) -> Tuple[numpy.ndarray, numpy.ndarray]:
     """The surfaces through the slices [(y, {key: curve})] (in order of y),
     as (quads of shape (n, 4, 3) with corners (V, y, amp), stable mask (n,)).
     Neighbouring slices holding the same key are joined.  apexes = {key:

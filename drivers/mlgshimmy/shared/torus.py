@@ -14,9 +14,12 @@
   - simulated_rate: the growth of the psi peaks' spread in a simulation,
     which the critical pair's rate ln|mu| / T predicts.
 """
+from __future__ import annotations
+
 import math
 import os
 import tempfile
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy
 
@@ -42,7 +45,8 @@ CURVE_TIME_LIMIT = 120  # s of CPU per direction (the main curve of Fig. 11: ~25
 CURVE_DSMIN = 5e-4
 
 
-def orbit_branch(rundir, name, values, mesh, dsmax):
+def orbit_branch(rundir: str, name: str, values: Mapping[str, float], mesh: Tuple[int, int],
+                 dsmax: float) -> Any:
     """The orbits born at the last Hopf point of straight rolling below
     V_MAX (zero freeplay: the only one; with freeplay: H3, whose branch folds
     back at S and then carries the large-amplitude orbits), continued in V."""
@@ -56,7 +60,7 @@ def orbit_branch(rundir, name, values, mesh, dsmax):
                             NMX=3000, NTST=mesh[0], NCOL=mesh[1])
 
 
-def torus_crossings(rundir, name):
+def torus_crossings(rundir: str, name: str) -> List[Dict[str, Any]]:
     """Where the orbit run <name> in rundir has a complex Floquet pair cross
     the unit circle (floquet.torus_crossings of its d-file)."""
     return floquet.torus_crossings(floquet.read(os.path.join(rundir, f"d.{name}")))
@@ -78,7 +82,7 @@ def speeds(rundir, diagram, min_hz=HIGH_HZ):
     return out
 
 
-def on_branch(bd, v, key):
+def on_branch(bd: Any, v: float, key: str) -> float:
     """A measure of the orbit branch at speed v (the stable large-amplitude
     part: the last pass of the branch through v)."""
     V, y = numpy.asarray(bd[0]["V"]), numpy.asarray(bd[0][key])
@@ -87,14 +91,15 @@ def on_branch(bd, v, key):
     return float(y[k] + s * (y[k + 1] - y[k]))
 
 
-def predicted_rate(steps, bd, v):
+def predicted_rate(steps: Sequence[Any], bd: Any, v: float) -> float:
     """ln|mu| / T of the critical complex pair at the step nearest v [1/s]."""
     values = numpy.array([s[0] for s in steps])
     g, _ = floquet.critical(steps[int(numpy.argmin(numpy.abs(values - v)))][1])
     return math.log1p(g) * on_branch(bd, v, "freq")
 
 
-def simulated_rate(values, v, psi0, span=SIM_T, rtol=None):
+def simulated_rate(values: Mapping[str, float], v: float, psi0: float, span: float = SIM_T,
+                   rtol: Optional[float] = None) -> Tuple[float, float, float]:
     """Growth rate [1/s] of the psi peaks' relative spread in a simulation
     from psi0 (log-linear fit over span, one sample per SPAN seconds; rtol:
     the simulator's tolerance, atol 1e-2 of it, default its own)."""
@@ -122,7 +127,8 @@ def labelled_tr(bd, v, between=None):
     return labelled[0] if labelled else None
 
 
-def tr_point(rundir, name, bd, v, slope, between=None):
+def tr_point(rundir: str, name: str, bd: Any, v: float, slope: float,
+             between: Optional[Tuple[float, float]] = None) -> Any:
     """AUTO's TR label near speed v, a crossing of the branch bd (which ends
     at V_MAX, or in MX at a side-stay geometry): the branch's own label if
     it has one within 0.5 m/s (or inside the crossing's step, `between`);
@@ -156,13 +162,14 @@ def tr_point(rundir, name, bd, v, slope, between=None):
                             f"(steps up to {4 * h:.3g} m/s across it)")
 
 
-def windows(found):
+def windows(found: Sequence[dict]) -> List[Tuple[dict, dict]]:
     """The windows of instability among the crossings found (in branch
     order): [(loses, regains)], consecutive."""
     return [(a, b) for a, b in zip(found, found[1:]) if a["direction"] > 0 > b["direction"]]
 
 
-def multiplier_check(rundir, name, tr, v, mesh):
+def multiplier_check(rundir: str, name: str, tr: Any, v: float,
+                     mesh: Tuple[int, int]) -> Dict[str, Any]:
     """|mu| - 1 of the critical pair at speed v on the orbit continued from
     the TR label tr on mesh (NTST, NCOL), two ways: AUTO's Floquet
     multipliers and the eigenvalues of the monodromy matrix integrated along
@@ -185,12 +192,13 @@ def multiplier_check(rundir, name, tr, v, mesh):
 SUBSTEPS = 8           # RK4 steps per stored mesh interval of the orbit (monodromy)
 
 
-def torus_icp():
+def torus_icp() -> List[Union[str, int]]:
     """ICP of a torus curve in (V, F*): the period, the torus angle PAR(12), the measures."""
     return ["V", "Fstar", 11, 12] + mlgmodel.MEASURES
 
 
-def monodromy_path(sol, parameter_set="figures"):
+def monodromy_path(sol: Any,
+                   parameter_set: str = "figures") -> Tuple[numpy.ndarray, numpy.ndarray]:
     """The fundamental matrix Phi(t) of the orbit `sol` (an AUTO solution,
     time scaled to [0, 1]) at its stored points: dPhi/dt = T J(u(t)) Phi,
     Phi(0) = I, by RK4 on u interpolated linearly between the points (the
@@ -225,7 +233,7 @@ def monodromy_path(sol, parameter_set="figures"):
 ANGLE_TOL = 0.05       # rad: the seeded pair's argument against the TR label's angle
 
 
-def seeded(start, angle, parameter_set="figures"):
+def seeded(start: Any, angle: float, parameter_set: str = "figures") -> Any:
     """The first point of a torus curve with the critical Floquet
     eigenfunction filled in.  AUTO's start from a TR label (periodic.f90,
     STPNTR) guesses the eigenfunction as 1e-4 (cos, sin)(theta t) in every
@@ -257,7 +265,9 @@ def seeded(start, angle, parameter_set="figures"):
     return start
 
 
-def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS, ntst=None):
+def torus_curve(rundir: str, name: str, tr: Any, parameter_set: str = "figures",
+                steps: Mapping[str, Any] = CURVE_STEPS,
+                ntst: Optional[int] = None) -> Tuple[Any, Any]:
     """The TR point continued in (V, F*) both ways, within CURVE_FSTAR and
     V <= V_MAX: the runs (<name>_up, <name>_down); ntst: their mesh, if not
     the orbit's (a finer one: see fig11.TONGUE_EDGES).  AUTO's first ISW = 2
@@ -279,7 +289,7 @@ def torus_curve(rundir, name, tr, parameter_set="figures", steps=CURVE_STEPS, nt
                  for sign, part in ((1, "up"), (-1, "down")))
 
 
-def curve_arrays(runs):
+def curve_arrays(runs: Sequence[Any]) -> List[Dict[str, Any]]:
     """A torus curve's runs as arrays for result.json: [{"V", "Fstar",
     "freq", "angle", "ends"}] per run."""
     return [{"V": list(map(float, bd[0]["V"])), "Fstar": list(map(float, bd[0]["Fstar"])),
