@@ -22,12 +22,20 @@ name that nearly coincide are named once.
 MLG_PAPER_STYLE=1 in the environment (`make <fig> PAPER=1`) leaves out the
 "Fig. N: ..." titles (figure_title) for use in a paper; panel titles stay.
 """
+from __future__ import annotations
+
 import os
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import matplotlib
 import matplotlib.pyplot as plt
 import numpy
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.legend import Legend
 from matplotlib.lines import Line2D
+from matplotlib.text import Text
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import gear
@@ -84,7 +92,7 @@ def paper_style() -> bool:
     return os.environ.get("MLG_PAPER_STYLE", "").strip() not in ("", "0")
 
 
-def figure_title(target, text, **options):
+def figure_title(target: Union[Figure, Axes], text: str, **options: Any) -> Optional[Text]:
     """The figure's title ("Fig. N: ..."): fig.suptitle for a Figure, the
     title of an Axes otherwise; nothing in paper style."""
     if paper_style():
@@ -94,7 +102,7 @@ def figure_title(target, text, **options):
     return target.set_title(text, **options)
 
 
-def sci(value, digits=2):
+def sci(value: float, digits: int = 2) -> str:
     """A number for mathtext in scientific notation: 3.9e7 -> 3.9 x 10^7
     (as "$3.9 \\times 10^{7}$")."""
     mantissa, exponent = f"{value:.{digits - 1}e}".split("e")
@@ -102,7 +110,7 @@ def sci(value, digits=2):
     return f"${mantissa}$" if exponent == 0 else f"${mantissa} \\times 10^{{{exponent}}}$"
 
 
-def style_of(stable, color=None, lw=1.4):
+def style_of(stable: bool, color: Any = None, lw: float = 1.4) -> Dict[str, Any]:
     """Line keywords of a stable or unstable piece; with `color` given (a
     figure whose colours mean something else) only the style changes."""
     base = dict(STABLE_STYLE if stable else UNSTABLE_STYLE)
@@ -112,7 +120,8 @@ def style_of(stable, color=None, lw=1.4):
     return base
 
 
-def plot_stability(ax, xs, ys, stable, label=None, **style):
+def plot_stability(ax: Axes, xs: ArrayLike, ys: ArrayLike, stable: ArrayLike,
+                   label: Optional[str] = None, **style: Any) -> None:
     """A curve given as arrays with a stability mask: stable parts solid,
     unstable dashed, in STABLE / UNSTABLE unless `color` is given."""
     xs, ys, stable = numpy.asarray(xs), numpy.asarray(ys), numpy.asarray(stable)
@@ -123,7 +132,8 @@ def plot_stability(ax, xs, ys, stable, label=None, **style):
         label = None
 
 
-def plot_branch(ax, diagram, x, y, scale=1.0, label=None, **style):
+def plot_branch(ax: Axes, diagram: Sequence[Any], x: str, y: str, scale: float = 1.0,
+                label: Optional[str] = None, **style: Any) -> None:
     """Every branch of a diagram by stability (plot_stability)."""
     for branch in diagram:
         plot_stability(ax, branch[x], numpy.asarray(branch[y]) * scale,
@@ -131,7 +141,8 @@ def plot_branch(ax, diagram, x, y, scale=1.0, label=None, **style):
         label = None
 
 
-def mark(ax, x, y, kind, name=None, color=palette.MARKER, zorder=5):
+def mark(ax: Axes, x: float, y: float, kind: str, name: Optional[str] = None,
+         color: Any = palette.MARKER, zorder: float = 5) -> None:
     """One special point of type `kind` (a key of POINTS) at (x, y), named
     `name` (default the kind's name; "" for none) when the figure is saved."""
     point = POINTS[kind]
@@ -145,7 +156,8 @@ def mark(ax, x, y, kind, name=None, color=palette.MARKER, zorder=5):
     labels.register(ax, x, y, point["name"] if name is None else name, line)
 
 
-def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None, color=palette.MARKER):
+def mark_points(ax: Axes, diagram: Sequence[Any], kind: str, x: str, y: str, scale: float = 1.0,
+                text: Optional[str] = None, color: Any = palette.MARKER) -> None:
     """Mark and name the labelled points of one AUTO type (e.g. 'HB', 'LP')
     on every branch of a diagram (named `text`, default POINTS' name)."""
     for branch in diagram:
@@ -153,7 +165,7 @@ def mark_points(ax, diagram, kind, x, y, scale=1.0, text=None, color=palette.MAR
             mark(ax, branch[x][index], branch[y][index] * scale, kind, name=text, color=color)
 
 
-def stability_changes(branch, near=2):
+def stability_changes(branch: Any, near: int = 2) -> List[int]:
     """Point indices where an orbit branch changes stability with no AUTO
     label within `near` points (the change lies between index and index+1).
     The first and last `near` steps are left out: a branch from a Hopf
@@ -165,7 +177,9 @@ def stability_changes(branch, near=2):
             and all(abs(i - j) > near and abs(i + 1 - j) > near for j in labelled)]
 
 
-def mark_specials(ax, diagram, x, y, scale=1.0, kinds=SPECIAL, changes=True, color=palette.MARKER):
+def mark_specials(ax: Axes, diagram: Sequence[Any], x: str, y: str, scale: float = 1.0,
+                  kinds: Sequence[str] = SPECIAL, changes: bool = True,
+                  color: Any = palette.MARKER) -> None:
     """Every labelled special point of `kinds` on the branches of an orbit
     diagram (folds S, pitchforks P, torus points TR), and with `changes` the
     stability changes AUTO labelled with nothing (at the middle of the step
@@ -186,20 +200,20 @@ def mark_specials(ax, diagram, x, y, scale=1.0, kinds=SPECIAL, changes=True, col
                     mark(ax, at, 0.5 * (ys[i] + ys[i + 1]), kind, color=color)
 
 
-def turns_back(xs, i, near=2):
+def turns_back(xs: ArrayLike, i: int, near: int = 2) -> bool:
     """Whether the branch's x reverses its direction within `near` steps of
     the step from i to i+1."""
     steps = numpy.sign(numpy.diff(numpy.asarray(xs)[max(i - near, 0):i + near + 2]))
     return bool((steps > 0).any() and (steps < 0).any())
 
 
-def stability_handles(color=None):
+def stability_handles(color: Any = None) -> List[Line2D]:
     """Legend entries of the two stability styles (in `color` if given)."""
     return [Line2D([], [], label="stable", **style_of(True, color)),
             Line2D([], [], label="unstable", **style_of(False, color))]
 
 
-def point_handles(kinds):
+def point_handles(kinds: Sequence[str]) -> List[Line2D]:
     """Legend entries of special point kinds: marker and "H: Hopf point"."""
     out = []
     for kind in kinds:
@@ -210,13 +224,15 @@ def point_handles(kinds):
     return out
 
 
-def marked_kinds(*axes):
+def marked_kinds(*axes: Axes) -> List[str]:
     """The point kinds marked on the given axes, in POINTS' order."""
     found = {k for ax in axes for k in ax.__dict__.get("_mlg_kinds", [])}
     return [k for k in POINTS if k in found]
 
 
-def legend(target, extra=(), axes=None, color=None, stability=True, **options):
+def legend(target: Union[Figure, Axes], extra: Sequence[Any] = (),
+           axes: Optional[Sequence[Axes]] = None, color: Any = None, stability: bool = True,
+           **options: Any) -> Legend:
     """A legend on an Axes, or below the panels of a Figure: the stability
     styles (in `color` if the figure's colours mean something else;
     stability=False: none), `extra` handles, then every special point kind
@@ -237,7 +253,8 @@ def legend(target, extra=(), axes=None, color=None, stability=True, **options):
     return target.legend(handles=handles, **options)
 
 
-def smooth(xs, ys, span=(1.0, 1.0), per_step=12):
+def smooth(xs: ArrayLike, ys: ArrayLike, span: Tuple[float, float] = (1.0, 1.0),
+           per_step: int = 12) -> Tuple[numpy.ndarray, numpy.ndarray]:
     """A curve through stored points (xs, ys), drawn smoothly: a centripetal
     Catmull-Rom spline (no loops or cusps, no overshoot beyond its
     neighbours' hull in practice) in coordinates scaled by `span` (the
@@ -265,7 +282,9 @@ def smooth(xs, ys, span=(1.0, 1.0), per_step=12):
     return curve[:, 0] * span[0], curve[:, 1] * span[1]
 
 
-def surface(ax, quads, stable, alpha=(0.45, 0.85), light=(-0.4, -1.0, 1.2)):
+def surface(ax: Any, quads: numpy.ndarray, stable: ArrayLike,
+            alpha: Tuple[float, float] = (0.45, 0.85),
+            light: Tuple[float, float, float] = (-0.4, -1.0, 1.2)) -> None:
     """Quadrilaterals (n, 4, 3) in the data coordinates of a 3-D axes (its
     limits set) as one polygon collection, so that mplot3d sorts them by
     depth together: STABLE where `stable`, UNSTABLE where not (alpha: their
@@ -289,7 +308,7 @@ def surface(ax, quads, stable, alpha=(0.45, 0.85), light=(-0.4, -1.0, 1.2)):
                                          linewidths=0.2, zorder=1))
 
 
-def save(fig, name):
+def save(fig: Figure, name: str) -> None:
     """Name the marked points (labels.place), then write
     $MLG_RUN_ROOT/figures/<name>.png and .pdf (each written beside and
     renamed, so a reader never sees half a file) and close fig.  A figure

@@ -8,6 +8,8 @@ bears on the upper link) and psi over time with the frames' span.
     fig, show = figure(result, motion.scales(result["frames"]), title)
     show(k)        # move every artist to frame k (animations call it per frame)
 """
+from __future__ import annotations
+
 from typing import Callable, Dict, Mapping, Tuple
 
 import matplotlib.pyplot as plt
@@ -33,7 +35,8 @@ def _rectangle(centre, along, across, length, width):
             for sa, sb in ((1, 1), (1, -1), (-1, -1), (-1, 1))]
 
 
-def plan_state(f: Mapping[str, float], mean_beta: float, scale: Mapping[str, float]):
+def plan_state(f: Mapping[str, float], mean_beta: float,
+               scale: Mapping[str, float]) -> Tuple[numpy.ndarray, numpy.ndarray, float]:
     """Plan-view positions [m] (x lateral, y forward) at one frame: the
     axle's centre, its unit vector and the wheels' heading."""
     theta = scale["angle"] * f["psi"]

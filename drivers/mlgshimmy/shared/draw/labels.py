@@ -8,6 +8,10 @@ closer than MERGE pixels are one cluster: one marker, named with their
 count (four torus points within 10 m/s: one triangle, "TR ×4").
 Positions are found in display space after the figure is laid out, so they
 hold for the saved file (bbox_inches="tight" only crops)."""
+from __future__ import annotations
+
+from typing import Any, List, Sequence, Tuple
+
 import numpy
 
 from mlgshimmy.shared.draw import palette
@@ -24,7 +28,7 @@ CANDIDATES = ((0, 0), (0, -1), (-1, 0), (-1, -1), (-0.5, 0.3), (-0.5, -1.3),
               (0.6, 1.6), (-1.6, 1.6), (0.6, -2.6), (-1.6, -2.6))
 
 
-def register(ax, x, y, name, marker=None):
+def register(ax: Any, x: float, y: float, name: str, marker: Any = None) -> None:
     """Name the point (x, y) when the figure is placed; marker: its Line2D,
     hidden if the point joins a cluster of its name."""
     if name:
@@ -72,7 +76,8 @@ def _overlaps(a, b, pad=0.0):
     return a[0] < b[2] + pad and b[0] < a[2] + pad and a[1] < b[3] + pad and b[1] < a[3] + pad
 
 
-def clusters(points, markers):
+def clusters(points: Sequence[Tuple[float, float, str, Any]],
+             markers: Sequence[Tuple[float, float]]) -> List[List[int]]:
     """[[index of its first point, count]] of the clusters: points of one
     name chained closer than MERGE pixels (display positions `markers`).
     The markers of all but a cluster's first point are hidden."""
@@ -91,7 +96,7 @@ def clusters(points, markers):
     return out
 
 
-def place_axes(ax, renderer):
+def place_axes(ax: Any, renderer: Any) -> None:
     points = ax.__dict__.get("_mlg_labels", [])
     if not points or getattr(ax, "name", "") == "3d":
         return
@@ -142,7 +147,7 @@ def place_axes(ax, renderer):
         placed.append(rect)
 
 
-def place(fig):
+def place(fig: Any) -> None:
     """Place the registered names of every axes of fig (once)."""
     if not any(ax.__dict__.get("_mlg_labels") for ax in fig.axes):
         return

@@ -1,6 +1,10 @@
 """Drawing the freeplay-magnitude results of Figs. 13-19 (section IV.D):
 orbits continued in y_fp and diagrams in V, from their cached records
 (yfp_stored.stored_orbits, yfp_stored.stored_diagram)."""
+from __future__ import annotations
+
+from typing import Any, Mapping
+
 import numpy
 from matplotlib.lines import Line2D
 
@@ -10,7 +14,7 @@ from mlgshimmy.shared.yfp_runs import V_ORBITS
 ORBIT_COLOURS = dict(zip(V_ORBITS, draw.sequence(len(V_ORBITS))))
 
 
-def orbits_in_yfp(ax_amp, ax_freq, orbits):
+def orbits_in_yfp(ax_amp: Any, ax_freq: Any, orbits: Mapping[str, Any]) -> None:
     """Torsional amplitude [deg] and frequency [Hz] against y_fp of stored
     orbits (stored_orbits; solid stable, dashed unstable), one colour per
     speed; the legend on ax_amp names the speeds and the two styles."""
@@ -28,7 +32,7 @@ def orbits_in_yfp(ax_amp, ax_freq, orbits):
     draw.legend(ax_amp, extra=speeds, color=draw.NEUTRAL, axes=[])
 
 
-def diagram_in_V(ax_amp, diagram, colour, label):
+def diagram_in_V(ax_amp: Any, diagram: Mapping[str, Any], colour: Any, label: str) -> None:
     """psi amplitude [deg] against V of a stored Diagram (stored_diagram):
     its Hopf points H on the axis, the periodic branches (solid stable,
     dashed unstable; in `colour`, else STABLE/UNSTABLE), their folds S, and

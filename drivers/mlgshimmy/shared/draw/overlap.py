@@ -2,7 +2,9 @@
 tick labels, names of points, annotations and legend entries, compared by
 their bounding boxes as rendered.  draw.save reports every overlap it finds
 (one line each); tests/figures/test_figure_style.py requires none."""
-from typing import List, Tuple
+from __future__ import annotations
+
+from typing import Any, List, Tuple
 
 import matplotlib
 
@@ -27,7 +29,7 @@ def _texts(fig) -> List[matplotlib.text.Text]:
             if t.get_visible() and t.get_text().strip() and id(t) not in undrawn]
 
 
-def overlaps(fig, slack: float = 1.0) -> List[Tuple[str, str]]:
+def overlaps(fig: Any, slack: float = 1.0) -> List[Tuple[str, str]]:
     """[(text, text)] of every pair of drawn texts whose boxes overlap by
     more than `slack` pixels each way."""
     fig.canvas.draw()

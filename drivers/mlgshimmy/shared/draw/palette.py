@@ -7,7 +7,9 @@ fonts and the number formats into every figure (shared.draw applies it).
 tests/figures/test_figure_style.py holds figures and studies to it: no colour is
 named anywhere else.
 """
-from typing import List, Tuple
+from __future__ import annotations
+
+from typing import Any, List, Tuple
 
 import matplotlib
 import numpy
@@ -65,7 +67,7 @@ def categories(n: int) -> List[Tuple[float, float, float, float]]:
     return [matplotlib.colormaps["tab20"](k / 20) for k in range(n)]
 
 
-def text_on(fill) -> str:
+def text_on(fill: Any) -> str:
     """Black or white, whichever reads better on the colour `fill`
     (relative luminance above 0.4: black)."""
     r, g, b = matplotlib.colors.to_rgb(fill)

@@ -8,6 +8,8 @@ the reproduction numbers read it; no AUTO import, so a redraw needs none.
     cache.write("fig10", {"numbers": {...}, "eq": stored(eq, COLUMNS)}, "figures")
     result = cache.read("fig10")      # raises MissingResult naming `make fig10`
 """
+from __future__ import annotations
+
 import datetime
 import hashlib
 import json
@@ -15,7 +17,7 @@ import math
 import os
 import resource
 import time
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Mapping, Optional, Sequence
 
 import numpy
 
@@ -255,7 +257,7 @@ class _Labels:
         return self._at[index]
 
 
-def stored(diagram, columns) -> list:
+def stored(diagram: Any, columns: Sequence[str]) -> list:
     """The branches of an AUTO diagram (a bifDiag or a list of branches) as
     records of the given columns (those a branch lacks are left out)."""
     return [{"columns": {c: numpy.asarray(b[c]) for c in columns if c in b.coordnames},
@@ -264,6 +266,6 @@ def stored(diagram, columns) -> list:
             for b in diagram]
 
 
-def loaded(records) -> list:
+def loaded(records: Sequence[Mapping[str, Any]]) -> list:
     """Stored branches (stored()) back as Branch objects."""
     return [Branch(r) for r in records]

@@ -1,12 +1,14 @@
 """The command lines of the figure and study drivers, and the one shell
 line per job that make, GNU parallel and Slurm run."""
+from __future__ import annotations
+
 import argparse
 import os
 import shlex
 import shutil
 import sys
 import time
-from typing import Callable, Optional, Sequence
+from typing import Callable, List, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import gear, mlgmodel, paths
 from mlgshimmy.shared.jobs import cache
@@ -42,7 +44,7 @@ def parts_status(jobs: Parts) -> int:
     return missing
 
 
-def variant_option(figure: str, doc: str):
+def variant_option(figure: str, doc: str) -> Tuple[int, str, List[str]]:
     """A driver's --strut-variant option (0: the default strut, 1: the
     printed one) read from the command line: (variant, figure name: <figure>
     or <figure>_v<variant>, the other arguments for run_figure)."""

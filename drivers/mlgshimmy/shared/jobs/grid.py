@@ -18,12 +18,15 @@ job records now), so that resubmitting the same command redoes just those;
 one is missing or when the results' provenances differ (naming the points),
 unless --mixed-provenance.
 """
+from __future__ import annotations
+
 import argparse
 import json
 import math
 import os
 import shlex
 import sys
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import number_text, paths
 from mlgshimmy.shared.jobs import cache
@@ -35,7 +38,7 @@ MAX_POINTS = 2000       # points of one grid (about 4 h of sweep points on 2 cor
 MAX_POINTS_ENV = "MLG_GRID_MAX_POINTS"
 
 
-def max_points():
+def max_points() -> int:
     """The grid size limit: MLG_GRID_MAX_POINTS if set (checked), else MAX_POINTS."""
     text = os.environ.get(MAX_POINTS_ENV)
     if text is None:
@@ -73,7 +76,7 @@ def _range(item, text, variable, unit):
     return [round(start + k * step, 12) for k in range(int(count))]
 
 
-def axis(text, variable, unit="numbers"):
+def axis(text: str, variable: str, unit: str = "numbers") -> List[float]:
     """The values of one axis; raises GridError naming `variable`."""
     values, names = [], {}
     for item in text.split(","):
@@ -100,7 +103,7 @@ def axis(text, variable, unit="numbers"):
     return values
 
 
-def plane(first, second):
+def plane(first: Sequence[float], second: Sequence[float]) -> List[Tuple[float, float]]:
     """The points of a grid over two axes (lists of values): every pair,
     refused if there are more than max_points()."""
     count = len(first) * len(second)
@@ -124,26 +127,27 @@ class Plane:
         self.parameter_set, self.settings, self.noun = parameter_set, settings, noun
 
     @property
-    def directory(self):
+    def directory(self) -> str:
         return paths.under_root(self.tool)
 
-    def name(self, a, b):
+    def name(self, a: float, b: float) -> str:
         return f"{self.first}{a:g}_{self.second}{b:g}"
 
-    def parse(self, name):
+    def parse(self, name: str) -> Tuple[float, float]:
         """(a, b) of a job name; ValueError if it is not one."""
         a, b = name[len(self.first):].split(f"_{self.second}")
         return float(a), float(b)
 
-    def result_path(self, a, b):
+    def result_path(self, a: float, b: float) -> str:
         return os.path.join(self.directory, self.name(a, b), "result.json")
 
-    def provenance(self):
+    def provenance(self) -> Dict[str, Any]:
         """What a job records now (as JSON reads it back: tuples are lists)."""
         record = dict(cache.provenance(self.parameter_set), settings=self.settings())
         return json.loads(json.dumps(record))
 
-    def write(self, a, b, result, provenance=None):
+    def write(self, a: float, b: float, result: Mapping[str, Any],
+              provenance: Optional[Mapping[str, Any]] = None) -> str:
         """result.json of point (a, b): the result and its provenance,
         written whole or not at all (make and `status` see a result only
         when it is complete)."""
@@ -161,7 +165,7 @@ OTHER = "other provenance"       # a result, but not what a job writes now
 NOT_COMPARED = ("written",)      # provenance fields that may differ between points
 
 
-def comparable(provenance):
+def comparable(provenance: Optional[Mapping[str, Any]]) -> Optional[Dict[str, Any]]:
     """The provenance fields two points must share (all but when written);
     None for a record without one."""
     if not isinstance(provenance, dict):
@@ -169,7 +173,7 @@ def comparable(provenance):
     return {k: v for k, v in provenance.items() if k not in NOT_COMPARED}
 
 
-def differences(ours, theirs):
+def differences(ours: Optional[Mapping[str, Any]], theirs: Optional[Mapping[str, Any]]) -> str:
     """The fields in which two comparable provenances differ, as text:
     'git_commit 1a2b3c4d5e6f (not 5d6e7f8a9b0c)'."""
     if ours is None:
@@ -180,7 +184,8 @@ def differences(ours, theirs):
                      for k in _fields(ours, theirs) if ours.get(k) != theirs.get(k))
 
 
-def described(provenance, fields=None):
+def described(provenance: Optional[Mapping[str, Any]],
+              fields: Optional[Sequence[str]] = None) -> str:
     """'git_commit ..., auto_version ...' of the given fields (default all)."""
     if provenance is None:
         return "no provenance"
@@ -209,11 +214,12 @@ class Point:
         self.index, self.point, self.name, self.path = index, point, name, path
         self.state, self.detail, self.record = state, detail, record
 
-    def line(self):
+    def line(self) -> str:
         return f"  {self.state:<16} index {self.index:<4} {self.name}: {self.detail}"
 
 
-def survey(plane, points, expected=None):
+def survey(plane: Plane, points: Sequence[Tuple[float, float]],
+           expected: Optional[Mapping[str, Any]] = None) -> List[Point]:
     """Every point's Point, in the order of `jobs`.  With expected (a
     comparable provenance), a readable result recorded otherwise is OTHER."""
     found = []
@@ -248,7 +254,7 @@ def survey(plane, points, expected=None):
     return found
 
 
-def report(tool, found, what="points"):
+def report(tool: str, found: Sequence[Point], what: str = "points") -> int:
     """Counts by state, then every point without a valid result; the number
     of those."""
     counts = {}
@@ -262,7 +268,8 @@ def report(tool, found, what="points"):
     return len(bad)
 
 
-def provenance_groups(found):
+def provenance_groups(found: Sequence[Point]
+                      ) -> List[Tuple[Optional[Dict[str, Any]], List[Point]]]:
     """[(comparable provenance, [Point ...])] of readable points, the
     largest group first."""
     groups = []
@@ -277,7 +284,8 @@ def provenance_groups(found):
     return sorted(groups, key=lambda group: -len(group[1]))
 
 
-def mixed_provenance(tool, groups, noun="points"):
+def mixed_provenance(tool: str, groups: Sequence[Tuple[Optional[Dict[str, Any]], List[Point]]],
+                     noun: str = "points") -> str:
     """The text that names the points whose provenance differs from the
     largest group's."""
     base, largest = groups[0]
