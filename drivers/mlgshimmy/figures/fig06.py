@@ -2,8 +2,11 @@
 (or the gear's freeplay law, FREEPLAY=) for epsilon = 2, 1, 0.5, 0.2, 0.1
 y_fp and the non-smooth eq. (14) dashed; panel (b) zooms on one corner to
 show the smoothing region, whose half-width is about epsilon."""
+from __future__ import annotations
+
 import matplotlib.pyplot as plt
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay as fp
@@ -25,11 +28,11 @@ DECLARED = {
 RATIOS = (2.0, 1.0, 0.5, 0.2, 0.1)      # epsilon / y_fp
 
 
-def profile(yfp_m, eps_m, y):
+def profile(yfp_m: float, eps_m: float, y: ArrayLike) -> numpy.ndarray:
     return fp.force(y, yfp_m, eps_m, mlgmodel.Model("figures")["k_tlk"])
 
 
-def main():
+def main() -> None:
     yfp = 1e-3
     y = numpy.linspace(-3 * yfp, 3 * yfp, 1201)
     fig, (full, zoom) = plt.subplots(1, 2, figsize=(10, 4.2))

@@ -1,6 +1,10 @@
 """Fig. 7: zero-freeplay diagrams in V for F* = 0.2 and F* = 1: straight
 rolling, its Hopf point H and the periodic orbits born there; torsional and
 lateral amplitudes."""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping
+
 import matplotlib.pyplot as plt
 from matplotlib.patches import Patch
 
@@ -34,7 +38,7 @@ LOADS = (0.2, 1.0)
 COLUMNS = ("V", "psi_amp", "delta_amp")
 
 
-def compute(parameter_set="figures", where="fig07"):
+def compute(parameter_set: str = "figures", where: str = "fig07") -> Dict[str, Any]:
     """{"F<F*>": {"eq", "po": stored branches, "hopf_V", "end_V", "end_psi_amp",
     "hopf": the Hopf point named by its mode, criticality checked (shared.naming)}}."""
     rundir = paths.rundir(where)
@@ -67,7 +71,7 @@ def compute(parameter_set="figures", where="fig07"):
     return result
 
 
-def first_hopf(rundir, tag, parameter_set, Fstar):
+def first_hopf(rundir: str, tag: str, parameter_set: str, Fstar: float) -> Any:
     """The first Hopf point of straight rolling in V, where AUTO's own test
     missed it (it follows the pair nearest the axis: continuation.hopf_points
     scans the spectrum), or None: stable up to V_MAX."""
@@ -76,7 +80,7 @@ def first_hopf(rundir, tag, parameter_set, Fstar):
     return found[0] if found else None
 
 
-def numbers(result):
+def numbers(result: Mapping[str, Any]) -> Dict[str, float]:
     """{quantity: value} of the figure (psi in degrees, as plotted); a Hopf
     point that does not exist is left out (reported as vanished)."""
     out = {f"H, F* = {Fstar:g} [m/s]": result[f"F{Fstar:g}"]["hopf_V"] for Fstar in (1.0, 0.2)
@@ -89,7 +93,7 @@ def numbers(result):
     return out
 
 
-def about(result):
+def about(result: Mapping[str, Any]) -> List[str]:
     """The table's lines on the Hopf points: mode and criticality, checked."""
     named = [(Fstar, result[f"F{Fstar:g}"].get("hopf")) for Fstar in LOADS]
     named = [(Fstar, p) for Fstar, p in named if p]
@@ -97,7 +101,7 @@ def about(result):
             + ([naming.agreement([p for _, p in named])] if named else []))
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     paper.report("fig07", numbers(result), notes=about(result))
     fig, axes = plt.subplots(2, 2, figsize=(9, 6.4), sharex=True)
     for col, Fstar in enumerate(LOADS):

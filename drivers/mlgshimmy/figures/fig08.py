@@ -8,8 +8,11 @@ build/fig08/summary.txt (the simulator's summary: solver statistics and the
 settled amplitudes over the last second) and build/figures/fig08.{png,pdf}.
 Exits non-zero if the simulation fails.
 """
+from __future__ import annotations
+
 import os
 import sys
+from typing import Any, Dict, Mapping
 
 import matplotlib
 matplotlib.use("Agg")
@@ -46,7 +49,7 @@ ROWS = [("psi", r"$\psi$ [deg]", draw.DEG), ("delta", r"$\delta$ [deg]", draw.DE
         ("beta", r"$\beta$ [deg]", draw.DEG), ("eta", r"$\eta$ [mm]", 1e3)]
 
 
-def simulate(csv_path):
+def simulate(csv_path: str) -> Dict[str, float]:
     """Run the simulator; return its summary as a dict of floats."""
     try:
         return simulator.simulate(csv_path, "--set", "figures", "--V", V, "--Fstar", FSTAR,
@@ -56,7 +59,7 @@ def simulate(csv_path):
         sys.exit(f"fig08: {exc}")
 
 
-def plot(data, path_stem):
+def plot(data: Mapping[str, Any], path_stem: str) -> None:
     t = data["t"]
     zoom = t >= T_END - 1.0
     fig, axes = plt.subplots(len(ROWS), 2, figsize=(10, 8.5), sharex="col",
@@ -75,7 +78,7 @@ def plot(data, path_stem):
     draw.save(fig, os.path.basename(path_stem))
 
 
-def main(redraw):
+def main(redraw: bool) -> None:
     """Simulate, then plot; with redraw (--plot, `make fig08-plot`) only plot
     the simulation already in OUT_DIR."""
     os.makedirs(OUT_DIR, exist_ok=True)

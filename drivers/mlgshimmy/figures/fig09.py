@@ -2,6 +2,10 @@
 continued from the Hopf point of straight rolling at F* = 1; l1 along it,
 its codimension-two points (shared.codim2) and the criticality of its
 ends checked (shared.naming)."""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping
+
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
@@ -31,7 +35,7 @@ DECLARED = {
 FSTAR_RANGE = (0.1, 3.5)   # below F* ~ 0.1 the curve leaves V <= 600 m/s steeply
 
 
-def compute(parameter_set="figures", where="fig09"):
+def compute(parameter_set: str = "figures", where: str = "fig09") -> Dict[str, Any]:
     """{"curves": stored Hopf-curve branches, "ends": [(F*, V)] of their UZ
     ends, "tests": codim2.along_hopf_curve of each branch, "named": the ends
     as Hopf points in V, named with their criticality checked}."""
@@ -60,7 +64,7 @@ def compute(parameter_set="figures", where="fig09"):
             "tests": tests, "named": named, "kinks": kinks}
 
 
-def about(result):
+def about(result: Mapping[str, Any]) -> List[str]:
     """The table's lines: l1 along the curve, its codimension-two points,
     the ends' criticality checked."""
     l1 = [v for t in result["tests"] for v in t["l1"]]
@@ -84,7 +88,7 @@ def about(result):
     return lines + [naming.agreement(result["named"])]
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     paper.report("fig09", {f"Hopf curve at F* = {Fstar:.3g}: V [m/s]": V
                            for Fstar, V in result["ends"]}, notes=about(result))
     fig, ax = plt.subplots(figsize=(6, 4.5))

@@ -3,6 +3,10 @@ V in [0, 600]: straight rolling and its Hopf points, the low-frequency
 orbits between the two low-speed Hopf points, the high-frequency orbits from
 the third with their fold S, and the zero-freeplay orbits for reference.
 Panels: torsional amplitude (with a zoom on small amplitudes) and frequency."""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
+
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 
@@ -41,7 +45,7 @@ ENDS = {domain.LIFT_OFF: "wheel lift-off",
         domain.SADDLES: "a saddle connection (period unbounded)"}
 
 
-def numbers(diagram, points):
+def numbers(diagram: Any, points: Sequence[Mapping[str, Any]]) -> Dict[str, Optional[float]]:
     """The special points of Fig. 10 as {quantity: value}: the Hopf points
     by name (points: the diagram's named points), the folds S1, S2, ... of the
     high-frequency orbits (>= HIGH_HZ; S1 is the paper's S), the folds of
@@ -62,7 +66,7 @@ def numbers(diagram, points):
     return out
 
 
-def stored(eq, diagram):
+def stored(eq: Any, diagram: Any) -> Dict[str, Any]:
     """A diagram's branches for the cache: the orbit runs with their Hopf
     point (V, frequency 1/T)."""
     return {"eq": jobs.stored(eq, COLUMNS),
@@ -71,7 +75,7 @@ def stored(eq, diagram):
             "hopf": diagram.hopf}
 
 
-def compute():
+def compute() -> Dict[str, Any]:
     """The figure (`figures` set, and zero freeplay for reference) and the
     numbers of the `table` set (its failure leaves that column empty)."""
     at = gear.parameters()    # the gear's changes ({} at the paper's)
@@ -96,7 +100,8 @@ def compute():
             "hopf_points": points, "zero_hopf_points": zero.named[:1]}
 
 
-def closure(orbits, hopf, column, scale=1.0):
+def closure(orbits: Sequence[Any], hopf: Sequence[Tuple[float, float]], column: str,
+            scale: float = 1.0) -> Optional[Tuple[List[float], List[float]]]:
     """The line from the last stored orbit of a branch to the Hopf point it
     collapses onto, as ([V, V_H], [y, y_H]), or None: the driver stops a
     branch 0.01 m/s (continuation.speed_diagram's gap) before the next
@@ -109,7 +114,7 @@ def closure(orbits, hopf, column, scale=1.0):
     return None
 
 
-def fold_name(numbers, V):
+def fold_name(numbers: Mapping[str, Optional[float]], V: float) -> Optional[str]:
     """The table's name of the fold at speed V ("S2", "L1" for the
     low-frequency fold 1), so that the figure and its table agree; None if
     the table has none there."""
@@ -122,7 +127,7 @@ def fold_name(numbers, V):
     return None
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     points = result["hopf_points"]
     crit = result.get("zero_hopf_points", [])
     paper.report("fig10", result["numbers"], result["numbers_table"],

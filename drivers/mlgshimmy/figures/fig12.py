@@ -7,9 +7,14 @@ loads at V = 50 between which stable straight rolling coexists with stable
 torsional shimmy, separated by the unstable orbits.
 `fig12.py --strut-variant 1` does the same with the printed strut spring
 (build/fig12_v1/, build/figures/fig12_v1.*)."""
+from __future__ import annotations
+
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
+
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import runerror
 from mlgshimmy.shared import branches
@@ -53,7 +58,8 @@ F_MIN, F_MAX = 0.02, 3.5
 VALUES = dict(V=50.0, yfp=1.0, eps_rel=0.1)
 
 
-def runs(parameter_set="figures", where="fig12", variant=0):
+def runs(parameter_set: str = "figures", where: str = "fig12",
+         variant: int = 0) -> Tuple[Any, List[Dict[str, Any]], List[Any], List[Tuple[Any, Any]]]:
     """(stationary states, Hopf points named by their mode (shared.naming),
     orbit runs, [(PD point, run)] of the period-doubled orbits from them)."""
     rundir = paths.rundir(where)
@@ -79,7 +85,7 @@ def runs(parameter_set="figures", where="fig12", variant=0):
     return found, diagram.named, orbits, doubled
 
 
-def rolling_states(found):
+def rolling_states(found: Any) -> Any:
     """None at the symmetric gear (Newton from psi = 0 finds straight
     rolling), else the states of its branch (stationary.rolling_state):
     with side-stay angles Newton from psi = 0 stalls or lands on the
@@ -87,7 +93,7 @@ def rolling_states(found):
     return None if stationary.symmetric(found.values) else found.rolling_state
 
 
-def stable_from(found, hopf):
+def stable_from(found: Any, hopf: Sequence[float]) -> float:
     """The load from which straight rolling is stable up to the first Hopf
     point: its last pitchfork (symmetric gear) or fold below it, else the
     lowest load (with side-stay angles the branch from light load is the
@@ -96,7 +102,8 @@ def stable_from(found, hopf):
     return max(found.pitchforks + below, default=F_MIN)
 
 
-def bistable_interval(lower, hopf, orbits):
+def bistable_interval(lower: float, hopf: Sequence[float],
+                      orbits: Sequence[Any]) -> Tuple[Optional[float], Optional[float]]:
     """(a_12, b_12): the loads where straight rolling is stable (from
     `lower` to the Hopf point) and a stable orbit coexists with it,
     separated from it by unstable orbits.  The orbit branch leaves the Hopf
@@ -112,12 +119,13 @@ def bistable_interval(lower, hopf, orbits):
     return max(lower, min(coexisting)), min(upper, max(separating))
 
 
-def loads_of(named):
+def loads_of(named: Sequence[Mapping[str, Any]]) -> List[float]:
     """The loads of the named Hopf points, in order."""
     return [p["Fstar"] for p in named]
 
 
-def numbers(found, named, orbits):
+def numbers(found: Any, named: Sequence[Mapping[str, Any]],
+            orbits: Sequence[Any]) -> Dict[str, Optional[float]]:
     hopf = loads_of(named)
     out = {f"pitchfork {k + 1} F*": f for k, f in enumerate(found.pitchforks)}
     if not gear.current().symmetric:
@@ -135,7 +143,8 @@ def numbers(found, named, orbits):
     return out
 
 
-def bounds_meaning(found, hopf, numbers):
+def bounds_meaning(found: Any, hopf: Sequence[float],
+                   numbers: Mapping[str, Optional[float]]) -> List[str]:
     """What a_12 and b_12 are at this gear, as lines under the table: at the
     paper's gear a pitchfork of straight rolling and the Hopf point; at a
     side-stay geometry the pitchfork has become a fold of the stationary
@@ -158,7 +167,8 @@ def bounds_meaning(found, hopf, numbers):
     return [f"a_12 = {a12:.4g}: {a_is}", f"b_12 = {b12:.4g}: {b_is}"]
 
 
-def freeplay_boundary(parameter_set, loads, variant=0, state=None):
+def freeplay_boundary(parameter_set: str, loads: ArrayLike, variant: int = 0,
+                      state: Optional[Callable[[float], Any]] = None) -> numpy.ndarray:
     """psi_fp = y_fp / r_tlk(eta*) [rad] along straight rolling (state(F*):
     its state, as for runs)."""
     out = []
@@ -170,7 +180,8 @@ def freeplay_boundary(parameter_set, loads, variant=0, state=None):
     return numpy.array(out)
 
 
-def compute(name="fig12", variant=0, parameter_set="figures"):
+def compute(name: str = "fig12", variant: int = 0,
+            parameter_set: str = "figures") -> Dict[str, Any]:
     found, hopf, orbits, doubled = runs(parameter_set, name, variant)
     loads = numpy.linspace(F_MIN, F_MAX, 200)
     out = numbers(found, hopf, orbits)
@@ -190,7 +201,7 @@ def compute(name="fig12", variant=0, parameter_set="figures"):
                                                   rolling_states(found)))}
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     paper.report(result["name"], result["numbers"], notes=result["about"])
     eq, pitchforks, hopf = jobs.loaded(result["eq"]), result["pitchforks"], result["hopf"]
     yaw = [jobs.loaded(d) for d in result["yaw"]]

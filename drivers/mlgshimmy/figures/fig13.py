@@ -2,8 +2,13 @@
 (section IV.D.1), F* = 1: (a) diagrams in V for y_fp = 0.2, 0.5, 1, 2 mm,
 (b) their stiffness profiles, (c, d) amplitude and frequency of the stable
 orbits at V = 15, 50, 80, 110 m/s continued in y_fp."""
+from __future__ import annotations
+
+from typing import Any, Dict, Mapping, Optional, Sequence
+
 import matplotlib.pyplot as plt
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import runerror
 from mlgshimmy.shared import draw
@@ -44,19 +49,19 @@ FIT_RANGE = (0.05, 2.0)   # y_fp range of the linear fits [mm]
 ORBITS_FROM = 1.0         # y_fp [mm] the orbits at fixed V are continued from
 
 
-def parts():
+def parts() -> Dict[str, Any]:
     """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one),
     each in its own run directory build/fig13/<part>/."""
     return yfp_stored.diagram_jobs("fig13", "ratio", FREEPLAYS, orbits_at=ORBITS_FROM,
                            **gear.parameters())
 
 
-def compute(parts):
+def compute(parts: Any) -> Dict[str, Any]:
     diagrams, orbits = yfp_stored.diagrams_of(parts.all())
     return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits}
 
 
-def stable_piece(stable, start):
+def stable_piece(stable: ArrayLike, start: int) -> numpy.ndarray:
     """A mask of the stable points of an orbit curve (ordered) next to each
     other around index `start` (none if that point is unstable)."""
     mask = numpy.zeros(len(stable), dtype=bool)
@@ -71,7 +76,8 @@ def stable_piece(stable, start):
     return mask
 
 
-def numbers(diagrams, orbits):
+def numbers(diagrams: Sequence[Mapping[str, Any]],
+            orbits: Optional[Mapping[str, Any]]) -> Dict[str, Optional[float]]:
     """{quantity: value}: Hopf and fold speeds per y_fp, and per orbit speed
     the slope of psi_amp against y_fp (fit through 0), its largest relative
     residual, the intercept of a free linear fit, and the frequency range."""
@@ -99,7 +105,7 @@ def numbers(diagrams, orbits):
     return out
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     paper.report("fig13", paper.in_degrees(result["numbers"]))
     fig, axes = plt.subplots(2, 2, figsize=(10, 7.5))
     k_tlk = mlgmodel.Model("figures")["k_tlk"]

@@ -4,6 +4,10 @@
 frequency of the stable orbits at V = 15, 50, 80, 110 m/s continued in y_fp,
 with the Hopf curves in (y_fp, V) dot-dashed in (h) and their
 codimension-two points (shared.codim2) marked."""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
+
 import matplotlib.pyplot as plt
 import numpy
 
@@ -35,13 +39,13 @@ DECLARED = {
 FREEPLAYS = freeplay.FIG14_FREEPLAYS
 
 
-def hopf_curves():
+def hopf_curves() -> List[Dict[str, Any]]:
     curves = yfp_runs.hopf_curves(paths.rundir("fig14/hopf_curves"), "hopf", "fixed",
                             figure="fig14", **gear.parameters())
     return yfp_stored.stored_curves(curves, ("yfp", "V", "freq"))
 
 
-def parts():
+def parts() -> Dict[str, Any]:
     """One diagram in V per y_fp (the orbits in y_fp with the y_fp = 1 one)
     and the Hopf curves in (y_fp, V)."""
     return {**yfp_stored.diagram_jobs("fig14", "fixed", FREEPLAYS, orbits_at=1.0,
@@ -49,14 +53,14 @@ def parts():
             "hopf_curves": hopf_curves}
 
 
-def compute(parts):
+def compute(parts: Any) -> Dict[str, Any]:
     diagrams, orbits = yfp_stored.diagrams_of(parts.all())
     return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits,
             "hopf_curves": parts["hopf_curves"],
             "codim2": yfp_codim2.codim2_points(parts["hopf_curves"], "fixed", "V", **gear.parameters())}
 
 
-def lowest_orbit(curve, V):
+def lowest_orbit(curve: Mapping[str, Any], V: float) -> Tuple[float, str]:
     """(y_fp, kind): the smallest y_fp the orbits of speed V reach, and
     whether that is a Hopf point of straight rolling in y_fp ('Hopf'; AUTO
     may label the collapse there LP) or a fold in y_fp ('fold')."""
@@ -66,7 +70,8 @@ def lowest_orbit(curve, V):
     return y_min, "Hopf" if any(abs(y_min - y) < 2e-3 * y for y in hopf) else "fold"
 
 
-def numbers(diagrams, orbits):
+def numbers(diagrams: Sequence[Mapping[str, Any]],
+            orbits: Optional[Mapping[str, Any]]) -> Dict[str, Optional[float]]:
     """{quantity: value}: Hopf and fold speeds per y_fp; per orbit speed the
     smallest y_fp the orbits reach and the Hopf points in y_fp there."""
     out = yfp_stored.diagram_numbers(diagrams)
@@ -85,7 +90,7 @@ def numbers(diagrams, orbits):
     return out
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     paper.report("fig14", result["numbers"], notes=yfp_codim2.codim2_lines(result["codim2"]))
     fig = plt.figure(figsize=(12, 12))
     grid = fig.add_gridspec(4, 6)

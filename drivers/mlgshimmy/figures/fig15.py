@@ -3,6 +3,10 @@ x* = y_tlk / y_fp and y* = M_kpsi / (r_tlk k_tlk y_fp): (a) eps = 0.1 y_fp,
 where all coincide, (b) eps = 0.1 mm, where they do not.  Eq. (15), or the
 gear's freeplay law (FREEPLAY=): no continuation, no AUTO import and
 nothing to cache (it draws in seconds)."""
+from __future__ import annotations
+
+from typing import Sequence, Tuple
+
 import matplotlib.pyplot as plt
 import numpy
 
@@ -27,18 +31,18 @@ DECLARED = {
 SPAN = 3.0   # x* range: |x*| <= SPAN
 
 
-def rescaled(yfp, scaling, k_tlk):
+def rescaled(yfp: float, scaling: str, k_tlk: float) -> Tuple[numpy.ndarray, numpy.ndarray]:
     y, force = fp.profile(yfp, scaling, k_tlk, span=SPAN)
     return y / yfp, force / (k_tlk * 1e-3 * yfp)
 
 
-def spread(scaling, freeplays, k_tlk):
+def spread(scaling: str, freeplays: Sequence[float], k_tlk: float) -> float:
     """Largest difference between the rescaled profiles on a common x* grid."""
     curves = [rescaled(y, scaling, k_tlk)[1] for y in freeplays]
     return float(numpy.max(numpy.ptp(numpy.array(curves), axis=0)))
 
 
-def main():
+def main() -> None:
     k_tlk = mlgmodel.Model("figures")["k_tlk"]
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharey=True)
     ours = {}

@@ -3,8 +3,13 @@ lofted through diagrams in V (surfaces.py), (a) eps = 0.1 y_fp, (b) eps =
 0.1 mm, shaded by stability, with the curves of Hopf points and folds of
 cycles; in (b) the rectangles R1 = (0, r1) and R2 = (r2, r3) of y_fp where
 straight rolling is stable up to V = 120 m/s."""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
+
 import matplotlib.pyplot as plt
 import numpy
+from numpy.typing import ArrayLike
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
@@ -51,7 +56,7 @@ HOPF, FOLD = draw.HOPF_CURVE, draw.FOLD_CURVE
 FOLD_SEED = 0.15   # y_fp [mm] of the "fixed" diagram whose fold starts the fold curve
 
 
-def fold_seed():
+def fold_seed() -> Dict[str, Any]:
     """The "fixed" diagram at FOLD_SEED and the fold curves through its folds."""
     rundir = paths.rundir(f"fig16/fixed_y{FOLD_SEED:g}_folds")
     d = yfp_runs.diagram_in_V(rundir, f"fixed_y{FOLD_SEED:g}", "fixed", FOLD_SEED, uzr=(),
@@ -61,13 +66,13 @@ def fold_seed():
                 yfp_runs.fold_curves(rundir, "fold", [d], figure="fig16"), ("yfp", "V", "psi_amp"))}
 
 
-def hopf_curves():
+def hopf_curves() -> List[Dict[str, Any]]:
     curves = yfp_runs.hopf_curves(paths.rundir("fig16/hopf_curves"), "hopf", "fixed",
                             figure="fig16", **gear.parameters())
     return yfp_stored.stored_curves(curves, ("yfp", "V", "freq"))
 
 
-def parts():
+def parts() -> Dict[str, Any]:
     """One diagram in V per slice (the FOLD_SEED one with the fold curves),
     the Hopf curves in (y_fp, V) and the window points a, b, c."""
     work = {}
@@ -80,7 +85,7 @@ def parts():
             "window": lambda: kappa_criterion.window_points(yfp_runs.FSTAR, **gear.parameters())}
 
 
-def compute(parts):
+def compute(parts: Any) -> Dict[str, Any]:
     done = parts.all()
     family = {scaling: yfp_stored.diagrams_of(done, f"{scaling}_")[0] for scaling in FAMILY}
     window = parts["window"]
@@ -89,7 +94,7 @@ def compute(parts):
             "family": family, "hopf_curves": parts["hopf_curves"], "fold_curves": fold_curves}
 
 
-def crossing(curves, V):
+def crossing(curves: Sequence[Mapping[str, Any]], V: float) -> List[float]:
     """y_fp values where the stored AUTO curves cross speed V (linear
     interpolation)."""
     found = []
@@ -101,7 +106,8 @@ def crossing(curves, V):
     return sorted(found)
 
 
-def numbers(family, hopf_curves, window):
+def numbers(family: Any, hopf_curves: Sequence[Mapping[str, Any]],
+            window: Mapping[str, Any]) -> Dict[str, Optional[float]]:
     """{quantity: value}: r1, r2, r3 (= a, b, c of kappa_criterion.window_points)
     with AUTO's Hopf curves as a check, and the Hopf and fold speeds of
     every slice."""
@@ -116,19 +122,19 @@ def numbers(family, hopf_curves, window):
     return out
 
 
-def clipped(ys, Vs):
+def clipped(ys: ArrayLike, Vs: ArrayLike) -> Tuple[numpy.ndarray, numpy.ndarray]:
     """A curve with the points outside the plotted box (y_fp <= Y_MAX,
     V <= V_MAX) set to NaN: mplot3d does not clip."""
     outside = (ys > Y_MAX) | (Vs > yfp_runs.V_MAX)
     return numpy.where(outside, numpy.nan, ys), numpy.where(outside, numpy.nan, Vs)
 
 
-def band(freq):
+def band(freq: float) -> str:
     """The frequency band (kappa_criterion.BANDS) of an orbit family: "low" or "high"."""
     return next(name for name, (lo, hi) in kappa_criterion.BANDS.items() if lo <= freq < hi)
 
 
-def sheets(diagram):
+def sheets(diagram: Mapping[str, Any]) -> Dict[str, Dict[str, Any]]:
     """{band: {"V", "amp", "stable"}}: the orbit family of each frequency
     band in a stored diagram (by the frequency at its Hopf point)."""
     out = {}
@@ -142,7 +148,7 @@ def sheets(diagram):
     return out
 
 
-def apexes(hopf_curves):
+def apexes(hopf_curves: Sequence[Mapping[str, Any]]) -> Dict[str, List[Tuple[float, float]]]:
     """{band: [(V, y_fp)]}: the point of least y_fp of each Hopf curve, where
     its orbit sheet shrinks to a point (c for the low-frequency sheet)."""
     out = {}
@@ -152,7 +158,8 @@ def apexes(hopf_curves):
     return out
 
 
-def orbit_surface(ax, diagrams, hopf_curves):
+def orbit_surface(ax: Any, diagrams: Sequence[Mapping[str, Any]],
+                  hopf_curves: Sequence[Mapping[str, Any]]) -> None:
     """The orbit sheets lofted through the slices (surfaces.loft; psi
     amplitude in degrees), shaded by stability, and the slices of Figs. 13
     and 14 on them (solid stable, dashed unstable) with their folds."""
@@ -174,7 +181,7 @@ def orbit_surface(ax, diagrams, hopf_curves):
             ax.scatter([V], [d["yfp"]], [amp * DEG], color=draw.NEUTRAL, s=5, zorder=4)
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     paper.report("fig16", result["numbers"])
     family, window = result["family"], result["window"]
     fig = plt.figure(figsize=(13, 5.4))

@@ -2,6 +2,10 @@
 F* = 1) in the plane (V, y_fp/eps), with R1 and R2 and the points a, b, c
 that bound them (defined in kappa_criterion.window_points).  Drawn from Fig. 16's
 cached result: no computation of its own."""
+from __future__ import annotations
+
+from typing import Any, Dict, Mapping
+
 import matplotlib.pyplot as plt
 import numpy
 
@@ -25,7 +29,7 @@ DECLARED = {
 }
 
 
-def compute():
+def compute() -> Dict[str, Any]:
     """Fig. 16's curves and window, and the numbers of a, b, c."""
     fig16 = jobs.read("fig16")
     window = fig16["window"]
@@ -37,7 +41,7 @@ def compute():
             "fold_curves": fig16["fold_curves"]}
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     paper.report("fig17", result["numbers"])
     window = result["window"]
     fig, ax = plt.subplots(figsize=(7, 5))

@@ -4,8 +4,11 @@ fig18_v1): every allowed profile lies
 between the kappa* profile and the eps -> infinity limit y* = x* (no
 freeplay felt).  The two readings of the strut spring bound a band: the
 profiles between their kappa* profiles are allowed by one only."""
+from __future__ import annotations
+
 import matplotlib.pyplot as plt
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import draw
 from mlgshimmy.shared import freeplay as fp
@@ -29,7 +32,7 @@ DECLARED = {
 SPAN = 3.0
 
 
-def rescaled(kappa, x):
+def rescaled(kappa: float, x: ArrayLike) -> numpy.ndarray:
     """Eq. (15) rescaled (x* = y_tlk/y_fp, y* = M_kpsi/(r_tlk k_tlk y_fp)) for
     y_fp/eps = kappa: the profile of y_fp = 1 mm, eps = 1/kappa mm; kappa = 0
     (no freeplay allowed) is its eps -> infinity limit y* = x*."""
@@ -38,14 +41,14 @@ def rescaled(kappa, x):
     return fp.force(1e-3 * numpy.asarray(x), 1e-3, 1e-3 / kappa) / 1e-3
 
 
-def read_kappa(name):
+def read_kappa(name: str) -> float:
     try:
         return jobs.read(name)["kappa_star"]
     except jobs.MissingResult as exc:
         raise SystemExit(f"fig19: {exc}")
 
 
-def main():
+def main() -> None:
     kappa, kappa_printed = read_kappa("fig18"), read_kappa("fig18_v1")
     x = numpy.linspace(-SPAN, SPAN, 601)
     limit, printed = rescaled(kappa, x), rescaled(kappa_printed, x)
