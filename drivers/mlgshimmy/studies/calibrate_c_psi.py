@@ -1,8 +1,11 @@
 """The c_psi calibration of the `figures` parameter set (docs/model.md, c_psi):
 continue the zero-freeplay Hopf point of straight rolling at F* = 1 from the
 `table` set (c_psi = 410) in (V, c_psi) up to the paper's V = 346.1 m/s."""
+from __future__ import annotations
+
 import os
 import sys
+from typing import Tuple
 
 from mlgshimmy.shared import runerror
 from mlgshimmy.shared import continuation as ct
@@ -30,7 +33,7 @@ DECLARED = {
 V_PAPER = 346.1
 
 
-def calibrate(where="calibration"):
+def calibrate(where: str = "calibration") -> Tuple[float, float]:
     rundir = paths.rundir(where)
     start = ct.Start("table", Fstar=1.0, V=0.0)
     eq = ct.equilibria(rundir, "eq", start, stop={"V": 600.0}, expect=["HB"])
@@ -39,7 +42,7 @@ def calibrate(where="calibration"):
     return eq("HB1")["V"], curve("UZ1")["c_psi"]
 
 
-def main():
+def main() -> None:
     try:
         v_table, c_psi = calibrate()
     except (runerror.RunError, ValueError, RuntimeError) as exc:

@@ -15,11 +15,15 @@ in r.  Results are cached as parts of the result cache (shared.jobs,
 with their provenance): $MLG_RUN_ROOT/criterion/parts/<GROUP>.json and
 auto.json (default build/).
 """
+from __future__ import annotations
+
 import os
 import sys
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import matplotlib.pyplot as plt
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import runerror
@@ -59,12 +63,12 @@ TYRE_LOADS = (15e3, 30e3, 45e3, 60e3)  # F_tyre_min [N]; 0 is the paper's laws
 LOADS = kappa_criterion.CRITERION_LOADS
 
 
-def base_assumption():
+def base_assumption() -> Dict[str, float]:
     """The `figures` set's values of the varied assumptions (the library's c_psi)."""
     return {"c_psi": mlgmodel.C_PSI_FIGURES, "F_tyre_min": 0.0, "eta_stage": 0.34}
 
 
-def assumption(group, x, variant, **overrides):
+def assumption(group: str, x: Optional[float], variant: int, **overrides: float) -> Dict[str, Any]:
     return {"group": group, "x": x, "variant": variant,
             "overrides": {"strut_variant": float(variant), **overrides}}
 
@@ -79,29 +83,29 @@ AXES = {"strut": "strut variant", "stage": r"stage switch $\eta_s$ [m] (variant 
         "c_psi": r"$c_\psi$ [N m s/rad]", "tyre": r"$F_{tyre,min}$ [kN]"}
 
 
-def first_unstable(Fstar, **overrides):
+def first_unstable(Fstar: float, **overrides: float) -> Dict[str, Any]:
     """At one load: the smallest y_fp [mm] with straight rolling unstable for
     some V <= V_LIMIT, that speed, and the static compression eta* [m]
     (kappa_criterion.least_unstable)."""
     return kappa_criterion.least_unstable(Fstar, **overrides)
 
 
-def kappa_star(overrides):
+def kappa_star(overrides: Mapping[str, float]) -> Dict[str, Any]:
     """{kappa, Fstar, V, eta, mode} at the minimum over the envelope's loads,
     for the run's gear (shared.gear) with the overrides."""
     return kappa_criterion.criterion({**overrides, **gear.parameters()})
 
 
-def write(name, data):
+def write(name: str, data: Any) -> None:
     """The cached part <name> (a group, or "auto") of the criterion."""
     jobs.write("criterion", data, "figures", part=name)
 
 
-def read(name, root=None, model=None):
+def read(name: str, root: Optional[str] = None, model: Any = None) -> Any:
     return jobs.read("criterion", name, root=root, model=model)
 
 
-def baseline_parts():
+def baseline_parts() -> Dict[str, Any]:
     """{group: results} of the paper's geometry, to print beside a side-stay
     geometry's ({} at the baseline; a group not computed there is left out)."""
     if gear.current().baseline:
@@ -115,7 +119,7 @@ def baseline_parts():
     return out
 
 
-def scan(group):
+def scan(group: str) -> None:
     results = []
     for item in GROUPS[group]:
         results.append({**item, **kappa_star(item["overrides"])})
@@ -125,7 +129,7 @@ def scan(group):
     write(group, results)
 
 
-def parabola_minimum(xs, ys):
+def parabola_minimum(xs: ArrayLike, ys: ArrayLike) -> Tuple[float, float]:
     """(x, y) at the vertex of the parabola through the lowest sample and its
     two neighbours (the sample itself if it is an end); xs distinct."""
     k = int(numpy.argmin(ys))
@@ -139,7 +143,7 @@ def parabola_minimum(xs, ys):
 AUTO_SPAN = 0.1   # the AUTO check's curve of a: F* this far either side of the scan's minimum
 
 
-def auto_kappa(variant, scanned):
+def auto_kappa(variant: int, scanned: Sequence[Mapping[str, Any]]) -> Dict[str, Any]:
     """kappa* by AUTO: the point a (a Hopf point at V = V_LIMIT) at the
     scan's least load, converged by AUTO, continued in (F*, y_fp) AUTO_SPAN
     either way, and the least y_fp along that curve (parabola_minimum).
@@ -171,7 +175,7 @@ def auto_kappa(variant, scanned):
             "scan": scanned["kappa"], "relative difference": kappa / scanned["kappa"] - 1}
 
 
-def auto():
+def auto() -> None:
     """AUTO's check of each strut variant's kappa* where it applies: the
     scan's minimum on V = V_LIMIT (a point a); elsewhere (a minimum below
     the speed limit, e.g. kappa* = 0 at side-stay angles) the reason."""
@@ -191,7 +195,7 @@ def auto():
     write("auto", results)
 
 
-def label(item):
+def label(item: Mapping[str, Any]) -> str:
     if item["group"] == "strut":
         return f"strut variant {item['variant']}"
     unit = {"stage": " m", "c_psi": " N m s/rad", "tyre": " N"}[item["group"]]
@@ -199,7 +203,7 @@ def label(item):
     return f"{name} = {item['x']:g}{unit}, variant {item['variant']}"
 
 
-def lines(groups):
+def lines(groups: Mapping[str, Any]) -> Dict[str, Dict[int, List[Tuple[float, Any]]]]:
     """{group: {variant: [(x, result)]}} sorted in x; the groups that vary
     one value of the base assumption get its point from the strut group."""
     base = {item["variant"]: item for item in groups["strut"]}
@@ -216,7 +220,7 @@ def lines(groups):
     return out
 
 
-def plot(groups):
+def plot(groups: Mapping[str, Any]) -> None:
     # kappa* above, the strut compression at its minimum below: one quantity an axis
     fig, axes = plt.subplots(2, 4, figsize=(13, 6.2), sharex="col")
     colours = {0: draw.STABLE, 1: draw.UNSTABLE}
@@ -239,7 +243,7 @@ def plot(groups):
     draw.save(fig, "criterion")
 
 
-def report():
+def report() -> None:
     groups = {group: read(group) for group in GROUPS}
     checks = read("auto")
     base = baseline_parts()
@@ -278,7 +282,7 @@ def report():
         sys.exit(f"criterion: the two methods differ by {worst:.2%} (more than 1 %)")
 
 
-def custom(assignments):
+def custom(assignments: Sequence[str]) -> None:
     """kappa* with parameters or constants set by name (NAME=VALUE)."""
     overrides = {}
     for text in assignments:
@@ -298,7 +302,7 @@ def custom(assignments):
           f"m/s, eta* = {result['eta']:.5f} m, mode {result['mode']}")
 
 
-def main(argv):
+def main(argv: Sequence[str]) -> None:
     try:
         if argv[:1] == ["scan"] and len(argv) == 2 and argv[1] in GROUPS:
             scan(argv[1])

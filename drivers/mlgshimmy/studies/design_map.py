@@ -47,11 +47,14 @@ Subcommands (angles in degrees: "a,b,c" or "start:stop:step"):
 check, every point, summary: $MLG_RUN_ROOT/figures/design_map.png,
 tables/design_map.txt and design_map.json (docs/design-map.md).
 """
+from __future__ import annotations
+
 import argparse
 import functools
 import os
 import sys
 import time
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
@@ -112,7 +115,7 @@ QUANTITIES = (("critical_V", "V_crit (zero freeplay)", "m/s", ".3f"),
 
 
 
-def settings():
+def settings() -> Dict[str, Any]:
     """What a point's result depends on besides its angles, the code, the
     model and AUTO (recorded in its provenance, shared.jobs.grid)."""
     return {"eom_terms": EOM, "Fstar": FSTAR, "freeplay": FREEPLAY, "high_Hz": HIGH_HZ,
@@ -124,13 +127,13 @@ def settings():
 POINTS = jobgrid.Plane("rho", "mu", "design_map", "figures", settings)   # rho<deg>_mu<deg>
 
 
-def axes(args):
+def axes(args: Any) -> List[Tuple[float, float]]:
     rhos = jobgrid.axis(args.rho, "DESIGN_RHO (--rho)", "angles in degrees")
     mus = jobgrid.axis(args.mu, "DESIGN_MU (--mu)", "angles in degrees")
     return jobgrid.plane(rhos, mus)
 
 
-def at(rho, mu):
+def at(rho: float, mu: float) -> Tuple[geometry.Geometry, Dict[str, float]]:
     """The geometry of a grid point and its model parameters (eom_terms = 2
     at every point, rho = mu = 0 included)."""
     return geometry.Geometry(rho, mu, EOM), geometry.model_angles(rho, mu, float(EOM))
@@ -151,7 +154,7 @@ def problem(point):
     return None
 
 
-def speeds(values):
+def speeds(values: Mapping[str, float]) -> Dict[str, Any]:
     """The scans at F* = 1: {critical_V, hopf: [(V, Hz)] with freeplay,
     hopf_names: their names by mode (shared.naming), hopf_l1: their first
     Lyapunov coefficients, hopf_criticality: by the normal form
@@ -172,7 +175,7 @@ def speeds(values):
                                                 ct.V_MIN, ct.V_MAX, **case)}
 
 
-def fold_S(rundir, start, values):
+def fold_S(rundir: str, start: Optional[float], values: Mapping[str, float]) -> Dict[str, Any]:
     """AUTO: the orbits born at H3 (its speed `start`, or None where it has
     vanished), followed to psi_amp = PSI_AMP_STOP, and their fold of least
     V, S (a fold within 0.1 % of the Hopf point is AUTO's spurious
@@ -199,7 +202,8 @@ def fold_S(rundir, start, values):
                      "MX": "MX (no convergence)"}.get(last, last)}
 
 
-def kappa(values, loads=KAPPA_LOADS, finer=KAPPA_FINER):
+def kappa(values: Mapping[str, float], loads: Sequence[float] = KAPPA_LOADS,
+          finer: Tuple[int, ...] = KAPPA_FINER) -> Dict[str, Any]:
     """kappa* over the envelope's loads (the criterion's recipe), the
     freeplay it allows (kappa_yfp = kappa* eps [mm]), whether its load lies
     in the oleo's stage-switch window, and kappa* over the loads off it."""
@@ -214,7 +218,8 @@ def kappa(values, loads=KAPPA_LOADS, finer=KAPPA_FINER):
             "off_switch_V": off_best["V"], "off_switch_yfp": off_best["first"]}
 
 
-def link_position(values, Fstar, yfp, epsilon):
+def link_position(values: Mapping[str, float], Fstar: float, yfp: float,
+                  epsilon: Mapping[str, float]) -> float:
     """y_tlk/y_fp of straight rolling (continued from zero freeplay,
     shared.rolling) at load F*, freeplay y_fp [mm], epsilon {eps_abs,
     eps_rel}."""
@@ -224,13 +229,13 @@ def link_position(values, Fstar, yfp, epsilon):
     return geometry.y_tlk(model, u) / (1e-3 * yfp)
 
 
-def cpu():
+def cpu() -> float:
     """CPU seconds of this process and its finished children (AUTO)."""
     t = os.times()
     return t.user + t.system + t.children_user + t.children_system
 
 
-def compute(rho, mu, rundir):
+def compute(rho: float, mu: float, rundir: str) -> Dict[str, Any]:
     """Every number of one grid point, with the CPU seconds of each stage."""
     g, values = at(rho, mu)
     seconds, out = {}, {"rho_deg": g.rho_deg, "mu_deg": g.mu_deg, "eom_terms": EOM}
@@ -265,7 +270,7 @@ def compute(rho, mu, rundir):
     return out
 
 
-def run_point(name):
+def run_point(name: str) -> None:
     rho, mu = POINTS.parse(name)
     started = time.monotonic()
     result = compute(rho, mu, paths.rundir(os.path.join("design_map", name)))
@@ -283,7 +288,8 @@ def _cell(value, fmt, key=""):
     return format(value, fmt)
 
 
-def nearest(cells, mark):
+def nearest(cells: Sequence[Mapping[str, Any]],
+            mark: Optional[Tuple[float, float]]) -> Optional[Mapping[str, Any]]:
     """The cell of the grid point nearest to the user's geometry `mark`
     (rho, mu) [deg], or None without one."""
     if mark is None:
@@ -291,7 +297,7 @@ def nearest(cells, mark):
     return min(cells, key=lambda c: (c["rho_deg"] - mark[0]) ** 2 + (c["mu_deg"] - mark[1]) ** 2)
 
 
-def headline(c):
+def headline(c: Mapping[str, Any]) -> str:
     """What a designer reads first at one geometry, from the numbers the
     map computes (saying so where one was not found)."""
     stable = ", ".join(f"{a:.3f}-{b:.3f}" for a, b in c["stable"]) or "no speed"
@@ -326,7 +332,7 @@ def headline(c):
     return "; ".join(parts)
 
 
-def table(cells, mark=None):
+def table(cells: Sequence[Mapping[str, Any]], mark: Optional[Tuple[float, float]] = None) -> str:
     """The table's text: one row per geometry, then one headline per
     geometry; the user's geometry `mark` (or the grid point nearest it)
     flagged."""
@@ -373,7 +379,9 @@ def table(cells, mark=None):
         for c in cells]) + "\n"
 
 
-def summary(points, results, provenance, mark=None):
+def summary(points: Sequence[Tuple[float, float]], results: Sequence[Mapping[str, Any]],
+            provenance: Optional[Mapping[str, Any]],
+            mark: Optional[Tuple[float, float]] = None) -> None:
     """The table, its JSON and the maps from the points' results (their
     records, every point's checked present and of one provenance by
     shared.jobs.grid); mark: the user's geometry (rho, mu) [deg] or None."""
@@ -399,7 +407,7 @@ def summary(points, results, provenance, mark=None):
 SWITCH_FLAGGED = ("kappa", "kappa_yfp", "kappa_Fstar")   # panels hatched where on_switch
 
 
-def plot(cells, mark=None):
+def plot(cells: Sequence[Mapping[str, Any]], mark: Optional[Tuple[float, float]] = None) -> None:
     import matplotlib.pyplot as plt
     from matplotlib.patches import Patch, Rectangle
 
@@ -455,7 +463,7 @@ def plot(cells, mark=None):
     draw.save(fig, "design_map")
 
 
-def mark_of(text):
+def mark_of(text: str) -> Tuple[float, ...]:
     """(rho, mu) [deg] of --mark "RHO,MU" (either may be empty: 0)."""
     parts = text.split(",")
     if len(parts) != 2:
@@ -463,7 +471,7 @@ def mark_of(text):
     return tuple(float(part) if part.strip() else 0.0 for part in parts)
 
 
-def main(argv=None):
+def main(argv: Optional[Sequence[str]] = None) -> None:
     # --mark concerns the summary alone: the grid and its jobs do not see it
     parser = argparse.ArgumentParser(add_help=False, allow_abbrev=False)
     parser.add_argument("--mark", default="")

@@ -12,8 +12,11 @@ Neimark-Sacker: floquet.torus_crossings), a real multiplier through -1
 fold), each between the two points where the count beyond changes.  The figure goes to $MLG_RUN_ROOT/figures/floquet_<run>.png and the
 crossings are printed.
 """
+from __future__ import annotations
+
 import os
 import sys
+from typing import Dict, List, Mapping, Sequence, Tuple
 
 import numpy
 
@@ -33,7 +36,7 @@ DECLARED = {
 REAL = floquet.COMPLEX     # |Im mu| up to this: a real multiplier
 
 
-def real_crossings(steps, through):
+def real_crossings(steps: Sequence[Tuple[float, numpy.ndarray]], through: float) -> List[float]:
     """Where the number of real multipliers beyond `through` (below -1:
     period doubling; above +1, the trivial multiplier, the one nearest 1,
     left out: a fold) changes between two points: [parameter value], midway
@@ -49,14 +52,15 @@ def real_crossings(steps, through):
     return out
 
 
-def crossings(steps):
+def crossings(steps: Sequence[Tuple[float, numpy.ndarray]]) -> Dict[str, List[float]]:
     """{"torus": [values], "period doubling": [values], "fold": [values]}."""
     return {"torus": [c["value"] for c in floquet.torus_crossings(steps)],
             "period doubling": real_crossings(steps, -1.0),
             "fold": real_crossings(steps, 1.0)}
 
 
-def plot(steps, found, title, out):
+def plot(steps: Sequence[Tuple[float, numpy.ndarray]], found: Mapping[str, List[float]],
+         title: str, out: str) -> None:
     import matplotlib.pyplot as plt
 
     from mlgshimmy.shared import draw
@@ -80,7 +84,7 @@ def plot(steps, found, title, out):
     draw.save(fig, out)
 
 
-def main(argv):
+def main(argv: Sequence[str]) -> None:
     if len(argv) != 1:
         sys.exit("usage: python3 -m mlgshimmy.studies.floquet_plot <run directory>/<run name> "
                  "(its d-file is <run directory>/d.<run name>)")

@@ -28,7 +28,10 @@ frequency at CHECK_V set against the settled simulated stick-slip there.
 
     make friction              # compute (cached) and plot: build/figures/friction.png
 """
+from __future__ import annotations
+
 import math
+from typing import Any, Dict, List, Mapping, Optional, Tuple
 
 import numpy
 
@@ -87,13 +90,13 @@ KAPPA_V = 1e-3                      # m/s: v_fric of those runs (only c_eq matte
 # 1e-6 stops it once the amplitude is near zero
 
 
-def low_frequency_pairs(values):
+def low_frequency_pairs(values: Mapping[str, float]) -> List[Tuple[float, float]]:
     """The low-frequency Hopf points of straight rolling on H_GRID (V, Hz)."""
     return [(v, f) for v, f in spectrum.hopf_scan("figures", "V", H_GRID, **values)
             if f < naming.HIGH_HZ]
 
 
-def low_frequency_hopf(values):
+def low_frequency_hopf(values: Mapping[str, float]) -> List[Tuple[float, float]]:
     """H1 and H2 of straight rolling at zero friction (V, Hz): the first two
     low-frequency Hopf points of the eigenvalue scan."""
     low = low_frequency_pairs(values)
@@ -103,7 +106,7 @@ def low_frequency_hopf(values):
     return low[:2]
 
 
-def linear_threshold(values):
+def linear_threshold(values: Mapping[str, float]) -> float:
     """The least M_fric at which straight rolling has no low-frequency Hopf
     point on H_GRID (its linearisation: a damper M_fric r_seal / v_fric on
     the twist), to 1e-6 relative: the Hopf curve's largest M_fric."""
@@ -115,7 +118,8 @@ def linear_threshold(values):
     return spectrum.bisect(has_pair, 0.0, hi, tol=1e-6 * hi)
 
 
-def orbit_at_v0(rundir, tag, values):
+def orbit_at_v0(rundir: str, tag: str,
+                values: Mapping[str, float]) -> Tuple[float, float, Any, Any]:
     """Step 1: H1, H2 and the zero-friction low-frequency orbits from H1 in
     V up to 0.95 H2, with the orbit at V0 (an AUTO solution)."""
     (h1, _), (h2, _) = low_frequency_hopf(values)
@@ -130,7 +134,7 @@ def orbit_at_v0(rundir, tag, values):
     return h1, h2, orbits, at_v0[0]
 
 
-def fold_in_friction(rundir, tag, orbit):
+def fold_in_friction(rundir: str, tag: str, orbit: Any) -> Any:
     """Step 2: the orbit continued in M_fric to its fold: (the LP solution,
     the orbit at CHECK_M on the way).  Past the fold the orbits shrink onto
     straight rolling, where AUTO may stop (MX): only the fold is used."""
@@ -181,7 +185,7 @@ def stick_slip(V, psi0, values):
             "sticks": int(out["crossings_slip_pos"] + out["crossings_slip_neg"])}
 
 
-def fold_in_speed_and_friction(rundir, tag, fold):
+def fold_in_speed_and_friction(rundir: str, tag: str, fold: Any) -> Dict[str, List[float]]:
     """Step 3: the fold continued in (V, M_fric) both ways, up to the Hopf
     curve, or zero friction, at each end: {V, M_fric, psi_amp, freq} along it."""
     # a step past M_fric = 0 leaves the domain, and AUTO's fold system turns
@@ -204,7 +208,7 @@ def fold_in_speed_and_friction(rundir, tag, fold):
     return curve
 
 
-def case(tag, yfp, v_fric):
+def case(tag: str, yfp: float, v_fric: float) -> Dict[str, Any]:
     """Steps 1-3 for one case: the fold curve, M_f* and the orbit it is
     measured against."""
     values = {**CONDITIONS, "yfp": yfp, "v_fric": v_fric, **gear.parameters()}
@@ -247,7 +251,8 @@ def torsional_critical(values):
     return 2.0 * math.sqrt(model["k_tlk"] * r * r * model["I_psi"])
 
 
-def equivalent_damping_ratio(values, moment, amplitude, freq):
+def equivalent_damping_ratio(values: Mapping[str, float], moment: float, amplitude: float,
+                             freq: float) -> float:
     """The viscous damping dissipating as much per cycle as a Coulomb moment
     on a harmonic twist of this amplitude and frequency, 4 M / (pi omega A),
     relative to torsional_critical."""
@@ -270,7 +275,7 @@ def kappa_against_friction():
     return out
 
 
-def cases():
+def cases() -> Dict[str, Tuple[float, float]]:
     """(tag, y_fp, v_fric) of the ladder and of the freeplays (shared ones once);
     at another gear (make friction RHO=10 MU=10) the converged rung alone."""
     if not gear.current().baseline:
@@ -289,7 +294,7 @@ def exact_check(ladder):
             for V in CHECK_V}
 
 
-def compute():
+def compute() -> Dict[str, Any]:
     print("friction: critical seal friction of the low-frequency shimmy, Fig. 10's conditions"
           + gear.suffix())
     found = [case(tag, *args) for tag, args in cases().items()]
@@ -310,7 +315,7 @@ def check_rows(result):
     return rows
 
 
-def numbers(result):
+def numbers(result: Mapping[str, Any]) -> Dict[str, Optional[float]]:
     """{quantity: value}: M_f* of every case, where it lies, and its damping ratio."""
     out = {}
     for c in result["cases"]:
@@ -361,7 +366,7 @@ def conclusions(result):
         "the shimmy: M_f* does."] + exact
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     import matplotlib.pyplot as plt
     ladder = [c for c in result["cases"] if c["yfp"] == 1.0]
     ladder.sort(key=lambda c: -c["v_fric"])

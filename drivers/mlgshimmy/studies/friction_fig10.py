@@ -10,6 +10,10 @@ isolated family (the fold curves of make friction).
 
     make friction_fig10        # build/figures/friction_fig10.png
 """
+from __future__ import annotations
+
+from typing import Any, Dict
+
 import matplotlib.pyplot as plt
 
 from mlgshimmy.shared import continuation as ct
@@ -56,7 +60,7 @@ def level(moment):
             "folds": folds}
 
 
-def compute():
+def compute() -> Dict[str, Any]:
     print("friction_fig10: Fig. 10 at seal friction levels " + ", ".join(map(str, LEVELS))
           + " N m" + gear.suffix())
     return {"levels": [level(m) for m in LEVELS]}

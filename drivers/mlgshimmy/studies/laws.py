@@ -8,6 +8,10 @@ destabilises straight rolling, over 0.1 mm.
     make laws          # under a minute; the table in build/tables/laws.txt
     make laws-plot     # the table again from the cache
 """
+from __future__ import annotations
+
+from typing import Any, Dict, Mapping
+
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import gear, jobs, mlgmodel, paths
 from mlgshimmy.shared import kappa_criterion
@@ -28,7 +32,7 @@ DECLARED = {
 FIGURE = "laws"
 
 
-def compute():
+def compute() -> Dict[str, Any]:
     out = {}
     for law, name in enumerate(mlgmodel.LAWS):
         found = kappa_criterion.criterion({**gear.parameters(), "freeplay_law": law})
@@ -38,7 +42,7 @@ def compute():
     return {"kappa": out, "eps_mm": freeplay.EPSILON}
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     rows = [("law", "kappa*", "y_fp allowed [mm]", "F*", "V [m/s]", "mode")]
     for name, k in result["kappa"].items():
         rows.append((name, f"{k['kappa']:.6g}", f"{k['kappa'] * result['eps_mm']:.6g}",

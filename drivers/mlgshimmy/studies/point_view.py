@@ -13,9 +13,12 @@ with psi displaced by KICK, so that the time series shows whether the
 point attracts.  Cached as point_<run>_<label> (the run's path under the
 run root), drawn to $MLG_RUN_ROOT/figures/point_<run>_<label>.png.
 """
+from __future__ import annotations
+
 import argparse
 import os
 import sys
+from typing import Any, List, Optional, Sequence, Tuple
 
 import numpy
 
@@ -37,7 +40,7 @@ KICK = 1e-4             # rad added to an equilibrium's psi
 SAMPLES_PER_PERIOD = 60
 
 
-def run_files(run: str):
+def run_files(run: str) -> Tuple[str, str, List[str]]:
     """(run directory, run name, [b, s, d] paths); ValueError naming RUN."""
     where, name = os.path.split(os.path.abspath(run))
     files = [os.path.join(where, f"{kind}.{name}") for kind in "bsd"]
@@ -48,7 +51,7 @@ def run_files(run: str):
     return where, name, files
 
 
-def parameters(sol, where: str) -> dict:
+def parameters(sol: Any, where: str) -> dict:
     """The model parameters of a solution: its PAR and the constants of its
     run's file mlg.constants.<k> (PAR(15) = k; shared.mlgmodel)."""
     names = [n for n in mlgmodel.PARNAMES if n and n != mlgmodel.CONSTANTS_FILE]
@@ -158,7 +161,7 @@ def plot(result: dict, name: str) -> None:
     draw.save(fig, name)
 
 
-def main(argv=None) -> None:
+def main(argv: Optional[Sequence[str]] = None) -> None:
     parser = argparse.ArgumentParser(prog="python3 -m mlgshimmy.studies.point_view",
                                      description=__doc__.splitlines()[0])
     parser.add_argument("run", help="<run directory>/<run name>, e.g. build/fig10/po3")

@@ -19,9 +19,12 @@ SET=...` reuses them.  The job "baseline_x1" is the gear itself.
 `make -j2 robustness` runs check, every job, summary; `make robustness
 ROBUST_PARAMETERS=k_tlk ROBUST_FACTORS=0.9,1.1` a part of it.
 """
+from __future__ import annotations
+
 import os
 import subprocess
 import time
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import children, gear, mlgmodel, overlay, paths
 from mlgshimmy.shared import kappa_criterion
@@ -60,24 +63,24 @@ UNFOLLOWED = "stops (MX"
 class Variations(jobgrid.Plane):
     """Jobs named <parameter>_x<factor> (BASELINE_x1: the gear itself)."""
 
-    def name(self, a, b):
+    def name(self, a: str, b: float) -> str:
         return f"{a}_x{b:g}"
 
-    def parse(self, name):
+    def parse(self, name: str) -> Tuple[str, float]:
         a, sep, b = name.rpartition("_x")
         if not sep or (a not in PARAMETERS and a != BASELINE):
             raise ValueError(f"not a variation <parameter>_x<factor>: {name!r}")
         return a, float(b)
 
 
-def settings():
+def settings() -> Dict[str, Any]:
     return {"targets": list(TARGETS), "gear": gear.current().record()}
 
 
 JOBS = Variations("parameter", "factor", "robustness", "figures", settings, noun="variations")
 
 
-def grid(args):
+def grid(args: Any) -> List[Tuple[str, float]]:
     names = [n for n in args.parameters.replace(",", " ").split()]
     for name in names:
         if name not in PARAMETERS:
@@ -92,7 +95,7 @@ def grid(args):
     return [(BASELINE, 1.0)] + [(n, f) for n in names for f in factors if f != 1.0]
 
 
-def varied(name, factor):
+def varied(name: str, factor: float) -> gear.Gear:
     """The gear of a variation: this process's, with name at factor times
     its value there ({} for the baseline)."""
     if name == BASELINE:
@@ -112,7 +115,7 @@ def problem(point):
     return None
 
 
-def make_target(target, model, log):
+def make_target(target: str, model: gear.Gear, log: str) -> Tuple[int, float]:
     """`make <target>` for the gear `model` (its output appended to log):
     (exit status, seconds)."""
     g = model.geometry
@@ -131,7 +134,7 @@ def make_target(target, model, log):
     return status, round(time.monotonic() - started, 1)
 
 
-def numbers_of(target, model):
+def numbers_of(target: str, model: gear.Gear) -> Optional[Dict[str, float]]:
     """The named points of a target's result made for `model` (None if none)."""
     from mlgshimmy.shared import jobs
     root = gear.tree(gear.base_root(), model)
@@ -143,7 +146,7 @@ def numbers_of(target, model):
     return {q: v for q, v in (numbers or {}).items() if isinstance(v, (int, float))}
 
 
-def run_job(name):
+def run_job(name: str) -> None:
     parameter, factor = JOBS.parse(name)
     model = varied(parameter, factor)
     where = paths.rundir(os.path.join("robustness", name))
@@ -182,7 +185,8 @@ def _cell(value, base):
     return f"{value:.4g} ({(value - base) / base:+.1%})"
 
 
-def summary(points, results, provenance):
+def summary(points: Sequence[Tuple[str, float]], results: Sequence[Mapping[str, Any]],
+            provenance: Optional[Mapping[str, Any]]) -> None:
     complete = sum(r["complete"] for r in results)
     runs = [t for r in results for t in r["targets"].values()]
     lines = [f"robustness: {complete} of {len(results)} variations complete with every named "
@@ -215,7 +219,7 @@ def summary(points, results, provenance):
     print(text, end="")
 
 
-def main():
+def main() -> None:
     jobgrid.main("robustness", __doc__.splitlines()[0], "job", JOBS,
                  [("--parameters", ",".join(PARAMETERS), "parameters varied, comma-separated"),
                   ("--factors", FACTORS, "factors of each, comma-separated")],

@@ -20,6 +20,10 @@ F* = 1, y_fp = 1 mm.
     make segmented          # compute (about 7 min), the table and the figure
     make segmented-plot     # redraw from the cache
 """
+from __future__ import annotations
+
+from typing import Any, Dict, Mapping
+
 import numpy
 
 from mlgshimmy.shared import branches, gear, jobs, mlgmodel, naming, paths, segmented
@@ -168,7 +172,7 @@ def rolling(values):
                                                               ct.V_MAX, **law)}
 
 
-def compute():
+def compute() -> Dict[str, Any]:
     at = gear.parameters()
     values = {**at, **CASE}
     rundir = paths.rundir(FIGURE)
@@ -182,7 +186,7 @@ def compute():
             "smoothed_hopf": smooth.hopf}
 
 
-def text(result) -> str:
+def text(result: Mapping[str, Any]) -> str:
     lines = ["segmented: Fig. 10 (F* = 1, y_fp = 1 mm) under eq. (14)", ""]
     lines += [f"  {name} = {v:.6f} m/s (straight rolling, eigenvalue scan)"
               for name, v in result["rolling"]["hopf"].items()]

@@ -15,12 +15,15 @@ model executable and library, the constants files, these drivers) is
 unchanged (cache.json in their directory).  Angles outside the model's range
 stop the driver before any AUTO run.
 """
+from __future__ import annotations
+
 import argparse
 import hashlib
 import json
 import math
 import os
 import sys
+from typing import Any, Callable, Dict, List, Mapping, Optional
 
 import matplotlib.pyplot as plt
 
@@ -66,30 +69,30 @@ INPUTS = [os.path.join(paths.BUILD, "models", "mlg.exe"),
           *depends.closure(["mlgshimmy.studies.sidestay"])]
 
 
-def name_of(rho_deg, mu_deg):
+def name_of(rho_deg: float, mu_deg: float) -> str:
     return f"sidestay_rho{rho_deg:g}_mu{mu_deg:g}"
 
 
-def case_values(rho_deg, mu_deg, eom_terms):
+def case_values(rho_deg: float, mu_deg: float, eom_terms: int) -> Dict[str, Dict[str, float]]:
     """{case tag: parameter values}."""
     angles = geometry.model_angles(rho_deg, mu_deg, eom_terms)
     return {tag: {"Fstar": 1.0, **angles, **values} for _, _, tag, values in CASES}
 
 
-def starts(rho_deg, mu_deg, eom_terms):
+def starts(rho_deg: float, mu_deg: float, eom_terms: int) -> Dict[str, Any]:
     """{case tag: Start}; validates every parameter set first (ValueError)."""
     return {tag: ct.Start("figures", V=V_START, **values)
             for tag, values in case_values(rho_deg, mu_deg, eom_terms).items()}
 
 
-def hopf_points(rundir, tag, values):
+def hopf_points(rundir: str, tag: str, values: Mapping[str, float]) -> Any:
     """AUTO's HB points of straight rolling in V in [V_START, V_STOP]
     (continuation.hopf_points on a 0.2 m/s grid)."""
     return ct.hopf_points(rundir, f"hb_{tag}_", "figures", "V",
                           ct.SPEED_SCAN, **values)
 
 
-def attempt(name, run, notes):
+def attempt(name: str, run: Callable[[], Any], notes: List[str]) -> Any:
     """run() -> diagram, run with allow_mx: a branch that ends without
     convergence (MX) is kept up to there; a run that fails gives None.  Either
     is noted."""
@@ -103,7 +106,7 @@ def attempt(name, run, notes):
     return bd
 
 
-def cache_key(eom_terms):
+def cache_key(eom_terms: int) -> str:
     digest = hashlib.sha256(f"eom_terms={eom_terms}\n".encode())
     for path in INPUTS:
         with open(path, "rb") as f:
@@ -111,7 +114,7 @@ def cache_key(eom_terms):
     return digest.hexdigest()
 
 
-def cached(rundir, key):
+def cached(rundir: str, key: str) -> bool:
     """True if rundir holds a complete result computed with this key."""
     try:
         with open(os.path.join(rundir, CACHE)) as f:
@@ -120,7 +123,7 @@ def cached(rundir, key):
         return False
 
 
-def load(rundir):
+def load(rundir: str) -> Dict[str, Any]:
     """compute()'s result read back from the run files cache.json lists."""
     with open(os.path.join(rundir, CACHE)) as f:
         index = json.load(f)["runs"]
@@ -133,7 +136,8 @@ def load(rundir):
                   entry["notes"]) for tag, entry in index.items()}
 
 
-def compute(rho_deg, mu_deg, eom_terms, key=None):
+def compute(rho_deg: float, mu_deg: float, eom_terms: int,
+            key: Optional[str] = None) -> Dict[str, Any]:
     """{case tag: (equilibria, [HB points], [orbits], [Hopf curves], [notes])}.
     With a cache key: reuse the runs stored with that key, or compute and
     store them with it."""
@@ -173,7 +177,8 @@ def compute(rho_deg, mu_deg, eom_terms, key=None):
     return result
 
 
-def plot(name, title, result, reference):
+def plot(name: str, title: str, result: Mapping[str, Any],
+         reference: Optional[Mapping[str, Any]]) -> None:
     fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
     fig.subplots_adjust(wspace=0.3)
     deg = 180.0 / math.pi
@@ -213,7 +218,8 @@ def plot(name, title, result, reference):
     draw.save(fig, name)
 
 
-def report(name, title, result, reference):
+def report(name: str, title: str, result: Mapping[str, Any],
+           reference: Optional[Mapping[str, Any]]) -> None:
     """The numbers of both geometries, printed and stored as
     $MLG_RUN_ROOT/tables/<name>.txt (plain text)."""
     lines = [title]
@@ -230,7 +236,7 @@ def report(name, title, result, reference):
     print(f"sidestay: wrote {os.path.relpath(path, paths.ROOT)}")
 
 
-def main():
+def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rho", type=float, required=True, help="rho [deg]")
     parser.add_argument("--mu", type=float, required=True, help="mu [deg]")

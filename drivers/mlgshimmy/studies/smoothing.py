@@ -34,6 +34,10 @@ OVERLAY_SPEEDS are kept for the overlay figure (smoothing_fig10.png).
     make smoothing          # compute (about 25 min) and write the table
     make smoothing-plot     # redraw from the cache
 """
+from __future__ import annotations
+
+from typing import Any, Dict, Mapping, Optional
+
 import numpy
 
 from mlgshimmy.shared import runerror
@@ -106,7 +110,7 @@ def law() -> int:
     return chosen
 
 
-def values(ratio):
+def values(ratio: Optional[float]) -> Dict[str, float]:
     """The model at eps = ratio y_fp, or eq. (14) for None."""
     law14 = mlgmodel.LAWS.index("nonsmooth")
     return {**gear.parameters(), **CASE, "eps_rel": ratio if ratio else 0.0,
@@ -176,7 +180,7 @@ def diagram(model, ratio):
                                for b in jobs.stored(run, yfp_stored.COLUMNS)]}
 
 
-def answers(ratio):
+def answers(ratio: Optional[float]) -> Dict[str, Optional[float]]:
     """({quantity: value} at one smoothing (None: the limit), the Fig. 10
     diagram or eq. (14)'s simulated orbits for the overlay)."""
     model = values(ratio)
@@ -222,7 +226,7 @@ def fitted(quantity, limit, column):
     return limit, fit, "eq. (14)"
 
 
-def compute():
+def compute() -> Dict[str, Any]:
     law()
     limit, simulated_limit = answers(None)
     smoothed = [answers(r) for r in RATIOS]
@@ -253,7 +257,7 @@ def assemble(limit, smoothed, overlay, limit_orbits):
             "overlay": overlay, "limit_orbits": limit_orbits}
 
 
-def text(result) -> str:
+def text(result: Mapping[str, Any]) -> str:
     ratios = result["ratios"]
     head = ["quantity", "eq. (14)"] + [f"{r:g}" for r in ratios] + ["p fitted", "p predicted"]
     lines = [head]
@@ -347,7 +351,7 @@ def overlay_plot(result):
     draw.save(fig, f"{FIGURE}_fig10")
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     table = text(result)
     jobs.write_text(f"{paths.tables_dir()}/{FIGURE}.txt", table)
     print(table, end="")

@@ -11,6 +11,10 @@ speeds do not depend on y_fp at all, and its orbits scale with y_fp.
     make smoothing_fig14          # compute (a few minutes) and draw
     make smoothing_fig14-plot     # redraw from the cache
 """
+from __future__ import annotations
+
+from typing import Any, Dict
+
 import numpy
 
 from mlgshimmy.shared import gear, jobs, mlgmodel, naming, paths, simulator
@@ -64,7 +68,7 @@ def orbit_curve(rundir, eps, model):
     return yfp_stored.stored_orbits({ORBIT_SPEED: runs})[0][1]
 
 
-def compute():
+def compute() -> Dict[str, Any]:
     model = gear.parameters()
     out = {"widths": {}}
     for eps in WIDTHS:

@@ -21,8 +21,11 @@ comma-separated; the default grid is 3 x 3):
 
 `make sweep` (with -j N for N jobs at once) runs check, every point, summary.
 """
+from __future__ import annotations
+
 import os
 import time
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import geometry
@@ -51,7 +54,7 @@ DEFAULT_GRID = "-10,0,10"
 V_START, V_STOP = ct.V_MIN, ct.V_MAX
 
 
-def settings():
+def settings() -> Dict[str, Any]:
     """What a point's result depends on besides its angles, the code, the
     model and AUTO (jobs.provenance records those and the thread count)."""
     return {"parameters": {k: v for k, v in parameters(0.0, 0.0).items()
@@ -62,13 +65,13 @@ def settings():
 POINTS = jobgrid.Plane("rho", "mu", "sweep", "figures", settings)   # rho<deg>_mu<deg>
 
 
-def grid(args):
+def grid(args: Any) -> List[Tuple[float, float]]:
     rhos = axis(args.rho, "SWEEP_RHO (--rho)", "angles in degrees")
     mus = axis(args.mu, "SWEEP_MU (--mu)", "angles in degrees")
     return jobgrid.plane(rhos, mus)
 
 
-def parameters(rho, mu, eom_terms=2):
+def parameters(rho: float, mu: float, eom_terms: int = 2) -> Dict[str, float]:
     return {"Fstar": 1.0, "yfp": 0.0, **geometry.model_angles(rho, mu, eom_terms)}
 
 
@@ -82,7 +85,7 @@ def problem(point):
     return None
 
 
-def run_point(name):
+def run_point(name: str) -> None:
     rho, mu = POINTS.parse(name)
     started = time.monotonic()
     values = parameters(rho, mu)
@@ -96,7 +99,8 @@ def run_point(name):
           + (f"{result['critical_V']:.3f} m/s" if hopf else f"> {V_STOP:g} m/s"))
 
 
-def summary(points, results, provenance):
+def summary(points: Sequence[Tuple[float, float]], results: Sequence[Mapping[str, Any]],
+            provenance: Optional[Mapping[str, Any]]) -> None:
     """The points' critical speeds (results: their records, every point's
     checked present and of one provenance by shared.jobs.grid) and the plot."""
     import matplotlib.pyplot as plt
@@ -122,7 +126,7 @@ def summary(points, results, provenance):
     draw.save(fig, "sweep_critical_speed")
 
 
-def main():
+def main() -> None:
     jobgrid.main("sweep", __doc__.splitlines()[0], "point", POINTS,
                  [("--rho", DEFAULT_GRID, "rho values [deg], comma-separated"),
                   ("--mu", DEFAULT_GRID, "mu values [deg], comma-separated")],

@@ -26,11 +26,13 @@ $MLG_RUN_ROOT/torus/<case>/result.json and all cases found there to
 $MLG_RUN_ROOT/torus/result.json (the curves as arrays).
 `make torus`.
 """
+from __future__ import annotations
 
 import json
 import math
 import os
 import sys
+from typing import Any, Dict
 
 from mlgshimmy.shared import runerror
 from mlgshimmy.shared import floquet
@@ -66,7 +68,7 @@ WINDOW_RTOL = 1e-10    # CVODE rtol of the window simulations (atol 1e-2 of it):
                        # at the default 1e-8 the BDF damping is of the growth's size
 
 
-def compute(case):
+def compute(case: str) -> Dict[str, Any]:
     values = {**CASES[case], **gear.parameters()}
     rundir = paths.rundir(os.path.join("torus", case))
     entry = {"parameters": values, "meshes": [], "simulations": []}
@@ -154,7 +156,7 @@ def compute(case):
     return entry
 
 
-def main():
+def main() -> None:
     cases = sys.argv[1:] or list(CASES)
     unknown = [c for c in cases if c not in CASES]
     if unknown:

@@ -26,10 +26,13 @@ DEFAULT_V x DEFAULT_FSTAR):
 
 `make atlas` (with -j N for N cells at once) runs check, every cell, summary.
 """
+from __future__ import annotations
+
 import json
 import os
 import sys
 import tempfile
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import freeplay, jobs, gear
 from mlgshimmy.shared import simulator
@@ -39,7 +42,7 @@ from mlgshimmy.studies.atlas import compare as atlas_compare
 axis = jobgrid.axis
 
 
-def settings():
+def settings() -> Dict[str, Any]:
     """What a cell's result depends on besides (V, F*), the code and the
     simulator (recorded in its provenance)."""
     return {"freeplay": atlas_cell.FREEPLAY, "starts": atlas_cell.STARTS,
@@ -57,7 +60,7 @@ DEFAULT_V = "5,10,20,30,40,50,70,100,150:600:50"
 DEFAULT_FSTAR = "0.02,0.1,0.2,0.3,0.5,0.8,1,1.4,1.8,2.2,2.6,3,3.5"
 
 
-def grid(args):
+def grid(args: Any) -> List[Tuple[float, float]]:
     vs = axis(args.V, "ATLAS_V (--V)", "speeds in m/s")
     fstars = axis(args.Fstar, "ATLAS_FSTAR (--Fstar)", "loads F*")
     return [(v, f) for f, v in jobgrid.plane(fstars, vs)]
@@ -73,7 +76,7 @@ def problem(point):
     return f"V = {v:g} m/s, F* = {fstar:g}: {proc.stderr.strip()}" if proc.returncode else None
 
 
-def run_cell(name):
+def run_cell(name: str) -> None:
     try:
         v, fstar = CELLS.parse(name)
     except ValueError:
@@ -87,7 +90,8 @@ def run_cell(name):
     print(f"atlas: {name}: {result['label']} ({result['cpu_seconds']:.1f} s CPU)")
 
 
-def summary(points, cells, provenance):
+def summary(points: Sequence[Tuple[float, float]], cells: Sequence[Mapping[str, Any]],
+            provenance: Optional[Mapping[str, Any]]) -> None:
     """summary.txt, summary.json and the plots of the cells (their records,
     every cell's checked present and of one provenance by shared.jobs.grid)."""
     counts = {}
@@ -132,7 +136,7 @@ def summary(points, cells, provenance):
         atlas_plot.overlay(cells, agreement, jobs.read("fig11"))
 
 
-def start_text(s):
+def start_text(s: Mapping[str, Any]) -> str:
     """One start's end state in a line of summary.txt."""
     text = f"{s['kind']} {s['amplitude_rad']:.4g} {s['frequency_hz']:.3g} {s['mean_rad']:.3g}"
     if s["frequency_hz"] > 0:       # a stationary state has no peaks to spread
@@ -146,7 +150,7 @@ def start_text(s):
     return text + f" [{s['t_end']:g}]"
 
 
-def fig11_agreement(cells):
+def fig11_agreement(cells: Sequence[Mapping[str, Any]]) -> Optional[Dict[str, Any]]:
     """atlas_compare.compare against Fig. 11's cached regions, or None (said
     why) when there is no cached Fig. 11 with a region map."""
     try:
@@ -161,7 +165,7 @@ def fig11_agreement(cells):
     return atlas_compare.compare(cells, fig11)
 
 
-def main():
+def main() -> None:
     jobgrid.main("atlas", __doc__.splitlines()[0], "cell", CELLS,
                  [("--V", DEFAULT_V, "speeds [m/s]"), ("--Fstar", DEFAULT_FSTAR, "loads F*")],
                  grid, run_job=run_cell, problem=problem, summary=summary)

@@ -8,9 +8,12 @@ keeps what it was doing until then (`before`), and a shimmy end keeps the
 lateral and tyre motion relative to psi (end_state), so that a new rule
 for a kind can be applied to stored cells.
 """
+from __future__ import annotations
+
 import functools
 import os
 import resource
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
@@ -39,14 +42,14 @@ DT_OUT = 1e-3                    # sampling [s]: 25 samples per 40 Hz period
 
 
 @functools.lru_cache(maxsize=None)
-def straight_rolling(fstar):
+def straight_rolling(fstar: float) -> Optional[Dict[str, float]]:
     """Straight rolling at this load and the run's geometry (shared.yawed:
     continued from zero freeplay), {name: value}, or None where there is
     none (its branch ended in a fold of y_fp)."""
     return yawed.straight("figures", fstar, FREEPLAY, **gear.parameters())
 
 
-def simulator_args(v, fstar, psi0, t_end):
+def simulator_args(v: float, fstar: float, psi0: float, t_end: float) -> List[Any]:
     """The simulator's options for one start: straight rolling (given as
     --u0: at side-stay angles the simulator's own Newton from psi = 0 can
     fail or land on a yawed state; without straight rolling the simulator's
@@ -56,12 +59,12 @@ def simulator_args(v, fstar, psi0, t_end):
                                 DT_OUT, gear.simulator_params())
 
 
-def discard(path):
+def discard(path: str) -> None:
     if os.path.exists(path):
         os.remove(path)
 
 
-def inside_start(v, fstar, psi0, csv):
+def inside_start(v: float, fstar: float, psi0: float, csv: str) -> float:
     """psi0, halved until the initial state is inside the model's domain."""
     for _ in range(20):
         proc = simulator.run(csv, *simulator_args(v, fstar, psi0, DT_OUT))
@@ -73,7 +76,7 @@ def inside_start(v, fstar, psi0, csv):
     raise RuntimeError(f"atlas: no start inside the domain at V = {v:g}, F* = {fstar:g}")
 
 
-def read_run(csv):
+def read_run(csv: str) -> Optional[numpy.ndarray]:
     """t, psi, delta, lambda_L of the simulator's samples (of a run that left
     the domain: those up to then), or None if there are none."""
     try:
@@ -83,13 +86,13 @@ def read_run(csv):
     return data if len(data) else None
 
 
-def reference(fstar):
+def reference(fstar: float) -> Tuple[float, Optional[float]]:
     """(psi_fp, psi_straight) [rad] at this load (yawed.reference)."""
     return yawed.reference("figures", fstar, FREEPLAY, straight_rolling(fstar),
                            **gear.parameters())
 
 
-def end_state(data, fstar):
+def end_state(data: numpy.ndarray, fstar: float) -> Dict[str, Any]:
     """attractor.classify of the samples at this load (reference), with the
     lateral (delta) and tyre (lambda_L) motion relative to psi at the orbit's
     frequency as [amplitude ratio, phase lead in degrees] for a shimmy end."""
@@ -104,7 +107,7 @@ def end_state(data, fstar):
     return result
 
 
-def run_stage(v, fstar, psi0, t_end, rundir):
+def run_stage(v: float, fstar: float, psi0: float, t_end: float, rundir: str) -> Dict[str, Any]:
     """Simulate t_end seconds from psi0 and classify the end state
     (end_state; `domain` if the model leaves its domain, with `before`: the
     state classified over the samples up to then, if there are 2 WINDOW
@@ -132,7 +135,7 @@ def run_stage(v, fstar, psi0, t_end, rundir):
     return result
 
 
-def confirmed(result):
+def confirmed(result: Mapping[str, Any]) -> bool:
     """Whether a stage's end state stands.  Not when unsettled; nor when a
     modulation still below attractor.MODULATED grows: over the first stage
     that can be a transient (at V = 250, F* = 0.02 a start's spread grew at
@@ -143,7 +146,7 @@ def confirmed(result):
     return not (result.get("growing") and result["peak_spread"] < attractor.MODULATED)
 
 
-def simulate_start(v, fstar, psi0, rundir):
+def simulate_start(v: float, fstar: float, psi0: float, rundir: str) -> Dict[str, Any]:
     """Classify one start: the first stage whose end state is confirmed,
     else what the last stage shows, run for SETTLE if that is unsettled."""
     psi0 = inside_start(v, fstar, psi0, os.path.join(rundir, "probe.csv"))
@@ -156,7 +159,7 @@ def simulate_start(v, fstar, psi0, rundir):
     return result
 
 
-def cell(v, fstar, rundir):
+def cell(v: float, fstar: float, rundir: str) -> Dict[str, Any]:
     """The cell's result: every start's end state, the cell's label and the
     CPU time its simulations took."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -175,7 +178,7 @@ def cell(v, fstar, rundir):
             "cpu_seconds": round(cpu, 2)}
 
 
-def unstable_orbits(starts):
+def unstable_orbits(starts: Dict[str, Dict[str, Any]]) -> None:
     """A start that sits on a periodic orbit with its modulation at the
     measurement floor (attractor.SPREAD_NOISE: no trend can be read) is on
     an unstable orbit, not an attractor, when another start of the cell
@@ -206,7 +209,7 @@ SAME = 0.02    # orbits of one kind are one attractor if amplitude and
                # frequency agree to this relative tolerance
 
 
-def distinct(states):
+def distinct(states: Sequence[Mapping[str, Any]]) -> List[Mapping[str, Any]]:
     """The states that are different attractors (by amplitude, frequency)."""
     kept = []
     for s in states:
@@ -217,7 +220,7 @@ def distinct(states):
     return kept
 
 
-def label(starts):
+def label(starts: Mapping[str, Mapping[str, Any]]) -> str:
     """The kinds the starts reached, in KINDS order; "high x2": two
     different high-frequency orbits."""
     parts = []

@@ -18,6 +18,10 @@ not settle has no code and counts as a disagreement ("not settled").  Every
 bit is compared, off-centre yaw included; a disagreement names the bits
 that differ ("differs").
 """
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
+
 import numpy
 
 from mlgshimmy.shared import regions
@@ -27,7 +31,7 @@ SCALE = (600.0, 3.5)      # V [m/s], F*: the plane's extent
 NEAR = 0.01               # distance to a curve, in units of SCALE
 
 
-def cell_code(cell):
+def cell_code(cell: Mapping[str, Any]) -> Optional[int]:
     """The OR of the cell's end states (CODES), or None if one is unsettled.
     Leaving the domain counts only where no start settled in it (lift-off
     as the region's fate): beside settled states it is a large start's
@@ -40,7 +44,7 @@ def cell_code(cell):
     return regions.code(settled or kinds)
 
 
-def code_name(code, names=None):
+def code_name(code: Optional[int], names: Optional[Mapping[str, str]] = None) -> str:
     """A code spelt out: its region name from Fig. 11 if it has one, else
     the attractor kinds joined by "+"."""
     if code is None:
@@ -50,14 +54,15 @@ def code_name(code, names=None):
     return " + ".join(k for k, bit in CODES.items() if code & bit) or "none"
 
 
-def region_at(region_map, v, fstar):
+def region_at(region_map: Mapping[str, Any], v: float, fstar: float) -> int:
     """Fig. 11's region code at the grid point nearest (v, fstar)."""
     i = int(numpy.argmin(numpy.abs(numpy.asarray(region_map["Fstar"]) - fstar)))
     j = int(numpy.argmin(numpy.abs(numpy.asarray(region_map["V"]) - v)))
     return int(region_map["code"][i][j])
 
 
-def curve_distance(curves, v, fstar):
+def curve_distance(curves: Sequence[Mapping[str, Any]], v: float,
+                   fstar: float) -> Tuple[float, Optional[str]]:
     """(distance, curve name) of the nearest edge curve to (v, fstar), in
     units of SCALE; a polyline's segments count, not only its vertices."""
     best = (numpy.inf, None)
@@ -81,7 +86,7 @@ def curve_distance(curves, v, fstar):
     return best
 
 
-def yaw_edge_distance(region_map, v, fstar):
+def yaw_edge_distance(region_map: Mapping[str, Any], v: float, fstar: float) -> float:
     """Distance (in units of SCALE) from (v, fstar) to the nearest grid point
     of region_map whose yaw bit differs from the one at (v, fstar); inf if
     the bit is the same everywhere."""
@@ -94,7 +99,7 @@ def yaw_edge_distance(region_map, v, fstar):
     return float(numpy.min(numpy.hypot((V[j] - v) / SCALE[0], (F[i] - fstar) / SCALE[1])))
 
 
-def compare(cells, fig11):
+def compare(cells: Sequence[Mapping[str, Any]], fig11: Mapping[str, Any]) -> Dict[str, Any]:
     """Every cell sorted into on a curve / agrees / disagrees, and the
     fraction of the cells off the curves that agree."""
     region_map, curves = fig11["region_map"], fig11["edge_curves"]
@@ -126,7 +131,7 @@ def compare(cells, fig11):
     return out
 
 
-def report(result):
+def report(result: Mapping[str, Any]) -> List[str]:
     """Text lines: the fraction and every disagreeing cell."""
     lines = [f"atlas vs Fig. 11: {len(result['agree'])} of {result['off_curve']} cells off the "
              f"curves agree ({100 * (result['fraction'] or 0):.1f} %); "

@@ -1,5 +1,9 @@
 """The attractor atlas drawn over (V, F*): (a) what the cells settle on,
 (b) the largest settled torsion amplitude.  Called by the atlas's `summary`."""
+from __future__ import annotations
+
+from typing import Any, List, Mapping, Sequence
+
 import numpy
 
 from mlgshimmy.shared.draw import palette
@@ -15,7 +19,7 @@ MARKERS = {kind: (marker, palette.ATTRACTOR_EDGE[kind]) for kind, marker in
             ("domain", "x"), ("unsettled", "*"))}
 
 
-def edges(values):
+def edges(values: Sequence[float]) -> numpy.ndarray:
     """Cell edges half way between grid values (the outer ones mirrored)."""
     v = numpy.asarray(values, float)
     if len(v) == 1:
@@ -24,11 +28,12 @@ def edges(values):
     return numpy.concatenate([[2 * v[0] - mid[0]], mid, [2 * v[-1] - mid[-1]]])
 
 
-def kinds_of(cell):
+def kinds_of(cell: Mapping[str, Any]) -> List[str]:
     return [part.split(" x")[0] for part in cell["label"].split(" + ")]
 
 
-def plot(cells, names, order):
+def plot(cells: Sequence[Mapping[str, Any]], names: Mapping[str, str],
+         order: Sequence[str]) -> None:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -81,7 +86,8 @@ def plot(cells, names, order):
     draw.save(fig, "atlas")
 
 
-def overlay(cells, agreement, fig11):
+def overlay(cells: Sequence[Mapping[str, Any]], agreement: Mapping[str, Any],
+            fig11: Mapping[str, Any]) -> None:
     """The atlas cells over Fig. 11's regions and edge curves: which agree,
     which do not (annotated with the atlas's code), which lie on a curve."""
     import matplotlib
