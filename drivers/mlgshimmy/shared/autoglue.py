@@ -9,10 +9,12 @@ A run claims its run directory, sends AUTO's output to <rundir>/<name>.log,
 prints one console line, and raises RunError (shared.runerror) with the tail
 of the log when it fails.
 """
+from __future__ import annotations
+
 import os
 import re
 import time
-from typing import Any, List, Optional, Sequence, Union
+from typing import Any, Dict, List, Optional, Sequence, Union
 
 from mlgshimmy.shared import autosession, guards, paths
 from mlgshimmy.shared.diagrams import BRANCH_ENDS, check_diagram, read_diagram
@@ -21,7 +23,7 @@ from mlgshimmy.shared.rundirs import claim
 from mlgshimmy.shared.runerror import MX, NON_FINITE, RunError, non_finite_stop
 
 
-def check_prebuilt(model):
+def check_prebuilt(model: str) -> None:
     """Fail unless AUTO's run() would use <model>.exe as it is.
 
     run() recompiles <model>.o if <model>.c is newer and relinks <model>.exe
@@ -47,7 +49,7 @@ def check_prebuilt(model):
                        f"AUTO's objects): {rebuild}")
 
 
-def read_constants(paths: Union[str, List[str]]):
+def read_constants(paths: Union[str, List[str]]) -> Dict[str, Any]:
     """A constants file, or a list of them: each later file overrides the
     constants it sets (read with AUTO's parseC; unset ones stay as they are)."""
     if isinstance(paths, str):
@@ -62,9 +64,9 @@ def read_constants(paths: Union[str, List[str]]):
     return merged
 
 
-def run(rundir: str, name: str, data=None, constants: Union[None, str, List[str]] = None,
+def run(rundir: str, name: str, data: Any = None, constants: Union[None, str, List[str]] = None,
         expect: Sequence[str] = (), allow_mx: bool = False, time_limit: Optional[float] = None,
-        **kw: Any):
+        **kw: Any) -> Any:
     """Run AUTO in rundir, save to b./s./d.<name> there, and check the result.
 
     constants: path of a constants file, or a list of files merged in order

@@ -14,9 +14,12 @@ executable with the process (shared.children).  A missing AUTO raises
 AutoMissing.  The lowest floor of the AUTO side: it imports only paths,
 children and guards, so the cache can ask auto_dir() without AUTO.
 """
+from __future__ import annotations
+
 import importlib.util
 import os
 import sys
+from typing import Any
 
 import numpy
 
@@ -50,7 +53,7 @@ def threads() -> str:
     return value
 
 
-def init():
+def init() -> Any:
     """AUTO's Python package, imported once (see the module's text)."""
     global _auto
     guards.cpu_guard_scale()   # a bad value stops the job before its first run, not at a guard

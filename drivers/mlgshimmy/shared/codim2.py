@@ -39,7 +39,7 @@ and l1 = 0 is then the one-sided expansion's).
 """
 from __future__ import annotations
 
-from typing import Any, Callable, Dict, List, Sequence, Tuple
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy
 from numpy.typing import ArrayLike
@@ -200,7 +200,8 @@ def _null_vectors(A, ref=None):
     return q, p / numpy.dot(p, q)
 
 
-def fold_coefficient(model, u, ref=None) -> Tuple[float, numpy.ndarray]:
+def fold_coefficient(model: Any, u: ArrayLike,
+                     ref: Optional[numpy.ndarray] = None) -> Tuple[float, numpy.ndarray]:
     """(a, q) at a fold of equilibria: a = <p, B(q, q)> / 2, the quadratic
     coefficient on the centre manifold (Kuznetsov, section 5.4), q oriented
     as `ref`; zero at a cusp (section 8.2)."""
@@ -247,7 +248,7 @@ def _onto_fold(at, p0, p1, s, scale):
                        f"{tuple((base[-2:] * scale[-2:]).tolist())}")
 
 
-def along_fold_curve(points, at: Callable) -> Dict[str, List]:
+def along_fold_curve(points: Sequence[Tuple[float, float, Any]], at: Callable) -> Dict[str, List]:
     """{"a": the cusp coefficient at each stored point, "points": the cusp
     points located between them, [{"type": "CP", "a", "b", "u"}]} on a
     fold curve of equilibria: points [(a, b, state)] in order, at(a, b) ->

@@ -90,7 +90,7 @@ def ends_branch(point: Any, parameter: str) -> bool:
 
 
 def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[str] = None,
-        model: str = MODEL, **kw: Any):
+        model: str = MODEL, **kw: Any) -> Any:
     """autoglue.run on the MLG model (or another equations file of models/:
     model, its executable's path without .exe): the base constants, then the run-type
     file constants/runs/c.<kind> if given, then the overlay file
@@ -563,8 +563,9 @@ def speed_diagram(rundir: str, parameter_set: str, values: Mapping[str, float],
     return Diagram(parameter, hopf, bp, parts, names, named, **(about or {}))
 
 
-def diagram_from_rest(rundir, parameter_set, allow_failed=False, figure="fig10", steps=None,
-                      **values):
+def diagram_from_rest(rundir: str, parameter_set: str, allow_failed: Any = False,
+                      figure: str = "fig10", steps: Optional[Mapping[str, Any]] = None,
+                      **values: float) -> Tuple[Any, Diagram]:
     """Straight rolling in V from rest (0.5 m/s with side-stay angles:
     gear.start_speed; run eq) to V_MAX and speed_diagram over SPEED_SCAN,
     Fig. 10's recipe: (equilibria, Diagram).  steps: AUTO constants of the

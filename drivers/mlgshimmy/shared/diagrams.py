@@ -1,7 +1,10 @@
 """Reading a run's diagram, checked complete and sound: every branch ends, the
 s-file holds every labelled solution whole, no value is non-finite, no MX,
 and the expected special points occur.  RunError names what is wrong."""
+from __future__ import annotations
+
 import os
+from typing import Any, List, Optional, Sequence, Tuple
 
 import numpy
 
@@ -9,7 +12,7 @@ from mlgshimmy.shared import autosession, branches
 from mlgshimmy.shared.runerror import MX, NON_FINITE, RunError
 
 
-def special_points(bd):
+def special_points(bd: Any) -> List[Tuple[int, int, str]]:
     """List (branch number, label, type) of every labelled point."""
     return [(branch.BR, label, ty) for branch in bd
             for _, label, ty in branches.labelled_points(branch)]
@@ -21,7 +24,8 @@ def special_points(bd):
 BRANCH_ENDS = ("EP", "UZ", "MX")
 
 
-def read_diagram(outputs, what, log=None, ends=BRANCH_ENDS):
+def read_diagram(outputs: str, what: str, log: Optional[str] = None,
+                 ends: Sequence[str] = BRANCH_ENDS) -> Any:
     """The diagram of a run's b-, s- and d-files, its b-file parsed now (AUTO
     reads lazily), checked complete by its content (AUTO ignores write
     errors, so a full disk leaves files cut at any byte): every branch ends
@@ -58,7 +62,7 @@ def read_diagram(outputs, what, log=None, ends=BRANCH_ENDS):
     return bd
 
 
-def solution_labels(path, what, log=None):
+def solution_labels(path: str, what: str, log: Optional[str] = None) -> List[int]:
     """The labels of an s-file's solutions, each read in full (AUTO's parseS
     reads only the headers, so a solution cut at a line end passed): after
     its header (IBR NTOT ITP LAB NFPR ISW NTPL NAR NROWPR NTST NCOL NPARX)
@@ -106,7 +110,7 @@ def _full(path):
     return f" (the file system of {os.path.dirname(path)} is full)" if stat.f_bavail == 0 else ""
 
 
-def check_diagram(bd, what, expect=()):
+def check_diagram(bd: Any, what: str, expect: Sequence[str] = ()) -> None:
     """Raise RunError about `what` if a branch of bd holds non-finite values,
     ends in MX, or a special point type listed in expect does not occur."""
     for branch in bd:

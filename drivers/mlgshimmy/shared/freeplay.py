@@ -8,7 +8,7 @@ Scalings: "ratio" keeps eps = 0.1 y_fp (PAR eps_rel = 0.1, eps_abs = 0),
 """
 from __future__ import annotations
 
-from typing import Mapping, Tuple
+from typing import Any, Dict, Mapping, Tuple
 
 import numpy
 from numpy.typing import ArrayLike
@@ -20,7 +20,7 @@ SCALINGS = {"ratio": {"eps_abs": 0.0, "eps_rel": 0.1},
 EPSILON = 0.1        # eps/y_fp ("ratio") or eps in mm ("fixed")
 
 
-def width(scaling, model):
+def width(scaling: str, model: Mapping[str, Any]) -> Tuple[Dict[str, float], Dict[str, Any]]:
     """(the scaling's {eps_abs, eps_rel} with `model`'s overrides of them,
     the rest of `model`): the criterion at another smoothing width."""
     eps = {k: model.get(k, v) for k, v in SCALINGS[scaling].items()}

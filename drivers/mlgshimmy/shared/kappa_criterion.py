@@ -3,6 +3,10 @@ from eigenvalue scans of straight rolling (no AUTO): the growth of each
 frequency band, where it changes sign in y_fp, the least unstable y_fp over
 the speeds up to V_LIMIT, and its minimum over the loads (with the oleo's
 stage switch, shared.stage_switch)."""
+from __future__ import annotations
+
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
+
 import numpy
 
 from mlgshimmy.shared import mlgmodel, rolling, spectrum
@@ -17,7 +21,8 @@ KAPPA_GRID = numpy.geomspace(YFP_MIN, YFP_MAX, 61)
 ENVELOPE_LOADS = numpy.round(numpy.arange(0.1, 2.0001, 0.05), 3)
 
 
-def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
+def growth(Fstar: float, yfp: float, V: float, scaling: str = "fixed",
+           parameter_set: str = "figures", **model: Any) -> Dict[str, float]:
     """{band: largest real part of the eigenvalues of straight rolling whose
     frequency |Im|/2pi lies in the band} (-inf if none), and "any": the
     largest real part of all.  `model` overrides parameters or constants by
@@ -34,7 +39,8 @@ def growth(Fstar, yfp, V, scaling="fixed", parameter_set="figures", **model):
     return spectrum.growth(model, BANDS, u)
 
 
-def growth_at_speeds(Fstar, yfp, speeds, scaling="fixed", parameter_set="figures", **model):
+def growth_at_speeds(Fstar: float, yfp: float, speeds: Sequence[float], scaling: str = "fixed",
+                     parameter_set: str = "figures", **model: Any) -> List[Dict[str, float]]:
     """[growth at each of `speeds`] from one state of straight rolling
     (it does not depend on V)."""
     try:
@@ -51,7 +57,9 @@ def growth_at_speeds(Fstar, yfp, speeds, scaling="fixed", parameter_set="figures
     return spectrum.growths(numpy.array(jacobians), BANDS)
 
 
-def first_crossing(Fstar, speeds, band, grid=KAPPA_GRID, **model):
+def first_crossing(Fstar: float, speeds: Sequence[float], band: str,
+                   grid: Sequence[float] = KAPPA_GRID,
+                   **model: Any) -> Tuple[float, Optional[float]]:
     """(y_fp, V): the least over `speeds` of the first y_fp at which `band`
     changes stability (yfp_crossings with first_only at each speed; the
     first speed of a tie), or (inf, None).  The grid is climbed once for
@@ -73,7 +81,8 @@ def first_crossing(Fstar, speeds, band, grid=KAPPA_GRID, **model):
     return numpy.inf, None
 
 
-def yfp_crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed", first_only=False, **model):
+def yfp_crossings(Fstar: float, V: float, band: str, grid: Sequence[float] = KAPPA_GRID,
+                  scaling: str = "fixed", first_only: bool = False, **model: Any) -> List[float]:
     """y_fp values where the growth of `band` changes sign along `grid`
     (bisection to 1e-10 mm); with first_only, only the first of them.  The
     scan starts at zero freeplay, so a band already unstable at grid[0] is
@@ -87,8 +96,9 @@ def yfp_crossings(Fstar, V, band, grid=KAPPA_GRID, scaling="fixed", first_only=F
     return found
 
 
-def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN, V_LIMIT, 25),
-                     **model):
+def extreme_yfp_crossing(Fstar: float, band: str, highest: bool = False,
+                         speeds: Sequence[float] = numpy.linspace(V_MIN, V_LIMIT, 25),
+                         **model: Any) -> Tuple[float, Optional[float]]:
     """(y_fp, V): the smallest (or, with highest, the largest) y_fp at which
     the mode `band` changes stability for some V in [V_MIN, V_LIMIT] -- a
     turning point in y_fp of its Hopf curve or its end at V_LIMIT; optimised
@@ -116,7 +126,8 @@ def extreme_yfp_crossing(Fstar, band, highest=False, speeds=numpy.linspace(V_MIN
     return best
 
 
-def unstable_windows(Fstar, band, speeds=numpy.linspace(V_MIN, V_LIMIT, 25), **model):
+def unstable_windows(Fstar: float, band: str, speeds: numpy.ndarray = numpy.linspace(V_MIN, V_LIMIT, 25),
+                     **model: Any) -> List[Tuple[float, float]]:
     """[(start, end)]: the windows of y_fp in which the mode `band` is
     unstable for some V in [V_MIN, V_LIMIT], the union over the speeds of
     each speed's unstable intervals (yfp_crossings; end inf where it is
@@ -155,7 +166,7 @@ def unstable_windows(Fstar, band, speeds=numpy.linspace(V_MIN, V_LIMIT, 25), **m
     return [(w[0], w[1]) for w in merged()]
 
 
-def least_unstable(Fstar, **model):
+def least_unstable(Fstar: float, **model: Any) -> Dict[str, Any]:
     """At one load: the smallest y_fp [mm] with straight rolling unstable for
     some V <= V_LIMIT ("first"), that speed ("V"), the static compression
     eta* [m] there and the band that is unstable just beyond it ("mode";
@@ -184,7 +195,10 @@ def _least(points, key, floor):
     return best
 
 
-def refined_minimum(evaluate, loads, key, points=None, finer=(10,), floor=-numpy.inf):
+def refined_minimum(evaluate: Callable[[float], Dict[str, Any]], loads: Sequence[float],
+                    key: Callable[[Dict[str, Any]], float],
+                    points: Optional[List[Dict[str, Any]]] = None, finer: Sequence[int] = (10,),
+                    floor: float = -numpy.inf) -> Dict[str, Any]:
     """The point of least key(point) over F* in the evenly spaced `loads`,
     refined around the minimum: for each k of `finer` in turn, on 2k + 1
     loads spanning one step either side, the step then divided by k.
@@ -203,7 +217,9 @@ def refined_minimum(evaluate, loads, key, points=None, finer=(10,), floor=-numpy
     return best
 
 
-def kappa_star(evaluate, loads, model, points=None, finer=(10,)):
+def kappa_star(evaluate: Callable[[float], Dict[str, Any]], loads: Sequence[float],
+               model: Mapping[str, Any], points: Optional[List[Dict[str, Any]]] = None,
+               finer: Sequence[int] = (10,)) -> Tuple[float, Dict[str, Any]]:
     """Eq. (17)'s kappa*: the least y_fp/eps at which straight rolling is
     unstable below V_LIMIT (eps: `model`'s eps_abs, else 0.1 mm), minimised over the loads (refined_minimum of
     evaluate(F*)["first"], the least unstable y_fp there) and the loads on
@@ -224,7 +240,7 @@ CRITERION_LOADS = ENVELOPE_LOADS[::2]
 CRITERION_FINER = (5, 4)
 
 
-def criterion(model):
+def criterion(model: Mapping[str, Any]) -> Dict[str, Any]:
     """Eq. (17)'s kappa* of the gear `model` (parameter overrides) by the
     criterion's recipe: {kappa, Fstar, V, eta, mode} at the minimum over
     CRITERION_LOADS, refined CRITERION_FINER around it (studies.criterion,
@@ -235,7 +251,9 @@ def criterion(model):
             "eta": best["eta"], "mode": best["mode"]}
 
 
-def kappa_star_off_switch(evaluate, loads, model, finer=(10,)):
+def kappa_star_off_switch(evaluate: Callable[[float], Dict[str, Any]], loads: Sequence[float],
+                          model: Mapping[str, Any], finer: Sequence[int] = (10,)
+                          ) -> Tuple[float, Dict[str, Any], Optional[Tuple[float, float]]]:
     """kappa_star over the loads outside the oleo's stage-switch window
     (stage_switch_window) only: the value that does not hang on how steep
     this model's switch is.  (kappa, the evaluation at the minimum, the
@@ -250,7 +268,7 @@ def kappa_star_off_switch(evaluate, loads, model, finer=(10,)):
     return best["first"] / width("fixed", model)[0]["eps_abs"], best, window
 
 
-def window_points(Fstar, **model):
+def window_points(Fstar: float, **model: Any) -> Dict[str, Any]:
     """The points bounding the windows of stable straight rolling up to
     V_LIMIT at this F* (eps = 0.1 mm), as y_fp [mm]:
       a: the smallest y_fp at which the high-frequency mode is unstable for

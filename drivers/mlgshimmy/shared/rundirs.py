@@ -1,6 +1,8 @@
 """Run directories are owned (claim): the first process to use one locks it
 for its lifetime and empties it; another process that wants the same
 directory waits for it and says so, so two runs never write one directory."""
+from __future__ import annotations
+
 import os
 import shutil
 import sys
@@ -84,7 +86,7 @@ def _empty(path: str) -> None:
             os.remove(entry.path)
 
 
-def figure_of(rundir):
+def figure_of(rundir: str) -> str:
     """The figure a run directory belongs to: its first component below
     RUN_ROOT (its own name elsewhere)."""
     rel = os.path.relpath(os.path.abspath(rundir), paths.run_root())

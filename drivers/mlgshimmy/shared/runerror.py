@@ -1,5 +1,8 @@
 """The error of an AUTO run that failed, did not converge or missed a special
 point, with the tail of its log."""
+from __future__ import annotations
+
+from typing import List, Optional
 
 
 MX, NON_FINITE = "MX", "non-finite"   # RunError.kind of a run that did not converge
@@ -30,13 +33,13 @@ class RunError(RuntimeError):
 NON_FINITE_LINE = "mlg: non-finite solution"
 
 
-def non_finite_stop(log):
+def non_finite_stop(log: str) -> Optional[str]:
     """The model's line saying it stopped the run at a non-finite solution
     (stripped), or None."""
     return next((line.strip() for line in tail(log, 40) if NON_FINITE_LINE in line), None)
 
 
-def tail(path, lines=15):
+def tail(path: str, lines: int = 15) -> List[str]:
     """The last `lines` lines of a text file ([] if it cannot be read)."""
     try:
         with open(path, errors="replace") as f:

@@ -12,9 +12,11 @@ The start is an event-located simulation: its last full period gives the
 sequence of modes and their durations, and its samples the segments'
 profiles.
 """
+from __future__ import annotations
+
 import os
 import tempfile
-from typing import Dict, List, Optional, Sequence
+from typing import Any, Dict, List, Optional, Sequence
 
 import numpy
 
@@ -126,7 +128,7 @@ def parameters(values: Dict[str, float], orbit: dict, V: float) -> Dict:
 
 def follow(rundir: str, name: str, values: Dict[str, float], orbit: dict, V: float,
            parameter: str = "V", stop: Optional[dict] = None, at: Sequence[float] = (),
-           **kw) -> list:
+           **kw: Any) -> list:
     """The segmented orbits through the simulated `orbit` at speed V,
     continued in `parameter` (its direction: the sign of kw DS), labelled
     (UZ) at the values `at` of the parameter, as a list of runs (diagrams)
@@ -159,13 +161,13 @@ def follow(rundir: str, name: str, values: Dict[str, float], orbit: dict, V: flo
                            data=folds[-1], **common, **kw))   # DS's sign: on, not back
 
 
-def grazing(solution, modes: Sequence[int]) -> List[int]:
+def grazing(solution: Any, modes: Sequence[int]) -> List[int]:
     """The (1-based) contact segments of a solution whose duration is zero
     (below GRAZED): both, at the grazing of a symmetric orbit."""
     return [k + 1 for k, m in enumerate(modes) if m != GAP and solution[f"T{k + 1}"] < GRAZED]
 
 
-def amplitude(solution, state: str = "psi") -> float:
+def amplitude(solution: Any, state: str = "psi") -> float:
     """Half the peak-to-peak of a state over a segmented orbit (an AUTO
     solution), each segment's extremes from a cubic spline through its
     collocation points (AUTO's own measure takes the mesh points alone)."""
@@ -179,18 +181,18 @@ def amplitude(solution, state: str = "psi") -> float:
     return 0.5 * float(values.max() - values.min())
 
 
-def period(solution) -> float:
+def period(solution: Any) -> float:
     """The sum of a segmented orbit's durations [s]."""
     return float(sum(solution[f"T{k + 1}"] for k in range(len(modes_of(solution)))))
 
 
-def modes_of(solution) -> List[int]:
+def modes_of(solution: Any) -> List[int]:
     """The modes of an AUTO solution's segments."""
     n = solution["NDIM"] // mlgmodel.NX
     return [int(solution.PAR[MODE + k]) for k in range(n)]    # PAR is 0-based here
 
 
-def monodromy(model: "mlgmodel.Model", solution) -> numpy.ndarray:
+def monodromy(model: "mlgmodel.Model", solution: Any) -> numpy.ndarray:
     """The monodromy matrix of a segmented orbit (an AUTO solution): the
     product of its segments' (eq. (14) is continuous across h = 0, so the
     saltation matrices are the identity), each the variational equation
@@ -218,7 +220,7 @@ def monodromy(model: "mlgmodel.Model", solution) -> numpy.ndarray:
     return total
 
 
-def stability(model: "mlgmodel.Model", solution) -> dict:
+def stability(model: "mlgmodel.Model", solution: Any) -> dict:
     """{"multipliers", "trivial" (the one nearest 1), "largest" (|mu| of
     the others), "stable"} of a segmented orbit."""
     mu = numpy.linalg.eigvals(monodromy(model, solution))

@@ -1,6 +1,10 @@
 """The oleo's stage switch seen from the loads: where straight rolling's
 static compression eta* crosses it, and the loads across it that the
 kappa* minimum must also evaluate (its stiffness is steepest there)."""
+from __future__ import annotations
+
+from typing import Any, List, Optional, Sequence, Tuple
+
 import numpy
 
 from mlgshimmy.shared import mlgmodel, spectrum
@@ -10,12 +14,14 @@ SWITCH_WIDTHS = 3.0    # the stage switch: eta* within this many 1/k_stage of et
 SWITCH_LOADS = 5       # loads evaluated across it
 
 
-def zero_freeplay_eta(Fstar, parameter_set="figures", **model):
+def zero_freeplay_eta(Fstar: float, parameter_set: str = "figures", **model: Any) -> float:
     """eta* [m] of straight rolling without freeplay at this load."""
     return rolling_state(Fstar, 0.0, parameter_set=parameter_set, **model)["eta"]
 
 
-def stage_switch_window(lo, hi, widths=SWITCH_WIDTHS, parameter_set="figures", **model):
+def stage_switch_window(lo: float, hi: float, widths: float = SWITCH_WIDTHS,
+                        parameter_set: str = "figures",
+                        **model: Any) -> Optional[Tuple[float, float]]:
     """(F*_enter, F*_leave): the loads within [lo, hi] where straight
     rolling's eta* enters and leaves the oleo's stage switch, |eta* - eta_s|
     up to `widths` / k_stage (c/strut.h: the switch's stiffness falls as
@@ -36,7 +42,8 @@ def stage_switch_window(lo, hi, widths=SWITCH_WIDTHS, parameter_set="figures", *
     return min(edges), max(edges)
 
 
-def stage_switch_loads(loads, parameter_set="figures", **model):
+def stage_switch_loads(loads: Sequence[float], parameter_set: str = "figures",
+                       **model: Any) -> List[float]:
     """SWITCH_LOADS loads, evenly across the oleo's stage switch
     (stage_switch_window) within [loads[0], loads[-1]]; [] if eta* does not
     cross it there.  On the switch the spring's local

@@ -66,7 +66,7 @@ def torus_crossings(rundir: str, name: str) -> List[Dict[str, Any]]:
     return floquet.torus_crossings(floquet.read(os.path.join(rundir, f"d.{name}")))
 
 
-def speeds(rundir, diagram, min_hz=HIGH_HZ):
+def speeds(rundir: str, diagram: Any, min_hz: float = HIGH_HZ) -> List[Tuple[float, int]]:
     """The torus points of a Diagram in V (continuation.speed_diagram) on
     its orbit runs born at a Hopf point of at least min_hz: [(V, +1 loses
     or -1 regains stability)] in branch order, each at AUTO's TR label
@@ -116,7 +116,7 @@ def simulated_rate(values: Mapping[str, float], v: float, psi0: float, span: flo
     return fit["rate"], fit["first"], fit["last"]
 
 
-def labelled_tr(bd, v, between=None):
+def labelled_tr(bd: Any, v: float, between: Optional[int] = None) -> Optional[int]:
     """AUTO's TR label of the branch bd within 0.5 m/s of the crossing at
     speed v, or inside (0.5 m/s around) its step `between`; None if none."""
     labelled = [p for p in bd("TR") if abs(p["V"] - v) < 0.5]

@@ -1,6 +1,10 @@
 """The codimension-two points on the freeplay-magnitude figures' Hopf curves
 in (y_fp, V) (yfp_stored.stored_curves), located by shared.codim2, and the
 table's lines for them (Figs. 14 and 18)."""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Sequence
+
 import numpy
 
 from mlgshimmy.shared import codim2, mlgmodel, rolling
@@ -8,7 +12,9 @@ from mlgshimmy.shared.freeplay import width
 from mlgshimmy.shared.yfp_runs import FSTAR, values
 
 
-def codim2_points(curves, scaling, other="V", fixed=None, **model):
+def codim2_points(curves: Sequence[Mapping[str, Any]], scaling: str, other: str = "V",
+                  fixed: Optional[Mapping[str, float]] = None,
+                  **model: Any) -> List[Dict[str, Any]]:
     """The codimension-two points shared.codim2 locates on Hopf curves in
     (y_fp, `other`) ("V": Fig. 14's, at F* = FSTAR; "Fstar": Fig. 18's,
     `fixed` {"V": V_LIMIT}), given as {other: [...], "yfp": [...]},
@@ -40,7 +46,7 @@ def codim2_points(curves, scaling, other="V", fixed=None, **model):
     return out
 
 
-def codim2_lines(points, other="V"):
+def codim2_lines(points: Sequence[Mapping[str, Any]], other: str = "V") -> List[str]:
     """The table's lines of codim2_points."""
     unit = " m/s" if other == "V" else ""
     return [f"{p['type']} on a Hopf curve at {other} = {p[other]:.6g}{unit}, "

@@ -13,7 +13,12 @@ F* = 1 unless Fstar is passed.  `**model` (where a function takes it)
 overrides parameters or constants of every model it builds by name, e.g.
 strut_variant=1, or a side-stay geometry (shared.gear.parameters()).
 """
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Sequence, Tuple
+
 import numpy
+from numpy.typing import ArrayLike
 
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
@@ -37,18 +42,18 @@ THU = {1: 1e4, 2: 1e4, 5: 1e4, 6: 1e4}
 DSMAX_V = 0.5      # periodic branches in V: larger steps jump past the other Hopf point
 
 
-def values(scaling, yfp, Fstar=FSTAR, **more):
+def values(scaling: str, yfp: float, Fstar: float = FSTAR, **more: float) -> Dict[str, float]:
     """The freeplay case's parameters; `more` overrides, the scaling's eps_abs
     or eps_rel among them (criterion at another smoothing width)."""
     return {"Fstar": Fstar, "yfp": yfp, **SCALINGS[scaling], **more}
 
 
-def progress(figure, text):
+def progress(figure: str, text: str) -> None:
     print(f"{figure}: {text}", flush=True)
 
 
-def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="magnitude",
-                 **model):
+def diagram_in_V(rundir: str, tag: str, scaling: str, yfp: float, Fstar: float = FSTAR,
+                 uzr: Sequence[float] = V_ORBITS, figure: str = "magnitude", **model: Any) -> Any:
     """continuation.speed_diagram over V_SCAN at this y_fp (runs
     <tag>_hb<i>, <tag>_po<i>, i from 0), with UZ labels at the speeds `uzr`
     and the weighted small first steps the orbits here need."""
@@ -59,7 +64,7 @@ def diagram_in_V(rundir, tag, scaling, yfp, Fstar=FSTAR, uzr=V_ORBITS, figure="m
                             DSMIN=1e-9, NMX=2000, THU=THU)
 
 
-def stable_orbits(diagram, V):
+def stable_orbits(diagram: Any, V: float) -> List[Tuple[Any, int]]:
     """[(run, label)] of the stable orbits carrying a UZ label at speed V."""
     found = []
     for run in diagram.branches:
@@ -71,7 +76,8 @@ def stable_orbits(diagram, V):
     return found
 
 
-def yfp_thresholds(scaling, V, Fstar=FSTAR, **model):
+def yfp_thresholds(scaling: str, V: float, Fstar: float = FSTAR,
+                   **model: Any) -> List[Tuple[float, str, float]]:
     """[(y_fp, kind, freq_hz)]: where straight rolling changes stability in y_fp
     at speed V (eigenvalue scan over YFP_MIN..YFP_MAX)."""
     grid = numpy.geomspace(YFP_MIN, YFP_MAX, 241)
@@ -79,7 +85,8 @@ def yfp_thresholds(scaling, V, Fstar=FSTAR, **model):
                                       **{**SCALINGS[scaling], **model})
 
 
-def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude", **model):
+def orbit_in_yfp(rundir: str, tag: str, point: Any, scaling: str, V: float,
+                 figure: str = "magnitude", **model: Any) -> Tuple[List[Any], List[Any]]:
     """A periodic orbit at fixed V continued in y_fp both ways over
     [YFP_MIN, YFP_MAX], across the Hopf points of straight rolling in y_fp
     (continuation.follow_orbits; runs stop 0.1% either side of them).
@@ -93,8 +100,9 @@ def orbit_in_yfp(rundir, tag, point, scaling, V, figure="magnitude", **model):
                  for direction, ds in (("down", -0.005), ("up", 0.005)))
 
 
-def hopf_curves(rundir, tag, scaling, seeds=(1.0, 0.15), Fstar=FSTAR, figure="magnitude",
-                **model):
+def hopf_curves(rundir: str, tag: str, scaling: str, seeds: Sequence[float] = (1.0, 0.15),
+                Fstar: float = FSTAR, figure: str = "magnitude",
+                **model: Any) -> List[Tuple[Any, Any]]:
     """Curves of Hopf points of straight rolling in (y_fp, V), V in
     [V_MIN, V_MAX], y_fp in [YFP_MIN, YFP_MAX], each continued both ways
     from a Hopf point found at one of the seed y_fp values; a seed Hopf point
@@ -146,7 +154,8 @@ def _on_curve(curve, yfp, V):
     return numpy.min(numpy.hypot(*(a + t[:, None] * (b - a) - q).T)) < 0.02
 
 
-def fold_curve(rundir, tag, run, label, figure="magnitude"):
+def fold_curve(rundir: str, tag: str, run: Any, label: int,
+               figure: str = "magnitude") -> Tuple[Any, Any]:
     """The fold of cycles at `label` of the periodic run `run` (in V)
     continued in (y_fp, V) both ways, y_fp up to FOLD_YFP_MAX
     (continuation.fold_curve), with the arclength weights THU on the starting
@@ -158,7 +167,7 @@ def fold_curve(rundir, tag, run, label, figure="magnitude"):
     return pair
 
 
-def linear_fit(x, y):
+def linear_fit(x: ArrayLike, y: ArrayLike) -> Tuple[float, float, float, float]:
     """Least squares y = s x through the origin and y = s x + c:
     (s0, max relative residual of the first, s, c)."""
     x, y = numpy.asarray(x), numpy.asarray(y)
@@ -168,7 +177,8 @@ def linear_fit(x, y):
     return s0, residual, float(s), float(c)
 
 
-def orbits_in_yfp(rundir, diagram, figure="magnitude", **model):
+def orbits_in_yfp(rundir: str, diagram: Any, figure: str = "magnitude",
+                  **model: Any) -> Dict[float, Tuple[List[Any], List[Any]]]:
     """{V: (run down, run up)}: the stable orbit at each of V_ORBITS in
     `diagram` continued in y_fp.  Raises RunError unless exactly one stable
     orbit carries the UZ label at that speed."""
@@ -184,7 +194,8 @@ def orbits_in_yfp(rundir, diagram, figure="magnitude", **model):
     return result
 
 
-def orbit_curve(runs, measure):
+def orbit_curve(runs: Tuple[Sequence[Any], Sequence[Any]],
+                measure: str) -> Tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
     """(y_fp, measure, stable mask) along the orbits of orbits_in_yfp, joined
     at the starting orbit and sorted along the continuation."""
     def joined(pieces, column):
@@ -200,7 +211,8 @@ def orbit_curve(runs, measure):
     return ys, ms, st
 
 
-def window_point_curve(rundir, tag, yfp, Fstar, stop, dsmax=0.02, **model):
+def window_point_curve(rundir: str, tag: str, yfp: float, Fstar: float, stop: Sequence[float],
+                       dsmax: float = 0.02, **model: Any) -> List[Any]:
     """The Hopf point of straight rolling at V = V_LIMIT near y_fp = `yfp`
     (eps = 0.1 mm; a window point a or b on V = V_LIMIT) continued by AUTO in
     (F*, y_fp) both ways from `Fstar` to the loads `stop`.  `model`: PAR
@@ -222,7 +234,8 @@ def window_point_curve(rundir, tag, yfp, Fstar, stop, dsmax=0.02, **model):
     return out
 
 
-def window_point_values(rundir, tag, name, points, **model):
+def window_point_values(rundir: str, tag: str, name: str, points: Sequence[Mapping[str, Any]],
+                        **model: Any) -> List[Tuple[float, Any, float]]:
     """The window point `name` ("a" or "b") of each scanned point on V =
     V_LIMIT (kappa_criterion.window_points) located by AUTO in y_fp at that
     point's load, one run each (<tag>_<i>): [(F*, AUTO's y_fp or the
@@ -246,7 +259,8 @@ def window_point_values(rundir, tag, name, points, **model):
     return out
 
 
-def fold_curves(rundir, tag, diagrams, figure="magnitude"):
+def fold_curves(rundir: str, tag: str, diagrams: Sequence[Any],
+                figure: str = "magnitude") -> List[Tuple[Any, Any]]:
     """Curves of folds of cycles in (y_fp, V) through the folds of the given
     Diagrams; a fold already on a computed curve is not started again."""
     curves = []
@@ -258,7 +272,7 @@ def fold_curves(rundir, tag, diagrams, figure="magnitude"):
     return curves
 
 
-def curve_points(curve, x, y):
+def curve_points(curve: Tuple[Any, Any], x: str, y: str) -> Tuple[numpy.ndarray, numpy.ndarray]:
     """The two runs of a curve joined into one (x, y) polyline."""
     a, b = (run[0] for run in curve)
     return (numpy.r_[numpy.asarray(b[x])[::-1], numpy.asarray(a[x])],

@@ -1,13 +1,17 @@
 """The cached forms of the freeplay-magnitude runs (yfp_runs): diagrams in V,
 orbits in y_fp and curves in (y_fp, V) as plain data, the parts of a figure
 made of diagrams, and the numbers they print."""
+from __future__ import annotations
+
 import os
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import jobs, paths
 from mlgshimmy.shared.yfp_runs import V_ORBITS, curve_points, diagram_in_V, orbit_curve, orbits_in_yfp
 
 
-def stored_orbits(orbits):
+def stored_orbits(orbits: Mapping[float, Tuple[List[Any], List[Any]]]
+                  ) -> List[Tuple[float, Dict[str, list]]]:
     """The orbits of orbits_in_yfp for the cache: [(V, {"yfp", "psi_amp",
     "freq", "stable"})], each joined by orbit_curve."""
     out = []
@@ -21,7 +25,7 @@ def stored_orbits(orbits):
 COLUMNS = ("V", "psi_amp", "freq")
 
 
-def stored_diagram(diagram):
+def stored_diagram(diagram: Any) -> Dict[str, Any]:
     """A Diagram in V for the cache: y_fp, scaling, Hopf points, folds
     (V, psi_amp), the orbit branches (jobs.stored) and per orbit run its
     first and smallest V (a turn AUTO may not label LP)."""
@@ -32,7 +36,9 @@ def stored_diagram(diagram):
             "turns": [(run[0]["V"][0], min(run[0]["V"])) for run in diagram.branches]}
 
 
-def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_ORBITS, **model):
+def diagram_jobs(figure: str, scaling: str, freeplays: Sequence[float], prefix: str = "",
+                 orbits_at: Optional[float] = None, uzr: Sequence[float] = V_ORBITS,
+                 **model: Any) -> Dict[str, Callable[..., Any]]:
     """The parts of a figure made of diagrams in V (jobs.Parts): one per
     y_fp, named <prefix>y<y_fp>, computing the stored diagram (runs
     <prefix>y<y_fp>_hb<i>, _po<i>, in the part's own run directory
@@ -52,7 +58,8 @@ def diagram_jobs(figure, scaling, freeplays, prefix="", orbits_at=None, uzr=V_OR
     return {names[y]: job(y, names[y]) for y in freeplays}
 
 
-def diagrams_of(done, prefix=""):
+def diagrams_of(done: Sequence[Mapping[str, Any]],
+                prefix: str = "") -> Tuple[List[Dict[str, Any]], Any]:
     """(stored diagrams in order, stored orbits or None) from the computed
     parts {name: data} of diagram_jobs(..., prefix)."""
     done = [data for name, data in done.items() if name.startswith(prefix + "y")]
@@ -60,7 +67,7 @@ def diagrams_of(done, prefix=""):
     return [p["diagram"] for p in done], (orbits[0] if orbits else None)
 
 
-def diagram_numbers(diagrams, prefix=""):
+def diagram_numbers(diagrams: Sequence[Mapping[str, Any]], prefix: str = "") -> Dict[str, float]:
     """{quantity: value}: the Hopf and fold speeds of stored diagrams, as
     "<prefix>y_fp = <y>: <name> [m/s]" (the Hopf points named by their mode,
     shared.naming) and "...: S<k> [m/s]"."""
@@ -73,7 +80,8 @@ def diagram_numbers(diagrams, prefix=""):
     return out
 
 
-def stored_curves(curves, columns=("yfp", "V")):
+def stored_curves(curves: Sequence[Tuple[Any, Any]],
+                  columns: Sequence[str] = ("yfp", "V")) -> List[Dict[str, list]]:
     """Curves (pairs of runs) for the cache: [{column: polyline}]
     (curve_points); "freq" is 1/T along a curve with the period printed."""
     out = []
