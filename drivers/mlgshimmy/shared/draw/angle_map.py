@@ -1,11 +1,17 @@
 """A quantity over a (rho, mu) grid of side-stay angles as labelled cells: the
 sweep's critical speed and each panel of the design map."""
+from __future__ import annotations
+
+from typing import Any, Callable, Optional, Sequence
+
 import numpy
 
 from mlgshimmy.shared.draw import palette
 
 
-def angle_map(ax, rhos, mus, values, text, cmap=palette.SEQUENCE_MAP, vmin=None, vmax=None):
+def angle_map(ax: Any, rhos: Sequence[float], mus: Sequence[float], values: numpy.ndarray,
+              text: Callable[[float], str], cmap: Any = palette.SEQUENCE_MAP,
+              vmin: Optional[float] = None, vmax: Optional[float] = None) -> Any:
     """values[i, j] at (rhos[j], mus[i]) [deg] as one cell each (evenly
     spaced whatever the angles' spacing), each labelled text(value) in a
     colour readable on its fill (white where the value is not finite).

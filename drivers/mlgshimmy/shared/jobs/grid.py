@@ -26,7 +26,7 @@ import math
 import os
 import shlex
 import sys
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import number_text, paths
 from mlgshimmy.shared.jobs import cache
@@ -302,8 +302,11 @@ def mixed_provenance(tool: str, groups: Sequence[Tuple[Optional[Dict[str, Any]],
 
 # --- the command line ----------------------------------------------------------
 
-def main(tool, description, job_command, plane, options, grid, *, run_job, problem, summary,
-         argv=None):
+def main(tool: str, description: str, job_command: str, plane: Plane,
+         options: Sequence[Tuple[str, str, str]], grid: Callable[[Any], List[Tuple[float, float]]],
+         *, run_job: Callable[[str], None],
+         problem: Callable[[Tuple[float, float]], Optional[str]], summary: Callable[..., None],
+         argv: Optional[Sequence[str]] = None) -> None:
     """The command line of a job-grid study mlgshimmy.studies.<tool>:
     `check|targets|jobs [--missing]|status|summary [--mixed-provenance]|
     <job_command> NAME [--<axis> ...]`.  options: (flag, default, help) per
@@ -338,7 +341,8 @@ def main(tool, description, job_command, plane, options, grid, *, run_job, probl
              summary=summary)
 
 
-def validate(tool, points, problem, noun):
+def validate(tool: str, points: Sequence[Tuple[float, float]],
+             problem: Callable[[Tuple[float, float]], Optional[str]], noun: str) -> None:
     """Every point checked before any job runs: problem(point) says why one
     is rejected (None: valid); any rejected point ends the process, each
     listed."""
@@ -348,7 +352,10 @@ def validate(tool, points, problem, noun):
     print(f"{tool}: {len(points)} {noun} valid")
 
 
-def dispatch(tool, job_command, args, points, plane, axes, *, run_job, problem, summary):
+def dispatch(tool: str, job_command: str, args: Any, points: Sequence[Tuple[float, float]],
+             plane: Plane, axes: Sequence[Any], *, run_job: Callable[[str], None],
+             problem: Callable[[Tuple[float, float]], Optional[str]],
+             summary: Callable[..., None]) -> None:
     """The commands every job-grid study has: check, targets, jobs (one
     shell line per job, for make, GNU parallel or Slurm; --missing: only
     those without a valid result), status (every point without one, with
