@@ -1,8 +1,11 @@
 """python3 -m mlgshimmy.shared.cluster: the tool's entry (the package's text
 says what it does)."""
+from __future__ import annotations
+
 import json
 import sys
 import time
+from typing import Optional, Sequence
 
 from mlgshimmy.shared.cluster import arguments
 from mlgshimmy.shared.cluster.manifest import read_manifest
@@ -15,7 +18,7 @@ from mlgshimmy.shared.cluster.submission import create
 from mlgshimmy.shared.cluster.summary import print_status
 
 
-def main(argv=None):
+def main(argv: Optional[Sequence[str]] = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     options = []
     if "--" in argv:

@@ -1,8 +1,10 @@
 """The command line: submit, status, resume (and its alias resubmit)."""
+from __future__ import annotations
+
 import argparse
 
 
-def parser():
+def parser() -> argparse.ArgumentParser:
     """The argument parser; the options after `--` are split off before it."""
     parser = argparse.ArgumentParser(
         prog="python3 -m mlgshimmy.shared.cluster",

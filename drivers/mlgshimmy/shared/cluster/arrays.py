@@ -1,7 +1,10 @@
 """Slurm's array-index notation, both ways."""
+from __future__ import annotations
+
+from typing import List, Optional, Sequence, Tuple
 
 
-def compress(indices):
+def compress(indices: Sequence[int]) -> str:
     """[1, 2, 3, 7, 9, 10] -> '1-3,7,9-10'."""
     parts, indices = [], sorted(indices)
     start = previous = indices[0]
@@ -15,7 +18,7 @@ def compress(indices):
     return ",".join(parts)
 
 
-def expand(text):
+def expand(text: str) -> List[int]:
     """'[1-3,5%2]' or '4' -> [1, 2, 3, 5] / [4]."""
     text = text.strip("[]").split("%")[0]
     indices = []
@@ -28,7 +31,7 @@ def expand(text):
     return indices
 
 
-def parse_job_id(text):
+def parse_job_id(text: str) -> Tuple[Optional[int], Optional[List[int]]]:
     """'12_3' -> (12, [3]); '12_[1-4]' -> (12, [1, 2, 3, 4]); '12' -> (12, None)."""
     job, _, indices = text.strip().partition("_")
     if not job.isdigit():

@@ -1,8 +1,11 @@
 """What every job line carries so that it runs anywhere: the environment and an
 absolute cd."""
+from __future__ import annotations
+
 import os
 import re
 import shlex
+from typing import Dict, Mapping, Sequence
 
 from mlgshimmy.shared.cluster.refusal import Refused
 
@@ -14,13 +17,14 @@ PATH_VARIABLES = ("AUTO_DIR", "MLG_RUN_ROOT")
 ABSOLUTE_CD = re.compile(r"""^\s*cd\s+(['"]?)/""")
 
 
-def defaults(root):
+def defaults(root: str) -> Dict[str, str]:
     return {"AUTO_DIR": os.path.join(root, "build", "auto", "07p"),
             "MLG_RUN_ROOT": os.path.join(root, "build"),
             "MLG_AUTO_THREADS": "1", "MPLBACKEND": "Agg", "SOURCE_DATE_EPOCH": "0"}
 
 
-def carried_environment(root, overrides, extra, environ=os.environ):
+def carried_environment(root: str, overrides: Sequence[str], extra: Sequence[str],
+                        environ: Mapping[str, str] = os.environ) -> Dict[str, str]:
     """{variable: value} that every line carries: --env, else the environment, else the
     repository's default; AUTO_DIR and MLG_RUN_ROOT as absolute paths."""
     values = {}
@@ -49,14 +53,14 @@ def carried_environment(root, overrides, extra, environ=os.environ):
     return values
 
 
-def export_prefix(line, environment):
+def export_prefix(line: str, environment: Mapping[str, str]) -> str:
     """`export A=... B=...; ` for the variables the line does not set itself."""
     missing = [f"{variable}={shlex.quote(value)}" for variable, value in environment.items()
                if not re.search(rf"(^|[\s;&|(]){re.escape(variable)}=", line)]
     return f"export {' '.join(missing)}; " if missing else ""
 
 
-def self_sufficient(line, environment, cwd):
+def self_sufficient(line: str, environment: Mapping[str, str], cwd: str) -> str:
     """The line with what it needs to run anywhere: the environment and an absolute cd."""
     body = line if ABSOLUTE_CD.match(line) else f"cd {shlex.quote(cwd)} || exit 1; {line}"
     return export_prefix(line, environment) + body

@@ -1,13 +1,16 @@
 """The stages' job lists: from files, or from a command run once a stage."""
+from __future__ import annotations
+
 import subprocess
 import sys
+from typing import List, Optional, Sequence
 
 from mlgshimmy.shared.cluster.refusal import Refused
 
 MAX_STAGES = 50
 
 
-def read_lines(text):
+def read_lines(text: str) -> List[str]:
     """The commands of a job list: its lines without blank ones and # comments."""
     lines = []
     for raw in text.splitlines():
@@ -17,7 +20,7 @@ def read_lines(text):
     return lines
 
 
-def stages_from_files(files, allow_empty=False):
+def stages_from_files(files: Sequence[str], allow_empty: bool = False) -> List[List[str]]:
     stages = []
     for file in files:
         try:
@@ -35,7 +38,8 @@ def stages_from_files(files, allow_empty=False):
     return stages
 
 
-def stages_from_command(command, count, cwd, allow_empty=False):
+def stages_from_command(command: str, count: Optional[int], cwd: str,
+                        allow_empty: bool = False) -> List[List[str]]:
     """Stage k's lines from `command` with {k} replaced by k, k = 1, 2, ...: `count`
     stages, or, without a count, up to the first stage that prints nothing.  With
     allow_empty (and a count), a stage may print nothing (`jobs --missing` of a stage

@@ -1,18 +1,21 @@
 """A submission directory's manifest.json and its write-once job files."""
+from __future__ import annotations
+
 import datetime
 import json
 import os
+from typing import Any, Dict, List, Mapping
 
 from mlgshimmy.shared.cluster.refusal import Refused
 
 
-def write_new(path, text, mode=0o444):
+def write_new(path: str, text: str, mode: int = 0o444) -> None:
     with open(path, "x") as out:
         out.write(text)
     os.chmod(path, mode)
 
 
-def write_manifest(directory, manifest):
+def write_manifest(directory: str, manifest: Mapping[str, Any]) -> None:
     target = os.path.join(directory, "manifest.json")
     temporary = f"{target}.{os.getpid()}.part"
     with open(temporary, "w") as out:
@@ -21,7 +24,7 @@ def write_manifest(directory, manifest):
     os.replace(temporary, target)
 
 
-def read_manifest(directory):
+def read_manifest(directory: str) -> Dict[str, Any]:
     try:
         with open(os.path.join(directory, "manifest.json")) as handle:
             manifest = json.load(handle)
@@ -32,11 +35,11 @@ def read_manifest(directory):
     return manifest
 
 
-def now():
+def now() -> str:
     return datetime.datetime.now().astimezone().isoformat(timespec="seconds")
 
 
-def jobs_of(manifest):
+def jobs_of(manifest: Mapping[str, Any]) -> List[str]:
     ids = []
     for attempt in manifest["attempts"]:
         ids += [stage["job"] for stage in attempt.get("stages", {}).values()]

@@ -1,14 +1,17 @@
 """Stages run here, one after the other, with GNU parallel."""
+from __future__ import annotations
+
 import os
 import shlex
 import shutil
 import subprocess
+from typing import Any, Mapping, Sequence
 
 from mlgshimmy.shared.cluster.manifest import now, write_manifest
 from mlgshimmy.shared.cluster.refusal import Refused, say
 
 
-def run_parallel(manifest, extra, resume):
+def run_parallel(manifest: Mapping[str, Any], extra: Sequence[str], resume: bool) -> int:
     """Run the stages and the assembly here with GNU parallel; the exit status of the
     first stage that fails, else 0."""
     if shutil.which("parallel") is None:

@@ -1,4 +1,6 @@
 """How the tool refuses: the two exceptions and its one voice on stderr."""
+from __future__ import annotations
+
 import sys
 
 TOOL = "submit"
@@ -12,5 +14,5 @@ class NothingToDo(Exception):
     """--allow-empty: no stage has a line and there is no assembly."""
 
 
-def say(message):
+def say(message: str) -> None:
     print(f"{TOOL}: {message}", file=sys.stderr)

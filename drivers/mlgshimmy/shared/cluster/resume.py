@@ -1,4 +1,8 @@
 """Rerun only what did not complete."""
+from __future__ import annotations
+
+from typing import Any, Dict, Sequence
+
 from mlgshimmy.shared.cluster.arrays import compress
 from mlgshimmy.shared.cluster.manifest import jobs_of
 from mlgshimmy.shared.cluster.parallel import run_parallel
@@ -8,7 +12,7 @@ from mlgshimmy.shared.cluster.slurm import submit_slurm
 from mlgshimmy.shared.cluster.status import status
 
 
-def resume(manifest, extra, dry_run):
+def resume(manifest: Dict[str, Any], extra: Sequence[str], dry_run: bool) -> int:
     report, code = status(manifest)
     if code == 3:
         raise Refused("tasks of this submission are still pending or running: wait "

@@ -1,7 +1,10 @@
 """What Slurm says of a submission's jobs: squeue, sacct, or the jobcomp log."""
+from __future__ import annotations
+
 import os
 import re
 import subprocess
+from typing import Any, Dict, Optional, Sequence, Tuple
 
 from mlgshimmy.shared.cluster.arrays import expand, parse_job_id
 
@@ -10,7 +13,7 @@ QUEUED = {"PENDING", "RUNNING", "CONFIGURING", "COMPLETING", "REQUEUED", "RESIZI
           "SUSPENDED", "REQUEUE_HOLD", "REQUEUE_FED", "SIGNALING", "STAGE_OUT"}
 
 
-def query(command):
+def query(command: Sequence[str]) -> Tuple[Optional[int], str]:
     """(exit status, standard output) of a scheduler command; (None, "") where it is not
     installed (status then relies on the marks alone)."""
     try:
@@ -21,7 +24,7 @@ def query(command):
     return run.returncode, run.stdout
 
 
-def scheduler_states(ids):
+def scheduler_states(ids: Sequence[str]) -> Dict[Tuple[str, Optional[int]], Dict[str, Any]]:
     """{(job, index or None): {"state": ..., "exit": ..., "reason": ...}} from squeue -t all,
     sacct, or the jobcomp/filetxt log; the first source that knows a task wins."""
     states = {}

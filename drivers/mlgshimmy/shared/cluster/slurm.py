@@ -1,14 +1,17 @@
 """Stages as Slurm job arrays chained by afterok dependencies, then the assembly."""
+from __future__ import annotations
+
 import os
 import shlex
 import subprocess
+from typing import Any, Dict, Mapping, Optional, Sequence
 
 from mlgshimmy.shared.cluster.arrays import compress
 from mlgshimmy.shared.cluster.manifest import now, write_manifest
 from mlgshimmy.shared.cluster.refusal import Refused, say
 
 
-def sbatch(arguments, dry_run, placeholder):
+def sbatch(arguments: Sequence[str], dry_run: bool, placeholder: str) -> str:
     command = ["sbatch", "--parsable"] + arguments
     if dry_run:
         print(shlex.join(command))
@@ -25,7 +28,8 @@ def sbatch(arguments, dry_run, placeholder):
     return job
 
 
-def submit_slurm(manifest, plan, extra, dry_run):
+def submit_slurm(manifest: Dict[str, Any], plan: Optional[Mapping[Any, Any]], extra: Sequence[str],
+                 dry_run: bool) -> Dict[str, Any]:
     """Submit the stages' tasks in plan ({k: [array indices]}, all stages if None) and the
     assembly; record the attempt.  Cancels what it submitted if an sbatch fails."""
     directory, logs = manifest["dir"], manifest["logs"]

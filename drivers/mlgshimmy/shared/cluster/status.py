@@ -1,13 +1,16 @@
 """The state of every line of a submission, from the tasks' marks and the
 scheduler (Slurm) or the job logs (GNU parallel)."""
+from __future__ import annotations
+
 import os
+from typing import Any, Dict, List, Mapping, Optional, Tuple
 
 from mlgshimmy.shared.cluster.environment import export_prefix
 from mlgshimmy.shared.cluster.manifest import jobs_of
 from mlgshimmy.shared.cluster.scheduler import DONE, QUEUED, scheduler_states
 
 
-def read_mark(path):
+def read_mark(path: str) -> Optional[Dict[str, Any]]:
     try:
         with open(path) as handle:
             fields = handle.read().split()
@@ -21,17 +24,17 @@ def read_mark(path):
             "host": fields[3], "job": fields[4]}
 
 
-def strip_prefix(line, manifest):
+def strip_prefix(line: str, manifest: Mapping[str, Any]) -> str:
     prefix = export_prefix("", manifest["environment"])
     return line[len(prefix):] if prefix and line.startswith(prefix) else line
 
 
-def file_lines(manifest, file):
+def file_lines(manifest: Mapping[str, Any], file: str) -> List[str]:
     with open(os.path.join(manifest["dir"], file)) as handle:
         return handle.read().splitlines()
 
 
-def slurm_status(manifest):
+def slurm_status(manifest: Mapping[str, Any]) -> List[Dict[str, Any]]:
     states = scheduler_states(jobs_of(manifest))
     per_task = manifest["per_task"]
     steps = [(k, stage) for k, stage in enumerate(manifest["stages"], start=1)]
@@ -94,7 +97,7 @@ def slurm_status(manifest):
     return report
 
 
-def parallel_status(manifest):
+def parallel_status(manifest: Mapping[str, Any]) -> List[Dict[str, Any]]:
     report = []
     steps = [(k, stage["file"], f"stage{k}.log")
              for k, stage in enumerate(manifest["stages"], start=1)]
@@ -131,7 +134,7 @@ def parallel_status(manifest):
     return report
 
 
-def alive(pid):
+def alive(pid: int) -> bool:
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
@@ -141,7 +144,7 @@ def alive(pid):
     return True
 
 
-def status(manifest):
+def status(manifest: Mapping[str, Any]) -> Tuple[List[Dict[str, Any]], int]:
     report = (slurm_status if manifest["scheduler"] == "slurm" else parallel_status)(manifest)
     states = [entry["state"] for step in report for entry in step["entries"]]
     if any(state in QUEUED for state in states):

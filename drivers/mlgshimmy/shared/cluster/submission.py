@@ -1,10 +1,14 @@
 """A new submission directory: its job files, made self-sufficient, and its
 manifest."""
+from __future__ import annotations
+
+import argparse
 import datetime
 import math
 import os
 import re
 import secrets
+from typing import Any, Dict, Sequence
 
 from mlgshimmy.shared.cluster.environment import carried_environment, self_sufficient
 from mlgshimmy.shared.cluster.joblists import stages_from_command, stages_from_files
@@ -16,7 +20,7 @@ WRAPPER = os.path.join("mk", "cluster", "array-task.sh")
 NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.+-]*$")
 
 
-def create(args, options):
+def create(args: argparse.Namespace, options: Sequence[str]) -> Dict[str, Any]:
     """Check the request, write the submission directory and return its manifest
     (nothing is submitted yet)."""
     root = ROOT

@@ -1,10 +1,14 @@
 """The status report as text: counts per stage, then the lines that need a look."""
+from __future__ import annotations
+
 import os
+from typing import Any, Mapping, Sequence
 
 from mlgshimmy.shared.cluster.scheduler import DONE
 
 
-def print_status(manifest, report, code, every=False):
+def print_status(manifest: Mapping[str, Any], report: Sequence[Mapping[str, Any]], code: int,
+                 every: bool = False) -> None:
     counts = sum(len(step["entries"]) for step in report if step["stage"] != "assemble")
     print(f"{manifest['dir']}: {manifest['scheduler']}, {manifest['name']}, "
           f"{len(manifest['stages'])} stage(s), {counts} lines"
