@@ -18,6 +18,8 @@ features the tests check (shared.checks) with a link to the figure's
 section of docs/reproduction.md, and its cached result's provenance
 (folded); then the studies beyond the paper that have been run
 (their tables and figures, STUDIES)."""
+from __future__ import annotations
+
 import argparse
 import datetime
 import html
@@ -27,7 +29,7 @@ import platform
 import shutil
 import subprocess
 import sys
-from typing import Any, Dict
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import autosession, checks, gear_answers, motion, paper, provenance
 from mlgshimmy.shared import paths
@@ -64,7 +66,7 @@ def _run(*command):
     return proc.stdout.strip() if proc.returncode == 0 else None
 
 
-def read_result(figure, root):
+def read_result(figure: str, root: str) -> Tuple[Optional[Dict[str, Any]], Any]:
     """(provenance, data) of a figure's cached result, or (None, None)."""
     try:
         with open(os.path.join(root, figure, "result.json")) as source:
@@ -74,7 +76,7 @@ def read_result(figure, root):
     return record.get("provenance") or {}, record.get("data")
 
 
-def read_rows(figure, root):
+def read_rows(figure: str, root: str) -> Optional[List[Dict[str, Any]]]:
     """The table rows of a figure (tables/<fig>.json), or None."""
     try:
         with open(os.path.join(root, "tables", f"{figure}.json")) as source:
@@ -83,7 +85,7 @@ def read_rows(figure, root):
         return None
 
 
-def read_notes(figure, root):
+def read_notes(figure: str, root: str) -> List[str]:
     """The lines under a figure's table (tables/<fig>.json: the named points,
     their criticality checked), or []."""
     try:
@@ -93,7 +95,7 @@ def read_notes(figure, root):
         return []
 
 
-def read_summary(figure, root):
+def read_summary(figure: str, root: str) -> Optional[List[Tuple[str, float]]]:
     """Rows of a simulation summary (<fig>/summary.txt: "name value"
     lines, Fig. 8), or None."""
     try:
@@ -138,7 +140,7 @@ def read_extras(figure: str, root: str) -> Dict[str, Any]:
     return out
 
 
-def tools():
+def tools() -> List[Tuple[str, str]]:
     """[(tool, version)] of what made and drew the results, read now."""
     import matplotlib
     import numpy
@@ -152,7 +154,7 @@ def tools():
             ("system", platform.platform())]
 
 
-def collect_studies(root):
+def collect_studies(root: str) -> List[Dict[str, Any]]:
     """[{"name", "command", "what", "texts": [(path, text)], "pngs": [path],
     "notes": the lines under its table}] of the studies that were run (their
     files exist)."""
@@ -170,7 +172,7 @@ def collect_studies(root):
     return out
 
 
-def collect(root):
+def collect(root: str) -> Dict[str, Any]:
     """Everything the page shows, as plain data (the test reads it too)."""
     figures = []
     for figure, command, shows in FIGURES:
@@ -445,7 +447,8 @@ def _sidebar(info, at_gear=False):
             f'<div class="group">Studies</div>{studies}</nav>')
 
 
-def page(info, images, docs=os.path.join("..", "..", checks.DOCS), lead=""):
+def page(info: Mapping[str, Any], images: Mapping[str, str],
+         docs: str = os.path.join("..", "..", checks.DOCS), lead: str = "") -> str:
     """The HTML page; docs: the link to docs/reproduction.md from it; lead:
     HTML shown first (the design answers at a changed gear)."""
     score = _scorecard(info["score"])
@@ -489,7 +492,7 @@ been run.</p>
 """
 
 
-def build(out=None, root=None):
+def build(out: Optional[str] = None, root: Optional[str] = None) -> str:
     """Write the page and its images; returns the page's path.  At a
     changed gear it opens with the design answers (shared.gear_answers)."""
     root = root or paths.run_root()
@@ -523,7 +526,7 @@ def build(out=None, root=None):
     return target
 
 
-def main(argv=None):
+def main(argv: Optional[Sequence[str]] = None) -> None:
     parser = argparse.ArgumentParser(prog="python3 -m mlgshimmy.report",
                                      description=__doc__.splitlines()[0])
     parser.add_argument("--out", help="directory of the page (default $MLG_RUN_ROOT/report)")
