@@ -15,6 +15,10 @@ large-amplitude family) on a set of loads (shared.regions).  The wheel lift-off
 region is bounded by its edge located by simulation (liftoff).  result.json
 holds the map ("region_map": V, Fstar, code per F* row, names) and the
 curves bounding it ("edge_curves") for the attractor atlas."""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Sequence
+
 import numpy
 
 from mlgshimmy.figures.fig11.curves import (slice_hopf_curves, stage_switch, stored_curves,
@@ -35,7 +39,7 @@ from mlgshimmy.shared import jobs
 from mlgshimmy.shared import liftoff
 
 
-def parts():
+def parts() -> Dict[str, Any]:
     """The large-amplitude family, the curves from F* = 1, the lift-off
     speeds, the eigenvalue grid and one diagram in V per slice load:
     independent jobs, about the longest first (so that the last jobs under
@@ -66,7 +70,7 @@ def parts():
     return work
 
 
-def compute(parts):
+def compute(parts: Mapping[str, Any]) -> Dict[str, Any]:
     """The parts assembled: the curves, the torus points on the slices, the
     lift-off edge, and the region map bounded by the curves (region_map)."""
     stored = parts["curves"]
@@ -131,7 +135,8 @@ def compute(parts):
             "region_map": {"V": V_GRID, "Fstar": F_GRID, "code": found, "names": names}}
 
 
-def gh_ends_compared(on_locus, at_gh):
+def gh_ends_compared(on_locus: Sequence[Mapping[str, Any]],
+                     at_gh: Sequence[Mapping[str, Any]]) -> List[str]:
     """Lines comparing the fold curves' ends named GH by a located point
     (`at_gh`) with those the Hopf-locus test (ends.GH_RATE) names
     (`on_locus`; ends inside the stage switch are neither)."""
@@ -146,7 +151,10 @@ def gh_ends_compared(on_locus, at_gh):
     return lines
 
 
-def numbers(pitchforks, stored, drawn, points, lift, check, ends, special):
+def numbers(pitchforks: Sequence[float], stored: Mapping[str, Any], drawn: Mapping[str, Any],
+            points: Sequence[Mapping[str, Any]], lift: Optional[Mapping[str, Any]],
+            check: Mapping[str, Any], ends: Mapping[str, Any],
+            special: Sequence[Mapping[str, Any]]) -> Dict[str, Any]:
     """The figure's table (shared.paper.report; a side-stay geometry's
     beside the baseline's): the pitchfork loads (with side-stay angles the
     folds of the yawed states they became), the lift-off edge, how many

@@ -1,7 +1,10 @@
 """Fig. 11's curves from the Fig. 10 special points at F* = 1: Hopf curves,
 folds of periodic orbits (and the upper fold curves started from the
 slices' folds), the pitchforks and the zero-freeplay Hopf curve."""
+from __future__ import annotations
+
 import functools
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
@@ -20,7 +23,7 @@ from mlgshimmy.shared.stage_switch import stage_switch_window
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
 
 
-def hopf_curve(rundir, name, point, sign):
+def hopf_curve(rundir: str, name: str, point: Any, sign: float) -> Any:
     """A Hopf curve of Fig. 11 from `point` in (F*, V), first step DS = 0.002
     sign: steps down to 1e-10 (the stage-switch overlay) so that it
     reaches its turning point inside the oleo's stage switch."""
@@ -28,7 +31,7 @@ def hopf_curve(rundir, name, point, sign):
                          DS=0.002 * sign, DSMAX=0.02, NMX=5000, allow_mx=True)
 
 
-def fold_curve(rundir, name, point, sign, **kw):
+def fold_curve(rundir: str, name: str, point: Any, sign: float, **kw: Any) -> Any:
     """A fold curve of Fig. 11 from the LP `point`, first step DS = 0.05
     sign.  An MX end that nothing explains (ends.explained: not inside the
     stage switch, not on the Hopf locus) sends it up the retry ladder
@@ -38,7 +41,7 @@ def fold_curve(rundir, name, point, sign, **kw):
                          DSMAX=1.0, NMX=400, allow_mx=FOLD_ENDS, **kw)
 
 
-def fold_end_explained(point, _parameter):
+def fold_end_explained(point: Any, _parameter: str) -> bool:
     """Whether a fold curve's MX point is an end ends.explained accounts for
     (on the Hopf locus counts: the GH points are located after the curves)."""
     stop = {"V": point["V"], "Fstar": point["Fstar"], "curve": "fold"}
@@ -50,12 +53,12 @@ FOLD_ENDS = ct.Ends(fold_end_explained, "neither inside the stage switch nor on 
 
 
 @functools.lru_cache(maxsize=None)
-def stage_switch():
+def stage_switch() -> Optional[Tuple[float, float]]:
     """The stage-switch window of the plane's loads (ends.inside)."""
     return stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
 
 
-def curves(rundir, parameter_set="figures"):
+def curves(rundir: str, parameter_set: str = "figures") -> Dict[str, Any]:
     """Hopf and fold curves continued from the F* = 1 points of Fig. 10, the
     zero-freeplay Hopf curve and the pitchfork loads (at three speeds: they
     do not depend on V), or with side-stay angles the loads of the folds
@@ -103,7 +106,8 @@ def curves(rundir, parameter_set="figures"):
     return out
 
 
-def upper_folds(rundir, first, folds):
+def upper_folds(rundir: str, first: Mapping[str, Any],
+                folds: Mapping[float, Sequence[Tuple[str, int]]]) -> List[Any]:
     """Curves of folds of periodic orbits (of LOW_FREQUENCY_HZ or more) that
     the curves from the fold S (`first`, stored) do not pass: continued
     both ways from each fold of a slice, lightest load first (folds:
@@ -137,7 +141,7 @@ def upper_folds(rundir, first, folds):
     return out
 
 
-def slice_hopf(rundir, first, parameter_set="figures"):
+def slice_hopf(rundir: str, first: Mapping[str, Any], parameter_set: str = "figures") -> List[Any]:
     """Hopf curves of straight rolling that the curves from F* = 1 (`first`,
     stored) do not pass: continued both ways from each Hopf point of a
     slice (an eigenvalue scan in V at the slice load, lightest first) that
@@ -168,21 +172,21 @@ def slice_hopf(rundir, first, parameter_set="figures"):
     return out
 
 
-def slice_hopf_curves(parts):
+def slice_hopf_curves(parts: Mapping[str, Any]) -> Dict[str, Any]:
     """A part: the Hopf curves from the slices' Hopf points (slice_hopf),
     stored: {"curves": [stored diagrams]}."""
     found = slice_hopf(paths.rundir("fig11/slice_hopf"), parts["curves"]["hopf"])
     return {"curves": [jobs.stored(d, ("V", "Fstar")) for d in found]}
 
 
-def stored_curves():
+def stored_curves() -> Dict[str, Any]:
     out = curves(paths.rundir("fig11/curves"))
     return {**{kind: [jobs.stored(d, ("V", "Fstar")) for d in out[kind]]
                for kind in ("hopf", "fold", "zero")},
             **{k: out[k] for k in ("pitchfork", "stationary_folds") if k in out}}
 
 
-def upper_fold_curves(parts):
+def upper_fold_curves(parts: Mapping[str, Any]) -> Dict[str, Any]:
     """A part: the fold curves from the slices' folds (upper_folds),
     stored: {"curves": [stored diagrams]}."""
     upper = upper_folds(paths.rundir("fig11/upper_folds"), parts["curves"]["fold"],

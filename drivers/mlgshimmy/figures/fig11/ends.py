@@ -3,6 +3,10 @@ two curves of one kind meeting at one point (mx_ends), an end inside the
 oleo's stage switch, a fold curve's end at a generalised Hopf point, a
 torus curve's end on a fold curve, an end at the lift-off edge
 (explained), and the others, drawn as MX crosses."""
+from __future__ import annotations
+
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
+
 import numpy
 
 from mlgshimmy.figures.fig11.plane import (F_MAX, F_MIN, FREEPLAY, GEOMETRY, V_MAX, V_MIN,
@@ -24,14 +28,14 @@ JOIN_LABELS = {"hopf": "two Hopf curves meet inside the oleo's stage switch (at 
                "tongue": "the two edges of a tongue meet: its tip"}
 
 
-def in_plane(point):
+def in_plane(point: Mapping[str, float]) -> bool:
     """Whether (V, F*) lies inside the plane's edges: a curve started on the
     edge F* = F_MIN (a Hopf or torus point of the edge's slice) that steps
     out of it crosses no stop there and ends beyond it."""
     return V_MIN <= point["V"] <= V_MAX and F_MIN <= point["Fstar"] <= F_MAX
 
 
-def mx_ends(drawn):
+def mx_ends(drawn: Mapping[str, Any]) -> Tuple[List[Dict[str, Any]], List[Dict[str, Any]]]:
     """(joins, open): the MX ends of the drawn curves inside the plane
     (in_plane), those where two curves of one kind meet (JOIN_TOL) as
     [{"V", "Fstar", "kind", "curves"}], and the others [{"V", "Fstar",
@@ -84,7 +88,7 @@ GH_RATE = 1e-3
 FOLD_TOL = 0.002
 
 
-def on_hopf_locus(stop):
+def on_hopf_locus(stop: Mapping[str, float]) -> bool:
     """Whether straight rolling at the end's (V, F*) has a complex pair of
     eigenvalues within GH_RATE of the imaginary axis."""
     rates = kappa_criterion.growth(stop["Fstar"], FREEPLAY["yfp"], stop["V"], scaling="ratio",
@@ -92,12 +96,13 @@ def on_hopf_locus(stop):
     return min(abs(rates["low"]), abs(rates["high"])) < GH_RATE
 
 
-def inside(switch, Fstar):
+def inside(switch: Optional[Tuple[float, float]], Fstar: float) -> bool:
     """Whether F* lies in the stage-switch window (F*_enter, F*_leave), or None."""
     return bool(switch) and switch[0] <= Fstar <= switch[1]
 
 
-def joins_outside(joins, switch):
+def joins_outside(joins: Sequence[Mapping[str, Any]],
+                  switch: Optional[Tuple[float, float]]) -> List[Dict[str, Any]]:
     """The joins (mx_ends) with Hopf joins outside the stage-switch window
     `switch` (or None) of kind "hopf_elsewhere": at side-stay angles Hopf
     curves from the slices also meet in pairs at loads away from it
@@ -106,7 +111,7 @@ def joins_outside(joins, switch):
             if j["kind"] == "hopf" and not inside(switch, j["Fstar"]) else j for j in joins]
 
 
-def nearest_on_edge(stop, lift):
+def nearest_on_edge(stop: Mapping[str, float], lift: Mapping[str, Any]) -> Tuple[float, int]:
     """(distance in V/V_MAX, F*/F_MAX, index) of the lift-off edge's point
     nearest an MX end."""
     V, F = numpy.asarray(lift["V"]), numpy.asarray(lift["Fstar"])
@@ -115,7 +120,10 @@ def nearest_on_edge(stop, lift):
     return float(d[k]), k
 
 
-def explained(stops, switch, lift, folds=(), at_gh=None):
+def explained(stops: Sequence[Mapping[str, Any]], switch: Optional[Tuple[float, float]],
+              lift: Optional[Mapping[str, Any]], folds: Sequence[Any] = (),
+              at_gh: Optional[Callable[[Mapping[str, Any]], bool]] = None
+              ) -> Dict[str, List[Dict[str, Any]]]:
     """The MX ends that are no two curves' meeting (mx_ends' open list)
     sorted: {"stage_switch": those with F* inside the window `switch`
     ((F*_enter, F*_leave) or None), "generalised_hopf": ends of fold curves
@@ -140,7 +148,8 @@ def explained(stops, switch, lift, folds=(), at_gh=None):
     return out
 
 
-def closing_segments(ends, lift):
+def closing_segments(ends: Mapping[str, Sequence[Mapping[str, Any]]],
+                     lift: Optional[Mapping[str, Any]]) -> List[Dict[str, Any]]:
     """Straight edges from each torus curve's end at the lift-off edge
     (explained's "liftoff") to the edge's nearest point, as curve_list
     entries."""

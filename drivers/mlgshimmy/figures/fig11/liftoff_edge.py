@@ -1,7 +1,10 @@
 """Fig. 11's wheel lift-off edge, by simulation (shared.liftoff): the edge
 speed bisected on a few loads, its two ends on V = V_MAX bisected in F*."""
+from __future__ import annotations
+
 import numpy
 import os
+from typing import Any, Dict, List, Mapping, Optional, Sequence
 
 from mlgshimmy.figures.fig11.orbits import ROLLING
 from mlgshimmy.figures.fig11.plane import F_MAX, F_MIN, FREEPLAY, V_MAX
@@ -15,11 +18,11 @@ LIFTOFF_LOADS = numpy.round(numpy.arange(0.1, 0.71, 0.1), 2)
 LIFTOFF_FROM = 500.0   # m/s: the bisection's lower end (no lift-off there; liftoff.bisected)
 
 
-def liftoff_rundir():
+def liftoff_rundir() -> str:
     return paths.rundir("fig11/liftoff")
 
 
-def liftoff_speed(Fstar):
+def liftoff_speed(Fstar: float) -> Dict[str, Optional[float]]:
     """A part: the lowest speed (to liftoff.TOL_V) at which a wheel lifts
     off at load F*, bisected from LIFTOFF_FROM up to V_MAX; None if none
     does at V_MAX."""
@@ -31,7 +34,7 @@ def liftoff_speed(Fstar):
     return {"Fstar": float(Fstar), "V": V}
 
 
-def liftoff_loads(speeds):
+def liftoff_loads(speeds: Sequence[Mapping[str, Any]]) -> List[int]:
     """The indices of the loads with lift-off in the parts' speeds [{"Fstar",
     "V" or None}] (they must be contiguous)."""
     found = [k for k, s in enumerate(speeds) if s["V"] is not None]
@@ -46,7 +49,7 @@ def liftoff_loads(speeds):
 LIFTOFF_ENDS = {"liftoff_end_light": 0, "liftoff_end_heavy": -1}
 
 
-def liftoff_end(parts, part):
+def liftoff_end(parts: Mapping[str, Any], part: str) -> Dict[str, Optional[float]]:
     """A part: the load on V = V_MAX where lift-off starts beyond the
     outermost load with lift-off (LIFTOFF_ENDS), bisected in F* towards
     its neighbour without ({"Fstar": ..., or None if no load lifts a wheel
@@ -74,7 +77,8 @@ def liftoff_end(parts, part):
     return {"Fstar": Fstar}
 
 
-def liftoff_edge(speeds, ends):
+def liftoff_edge(speeds: Sequence[Mapping[str, Any]],
+                 ends: Sequence[Mapping[str, Any]]) -> Optional[Dict[str, Any]]:
     """The lift-off edge from the parts' speeds [{"Fstar", "V" or None}] and
     its two ends' loads on V = V_MAX (liftoff_end): {"points": [(V, F*)],
     "V", "Fstar": a smooth curve through them (PCHIP in F*)}, or None if no

@@ -1,6 +1,10 @@
 """Fig. 11's codimension-two points: those shared.codim2 locates on every
 drawn Hopf curve of straight rolling (GH, BT, ZH, HH; the zero-freeplay
 curve too), each once, and the fold curves' ends they explain."""
+from __future__ import annotations
+
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
+
 import numpy
 
 from mlgshimmy.figures.fig11.ends import in_plane, inside
@@ -21,7 +25,8 @@ ZERO_FREEPLAY = {**GEOMETRY, "yfp": 0.0}
 A2_NOISE = 1e-12
 
 
-def model_at(values, rolling):
+def model_at(values: Mapping[str, float], rolling: Optional[Callable[[float], Any]]
+             ) -> Callable[[float, float], Tuple[Any, Any]]:
     """at(V, F*) -> (model, straight rolling) for codim2: the state the
     figure's solvers start from (orbits.ROLLING, continued from zero
     freeplay) where there is one, else the library's Newton solve."""
@@ -44,7 +49,7 @@ def _plain(point, curve, at):
     return out
 
 
-def points(drawn):
+def points(drawn: Mapping[str, Any]) -> List[Dict[str, Any]]:
     """[{"type", "V", "Fstar", "curve", "omega", "l1", and at GH "dl1_db",
     "a2"}] on the drawn Hopf curves ({"hopf": [...], "zero":
     [...]}, stored diagrams), in V, those inside the plane (ends.in_plane: a
@@ -62,7 +67,7 @@ def points(drawn):
     return once([p for p in found if in_plane(p)])
 
 
-def once(found):
+def once(found: Sequence[Dict[str, Any]]) -> List[Dict[str, Any]]:
     """The points in V, each once: one of a type within SAME of another is
     left out."""
     kept = []
@@ -72,12 +77,12 @@ def once(found):
     return kept
 
 
-def distance(p, q):
+def distance(p: Mapping[str, float], q: Mapping[str, float]) -> float:
     """Distance of two (V, F*) points in V/V_MAX, F*/F_MAX."""
     return float(numpy.hypot((p["V"] - q["V"]) / V_MAX, (p["Fstar"] - q["Fstar"]) / F_MAX))
 
 
-def at_gh(located, tol):
+def at_gh(located: Sequence[Mapping[str, Any]], tol: float) -> Callable[[Mapping[str, Any]], bool]:
     """A predicate for ends.explained: whether a curve's end lies within
     `tol` of a located GH point."""
     return lambda stop: any(p["type"] == "GH" and distance(p, stop) < tol for p in located)
@@ -88,7 +93,8 @@ def at_gh(located, tol):
 BACK = 3
 
 
-def l2_signs(located, folds, ends):
+def l2_signs(located: Sequence[Dict[str, Any]], folds: Sequence[Any],
+             ends: Sequence[Mapping[str, Any]]) -> None:
     """Each located GH point where a fold curve of orbits ends (`ends`:
     ends.explained's "generalised_hopf"; `folds`: the drawn fold curves,
     stored diagrams) gets "l2_sign" and "l2_from" (the curve): near a GH
@@ -107,7 +113,7 @@ def l2_signs(located, folds, ends):
                 gh["l2_from"] = stop["curve"]
 
 
-def coefficient(p):
+def coefficient(p: Mapping[str, Any]) -> str:
     """The point's coefficient as the table writes it: at GH the sign data
     (l2 is not computed: codim2) and the oleo kink's a2 where it is more
     than rounding (A2_NOISE; at l1 = 0 a nonzero a2 is the leading term:
@@ -126,7 +132,8 @@ def coefficient(p):
     return "omega -> 0"
 
 
-def lines(located, switch):
+def lines(located: Sequence[Mapping[str, Any]],
+          switch: Optional[Tuple[float, float]]) -> List[str]:
     """The table's lines, one per located point; those inside the stage
     switch's window `switch` (ends.inside) say so: l1 swings there with
     the switch's stiffness, smoothed over 1e-5 m."""

@@ -1,6 +1,10 @@
 """Fig. 11's periodic orbits on the slice loads: one diagram in V per slice,
 the large-amplitude family (not Hopf-born in range) followed from F* = 1,
 the eigenvalue grid of straight rolling, and which orbits are stable."""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Sequence, Tuple
+
 import numpy
 
 from mlgshimmy.figures.fig11.plane import (FREEPLAY, GEOMETRY, MODEL, F_GRID, F_MAX, F_MIN, SLICES, V_GRID, V_MAX, V_MIN, V_SCAN)
@@ -23,7 +27,7 @@ FAMILY_SPLIT_HZ = 9.3
 LOW_FREQUENCY_HZ = 8.0   # folds above it start fold curves (curves.upper_folds)
 
 
-def large_seed(rundir, parameter_set="figures"):
+def large_seed(rundir: str, parameter_set: str = "figures") -> Any:
     """The large-amplitude shimmy orbit at F* = 1: the orbits born at the
     last Hopf point of straight rolling there, continued to V = 300 m/s
     (its UZ1 label), where they are stable."""
@@ -33,7 +37,7 @@ def large_seed(rundir, parameter_set="figures"):
     return ct.periodic_from(rundir, "large_seed", point, stop={"V": [V_MIN, 300.0]})
 
 
-def large_orbits(rundir, parameter_set="figures"):
+def large_orbits(rundir: str, parameter_set: str = "figures") -> Dict[float, List[Any]]:
     """{slice load: orbit diagrams in V} of the large-amplitude shimmy family.
     Away from F* = 1 it need not be connected to a Hopf point of straight
     rolling inside V <= 600, so it is followed from its stable orbit at
@@ -55,13 +59,13 @@ def large_orbits(rundir, parameter_set="figures"):
     return out
 
 
-def large_run(Fstar, direction):
+def large_run(Fstar: float, direction: int) -> str:
     """The name of the large part's diagram in V at a slice load, upwards
     (direction 1) or downwards (-1)."""
     return f"large_{Fstar:.3f}{'+-'[direction < 0]}"
 
 
-def large_upwards(Fstar, complete=True):
+def large_upwards(Fstar: float, complete: bool = True) -> Tuple[Any, List[Dict[str, Any]]]:
     """(diagram, torus crossings) of the large part's diagram in V upwards
     at a slice load (it must reach V_MAX unless not `complete`); its torus
     points are the crossings of a Floquet pair through |mu| = 1
@@ -77,7 +81,7 @@ def large_upwards(Fstar, complete=True):
     return orbits, torus.torus_crossings(rundir, name)
 
 
-def straight_rolling(Fstar, parameter_set="figures"):
+def straight_rolling(Fstar: float, parameter_set: str = "figures") -> Dict[str, float]:
     """Straight rolling at this load as {name: value} for the solvers to start
     from, the state continued from zero freeplay (shared.yawed.straight:
     with side-stay angles Newton from psi = 0 can miss it or land on a
@@ -94,7 +98,7 @@ def straight_rolling(Fstar, parameter_set="figures"):
 ROLLING = None if stationary.symmetric(MODEL) else straight_rolling
 
 
-def straight_rolling_stable(parameter_set="figures"):
+def straight_rolling_stable(parameter_set: str = "figures") -> numpy.ndarray:
     """[F*, V] on F_GRID x V_GRID: True where straight rolling is stable."""
     return spectrum.stable_on_grid(parameter_set, "Fstar", F_GRID, "V", V_GRID, ROLLING,
                                    **MODEL)
@@ -103,11 +107,11 @@ def straight_rolling_stable(parameter_set="figures"):
 ORBIT_COLUMNS = ("V", "freq", "psi_amp")
 
 
-def slice_rundir(Fstar):
+def slice_rundir(Fstar: float) -> str:
     return paths.rundir(f"fig11/slice_{Fstar:.4f}")
 
 
-def slice_diagram(Fstar, parameter_set="figures"):
+def slice_diagram(Fstar: float, parameter_set: str = "figures") -> Dict[str, Any]:
     """The diagram in V at one slice load: its orbit branches (stored) and
     its folds of high-frequency orbits [(run name, label)] (to start fold
     curves from)."""
@@ -123,13 +127,13 @@ def slice_diagram(Fstar, parameter_set="figures"):
                       if run(lab)["freq"] >= LOW_FREQUENCY_HZ]}
 
 
-def large_family(parameter_set="figures"):
+def large_family(parameter_set: str = "figures") -> Dict[str, List[Dict[str, Any]]]:
     """large_orbits stored: {slice load as "%.4f": [stored branches]}."""
     return {f"{Fstar:.4f}": [b for run in runs for b in jobs.stored(run, ORBIT_COLUMNS)]
             for Fstar, runs in large_orbits(paths.rundir("fig11/large"), parameter_set).items()}
 
 
-def stable_orbits(stored):
+def stable_orbits(stored: Sequence[Mapping[str, Any]]) -> Dict[str, List[Tuple[float, float]]]:
     """{"low"|"high": [(V0, V1), ...]}: the V-intervals of stable orbits on
     stored branches of one slice load, by family: a branch is low-frequency
     if its frequency where its amplitude is smallest (its Hopf point) is

@@ -1,5 +1,9 @@
 """The (V, F*) plane of Fig. 11: its ranges, the freeplay, the slice loads
 and the grids the region map is painted on."""
+from __future__ import annotations
+
+from typing import Any, Mapping, Sequence
+
 import numpy
 
 from mlgshimmy.shared import continuation as ct
@@ -29,7 +33,8 @@ STOP = {"Fstar": [F_MIN, F_MAX], "V": [V_MIN, V_MAX]}
 V_SCAN = ct.SPEED_SCAN
 
 
-def on_curves(point, curves, tol=0.01):
+def on_curves(point: Mapping[str, float], curves: Sequence[Sequence[Mapping[str, Any]]],
+              tol: float = 0.01) -> bool:
     """Whether `point` ({"V", "Fstar"}) lies on one of the curves (lists of
     branches; distance in V/V_MAX and F*/F_MAX below tol)."""
     return any(numpy.min(numpy.hypot((numpy.asarray(branch["V"]) - point["V"]) / V_MAX,

@@ -1,6 +1,8 @@
 """Fig. 11's region map: the plane cut by the curves, each piece labelled
 by the attractors the slices' samples find there (shared.regions)."""
-from typing import Any, Dict, List, Tuple
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
@@ -16,7 +18,7 @@ PIECE_DISAGREEMENT = 0.05   # a piece whose samples disagree more than this is r
 REGION_ALPHA = 0.8          # the regions' fills under the curves
 
 
-def slice_codes(orbits):
+def slice_codes(orbits: Mapping[str, Sequence[Tuple[float, float]]]) -> numpy.ndarray:
     """The orbit bits ("low", "high") along V_GRID on one slice, from its
     stable V-intervals (stable_orbits)."""
     out = numpy.zeros(len(V_GRID), dtype=int)
@@ -26,11 +28,12 @@ def slice_codes(orbits):
     return out
 
 
-def slice_row(Fstar):
+def slice_row(Fstar: float) -> int:
     return int(numpy.argmin(numpy.abs(F_GRID - Fstar)))
 
 
-def curve_list(drawn, pitchforks, lift=None):
+def curve_list(drawn: Mapping[str, Any], pitchforks: Sequence[float],
+               lift: Optional[Mapping[str, Any]] = None) -> List[Dict[str, Any]]:
     """Every curve that bounds a region: [{"name", "kind", "V", "Fstar"}]
     (the pitchfork lines as two points each; the lift-off edge if any), and
     the tongue's torus curve (kind "tongue": it bounds no region of the map,
@@ -49,7 +52,7 @@ def curve_list(drawn, pitchforks, lift=None):
     return out
 
 
-def yaw_stable(parameter_set="figures"):
+def yaw_stable(parameter_set: str = "figures") -> numpy.ndarray:
     """[F*, V] on F_GRID x V_GRID: True where a stable off-centre yawed
     equilibrium exists (shared.yawed: the stationary states off straight
     rolling, on both sides, and the eigenvalues of the exact Jacobian there;
@@ -58,7 +61,9 @@ def yaw_stable(parameter_set="figures"):
     return yawed.stable_grid(parameter_set, F_GRID, V_GRID, FREEPLAY, **GEOMETRY)
 
 
-def region_map(sr_stable, orbits, edge_curves, yaw, lift=None):
+def region_map(sr_stable: numpy.ndarray, orbits: Mapping[str, Any],
+               edge_curves: Sequence[Mapping[str, Any]], yaw: numpy.ndarray,
+               lift: Optional[Mapping[str, Any]] = None) -> Tuple[numpy.ndarray, Dict[str, Any]]:
     """(code [F*, V] on F_GRID x V_GRID, check): the regions bounded by the
     edge curves (and by the edges of the straight-rolling stability grid,
     which are the Hopf curves and pitchforks again, closing them where AUTO
@@ -89,7 +94,7 @@ def region_map(sr_stable, orbits, edge_curves, yaw, lift=None):
     return found, check
 
 
-def region_name(value):
+def region_name(value: int) -> str:
     """The name of a region code (the result's "names")."""
     names = [NAMES[bit] for bit in sorted(NAMES) if value & bit]
     if not names:

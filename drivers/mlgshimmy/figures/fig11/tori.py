@@ -1,7 +1,10 @@
 """Fig. 11's torus curve (the edge of the quasi-periodic region) and the
 edges of the tongues of instability left of it, continued by AUTO from
 torus points of the large family (shared.torus)."""
+from __future__ import annotations
+
 import os
+from typing import Any, Collection, Dict, List, Mapping, Sequence, Tuple
 
 import numpy
 
@@ -36,14 +39,15 @@ PINNED = stationary.symmetric(MODEL)
 MAX_CURVES = 10   # a cost guard: 8 before the edge slice (plane.EDGE_SLICE) took 2
 
 
-def tongue_parts():
+def tongue_parts() -> Dict[str, Any]:
     """The tongue-edge parts (TONGUE_EDGES at the paper's gear; none with
     side-stay angles, where the torus part finds them)."""
     return TONGUE_EDGES if PINNED else {}
 TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/s in V)
 
 
-def first_torus_curve(rundir, name, found, index=0, tr_name="tr", **options):
+def first_torus_curve(rundir: str, name: str, found: Tuple[Any, Sequence[Any]], index: int = 0,
+                      tr_name: str = "tr", **options: Any) -> Any:
     """A torus point of an orbit diagram in V (found: (diagram, crossings);
     the first, or torus_points[index]) continued both ways by AUTO
     (torus.tr_point as run tr_name, torus.torus_curve with its options:
@@ -55,7 +59,7 @@ def first_torus_curve(rundir, name, found, index=0, tr_name="tr", **options):
     return torus.torus_curve(rundir, name, tr, **options)
 
 
-def crossing_kinds(crossings):
+def crossing_kinds(crossings: Sequence[Any]) -> List[str]:
     """"tongue" for each crossing that opens or closes a window (a loss of
     stability regained further up, torus.windows), "torus" for a loss never
     regained (the edge of the quasi-periodic region)."""
@@ -63,7 +67,7 @@ def crossing_kinds(crossings):
     return ["tongue" if id(c) in paired else "torus" for c in crossings]
 
 
-def diagrams_on(Fstar, large_loads):
+def diagrams_on(Fstar: float, large_loads: Collection[float]) -> List[Tuple[Any, List[Any]]]:
     """[(diagram, torus crossings)] on a slice load: the large part's
     diagram in V upwards (if the family reaches the load; one that stops
     short of V_MAX gives the crossings below its end) and the slice's own
@@ -75,7 +79,7 @@ def diagrams_on(Fstar, large_loads):
     return out
 
 
-def found_curves(large_loads):
+def found_curves(large_loads: Collection[float]) -> Dict[str, Any]:
     """With side-stay angles: the torus curves from the crossings on every
     slice's diagrams in V (diagrams_on; large_loads: the loads the large
     part reached).  From the lightest load up, each crossing that no curve
@@ -114,7 +118,7 @@ def found_curves(large_loads):
     return {"curves": stored["torus"], "tongue": stored["tongue"], "points": points}
 
 
-def torus_curves(large):
+def torus_curves(large: Mapping[str, Any]) -> Dict[str, Any]:
     """A part, after the large part (`large`: its result): the torus
     (Neimark-Sacker) curve of the
     large-amplitude family in (V, F*) and the torus points off it:
@@ -135,7 +139,7 @@ def torus_curves(large):
             "points": points}
 
 
-def tongue_curve(part):
+def tongue_curve(part: str) -> Dict[str, Any]:
     """A part, after the large part: the torus curve of another Floquet
     pair, an edge of a tongue of instability left of the torus curve,
     continued from the torus point TONGUE_EDGES[part] of the large part's
@@ -150,7 +154,7 @@ def tongue_curve(part):
 BEYOND = 1.1 * V_MAX   # a slice that no torus curve crosses below V_MAX
 
 
-def torus_speed(edge_curves, Fstar):
+def torus_speed(edge_curves: Sequence[Mapping[str, Any]], Fstar: float) -> float:
     """The lowest speed at which a torus curve crosses the load Fstar (where
     the last stable large-amplitude orbit is lost, at the lightest loads),
     BEYOND if none does."""
