@@ -139,7 +139,7 @@ def at(rho: float, mu: float) -> Tuple[geometry.Geometry, Dict[str, float]]:
     return geometry.Geometry(rho, mu, EOM), geometry.model_angles(rho, mu, float(EOM))
 
 
-def problem(point):
+def problem(point: Tuple[float, float]) -> Optional[str]:
     """Why the grid point (rho, mu) cannot be run, or None."""
     rho, mu = point
     try:

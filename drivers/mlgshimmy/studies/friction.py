@@ -31,7 +31,7 @@ frequency at CHECK_V set against the settled simulated stick-slip there.
 from __future__ import annotations
 
 import math
-from typing import Any, Dict, List, Mapping, Optional, Tuple
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
@@ -152,7 +152,7 @@ def fold_in_friction(rundir: str, tag: str, orbit: Any) -> Any:
     return fold, level[0]
 
 
-def orbits_at_speeds(rundir, orbit):
+def orbits_at_speeds(rundir: str, orbit: Any) -> Dict[str, Dict[str, float]]:
     """The orbit at CHECK_M (and V0) continued in V both ways: {V: (psi_amp
     [rad], freq [Hz])} at each of CHECK_V, the first met from V0."""
     found = {V0: (orbit["psi_amp"], orbit["freq"])}
@@ -172,7 +172,7 @@ def orbits_at_speeds(rundir, orbit):
     return {str(v): {"psi_amp": float(found[v][0]), "freq": float(found[v][1])} for v in CHECK_V}
 
 
-def stick_slip(V, psi0, values):
+def stick_slip(V: float, psi0: float, values: Mapping[str, float]) -> Dict[str, Any]:
     """The exact Coulomb law (friction_law 1) simulated from straight rolling
     with psi displaced by psi0, SETTLE s: the settled shimmy's half
     peak-to-peak psi [rad] and frequency [Hz] over the last second, and the
@@ -243,7 +243,7 @@ def case(tag: str, yfp: float, v_fric: float) -> Dict[str, Any]:
             "at_check_m": checked}
 
 
-def torsional_critical(values):
+def torsional_critical(values: Mapping[str, float]) -> float:
     """2 sqrt(k_tlk r_tlk^2 I_psi) [N m s/rad]: the twist's critical damping
     with the links engaged, at straight rolling."""
     model = mlgmodel.Model("figures", V=V0, **values)
@@ -260,7 +260,7 @@ def equivalent_damping_ratio(values: Mapping[str, float], moment: float, amplitu
     return 4.0 * moment / (math.pi * omega * amplitude) / torsional_critical(values)
 
 
-def kappa_against_friction():
+def kappa_against_friction() -> List[Dict[str, Any]]:
     """Eq. (17)'s kappa* (shared.kappa_criterion.criterion) with the regularised
     friction at each damping ratio of KAPPA_ZETA: [{zeta, c_eq, M_fric,
     kappa, Fstar, V, mode}]."""
@@ -285,7 +285,7 @@ def cases() -> Dict[str, Tuple[float, float]]:
     return out
 
 
-def exact_check(ladder):
+def exact_check(ladder: Sequence[Mapping[str, Any]]) -> Dict[str, Dict[str, Any]]:
     """The simulator's exact stick-slip at CHECK_M and each of CHECK_V, from
     the finest rung's orbit amplitude: {V: {psi_amp, freq, sticks}}."""
     finest = min(ladder, key=lambda c: c["v_fric"])
@@ -303,7 +303,7 @@ def compute() -> Dict[str, Any]:
             "kappa": kappa_against_friction()}
 
 
-def check_rows(result):
+def check_rows(result: Mapping[str, Any]) -> List[Tuple[float, float, float, float]]:
     """[(V, v_fric, relative amplitude difference, relative frequency
     difference)] of every rung against the exact stick-slip."""
     rows = []
@@ -339,7 +339,7 @@ def numbers(result: Mapping[str, Any]) -> Dict[str, Optional[float]]:
     return out
 
 
-def conclusions(result):
+def conclusions(result: Mapping[str, Any]) -> List[str]:
     """What the friction does to the paper's conclusions, in the result's
     numbers: the lines the report shows first."""
     finest = min((c for c in result["cases"] if c["yfp"] == 1.0), key=lambda c: c["v_fric"])

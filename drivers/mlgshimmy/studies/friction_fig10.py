@@ -12,7 +12,7 @@ isolated family (the fold curves of make friction).
 """
 from __future__ import annotations
 
-from typing import Any, Dict
+from typing import Any, Dict, Mapping
 
 import matplotlib.pyplot as plt
 
@@ -46,7 +46,7 @@ COLUMNS = ("V", "psi_amp", "freq")
 V_LOW = 50.0               # m/s: the panels' range, the low-speed shimmy and S
 
 
-def level(moment):
+def level(moment: float) -> Dict[str, Any]:
     """Fig. 10's diagram at M_fric = moment: its branches, Hopf points by
     name and folds of orbits (V, Hz)."""
     values = {**CONDITIONS, "M_fric": moment, "v_fric": V_FRIC, **gear.parameters()}
@@ -66,7 +66,7 @@ def compute() -> Dict[str, Any]:
     return {"levels": [level(m) for m in LEVELS]}
 
 
-def numbers(result):
+def numbers(result: Mapping[str, Any]) -> Dict[str, float]:
     """{quantity: value}: each level's Hopf points (with their criticality)
     and folds of orbits."""
     out = {}
@@ -80,7 +80,7 @@ def numbers(result):
     return out
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     paper.report("friction_fig10", numbers(result))
     levels = result["levels"]
     fig, axes = plt.subplots(1, len(levels), figsize=(4.2 * len(levels), 4.4), sharey=True)

@@ -105,7 +105,7 @@ def varied(name: str, factor: float) -> gear.Gear:
     return gear.Gear(base.geometry, base.overlay + ((name, value),))
 
 
-def problem(point):
+def problem(point: Tuple[str, float]) -> Optional[str]:
     """Why the variation (parameter, factor) cannot be run, or None."""
     name, factor = point
     try:

@@ -22,7 +22,7 @@ F* = 1, y_fp = 1 mm.
 """
 from __future__ import annotations
 
-from typing import Any, Dict, Mapping
+from typing import Any, Dict, List, Mapping, Sequence, Tuple
 
 import numpy
 
@@ -63,7 +63,8 @@ COLUMNS = ("V", "psi_amp", "freq")
 ZOOM_V = 160.0                  # m/s: panel (a2)'s range
 
 
-def stability_mask(bd, branch, model):
+def stability_mask(bd: Any, branch: Any,
+                   model: Any) -> Tuple[numpy.ndarray, List[Tuple[float, str, float, float]]]:
     """(stable per point, [(V, kind, V before, V after)] of its changes): the
     monodromy's verdict at every saved solution, a change placed at the
     fold (LP) between two verdicts that differ, else midway, its kind from
@@ -101,7 +102,7 @@ def stability_mask(bd, branch, model):
     return mask, changes
 
 
-def orbit_branches(rundir, family, values):
+def orbit_branches(rundir: str, family: str, values: Mapping[str, float]) -> Dict[str, Any]:
     """One family of orbits (FAMILIES), from its simulated orbit up and down
     in V: its modes, stored branches, folds, grazings, stability changes and
     the solutions at its check speeds."""
@@ -142,7 +143,8 @@ def _sorted(xs, ys):
     return numpy.asarray(xs)[order], numpy.asarray(ys)[order]
 
 
-def check(values, solutions):
+def check(values: Mapping[str, float],
+          solutions: Sequence[Mapping[str, Any]]) -> List[Dict[str, Any]]:
     """The solutions (at the check speeds) against the event-located
     simulation there:
     [{V, AUTO's and the simulation's psi amplitude and frequency, relative
@@ -162,7 +164,7 @@ def check(values, solutions):
     return rows
 
 
-def rolling(values):
+def rolling(values: Mapping[str, float]) -> Dict[str, Any]:
     """Straight rolling of eq. (14): its Hopf points by name and the speeds
     where it is stable."""
     law = segmented.law14(values)
@@ -211,7 +213,7 @@ def text(result: Mapping[str, Any]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
     from mlgshimmy.shared import draw

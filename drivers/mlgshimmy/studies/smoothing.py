@@ -36,7 +36,7 @@ OVERLAY_SPEEDS are kept for the overlay figure (smoothing_fig10.png).
 """
 from __future__ import annotations
 
-from typing import Any, Dict, Mapping, Optional
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
@@ -127,7 +127,8 @@ def kind(quantity: str) -> str:
             "T": "torus"}.get(quantity[0], "orbit")
 
 
-def simulated(model, speed, ratio):
+def simulated(model: Mapping[str, Any], speed: float,
+              ratio: Optional[float]) -> Tuple[float, float]:
     orbit = simulator.simulate(None, "--V", speed, *SIMULATION, params=model)
     print(f"smoothing: eps/y_fp = {ratio if ratio else 0:g}, V = {speed:g} m/s: "
           f"psi amplitude {orbit['psi_amplitude_rad']:.10e} rad, "
@@ -135,7 +136,7 @@ def simulated(model, speed, ratio):
     return orbit["psi_amplitude_rad"], orbit["frequency_hz"]
 
 
-def rolling_bounds(model):
+def rolling_bounds(model: Mapping[str, Any]) -> Tuple[Optional[float], Optional[float]]:
     """Fig. 12's (a_12, b_12) bounds on straight rolling at A12_SPEED
     (spectrum.stable_before_hopf), its state continued from zero freeplay
     (rolling_state.rolling_state); (None, None) without one, and a_12 None
@@ -152,7 +153,7 @@ def rolling_bounds(model):
     return (None if found[0] == A12_GRID[0] else found[0]), found[1]
 
 
-def allowed(model, ratio):
+def allowed(model: Mapping[str, Any], ratio: float) -> Dict[str, float]:
     """Eq. (17) by the shared criterion, eps = ratio x y_fp (eq. 14: eps
     unused): {KAPPA, ALLOWED}."""
     at = {**gear.parameters(), "freeplay_law": model["freeplay_law"]}
@@ -163,7 +164,8 @@ def allowed(model, ratio):
     return {KAPPA: found["kappa"], ALLOWED: found["kappa"] * eps}
 
 
-def diagram(model, ratio):
+def diagram(model: Mapping[str, Any],
+            ratio: float) -> Tuple[List[Tuple[float, int]], Dict[str, Any]]:
     """Fig. 10's diagram at this smoothing on TORUS_MESH: (its torus
     points, the diagram stored for the overlay)."""
     rundir = paths.rundir(f"{FIGURE}/r{ratio:g}")
@@ -210,7 +212,8 @@ def answers(ratio: Optional[float]) -> Dict[str, Optional[float]]:
     return out, stored
 
 
-def fitted(quantity, limit, column):
+def fitted(quantity: str, limit: Optional[float], column: Sequence[Optional[float]]
+           ) -> Tuple[Optional[float], Optional[Dict[str, Any]], str]:
     """(X(0) used, fit or None, how X(0) is known): the computed limit, or
     for the torus points the one fitted (convergence.extrapolated)."""
     near = [(r, x) for r, x in zip(RATIOS, column) if r <= ASYMPTOTIC and x is not None]
@@ -235,7 +238,8 @@ def compute() -> Dict[str, Any]:
                     simulated_limit["orbits"])
 
 
-def assemble(limit, smoothed, overlay, limit_orbits):
+def assemble(limit: Mapping[str, Any], smoothed: Any, overlay: Any,
+             limit_orbits: Any) -> Dict[str, Any]:
     """The result from the answers at the limit and at RATIOS: the table
     (X(0), X(eps) - X(0), the fit), its numbers for the reference set, the
     overlay's diagrams and eq. (14)'s orbits."""
@@ -281,7 +285,7 @@ def text(result: Mapping[str, Any]) -> str:
                                            else "") + f"\n{body}\n")
 
 
-def error_plot(result):
+def error_plot(result: Mapping[str, Any]) -> None:
     import matplotlib.pyplot as plt
     from mlgshimmy.shared import draw
 
@@ -306,7 +310,7 @@ def error_plot(result):
     draw.save(fig, FIGURE)
 
 
-def overlay_plot(result):
+def overlay_plot(result: Mapping[str, Any]) -> None:
     """Fig. 10's diagram at each eps of OVERLAY in one colour each, as
     Fig. 10 draws it (amplitude, its zoom on small amplitudes, frequency),
     eq. (14)'s simulated orbits as points."""

@@ -13,7 +13,7 @@ speeds do not depend on y_fp at all, and its orbits scale with y_fp.
 """
 from __future__ import annotations
 
-from typing import Any, Dict
+from typing import Any, Dict, Mapping, Optional, Tuple
 
 import numpy
 
@@ -44,13 +44,13 @@ LIMIT_FREEPLAYS = (0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0)
 SIMULATION = ("--t-end", 16, "--dt-out", 1e-5, "--rtol", 1e-10, "--atol", 1e-12)
 
 
-def seeds(eps):
+def seeds(eps: float) -> Tuple[float, ...]:
     """Fig. 14's seed freeplays (1 and 0.15 mm at eps = 0.1 mm) at the same
     eps / y_fp, within the curves' range."""
     return tuple(min(yfp_runs.YFP_MAX, y * eps / 0.1) for y in (1.0, 0.15))
 
 
-def orbit_curve(rundir, eps, model):
+def orbit_curve(rundir: str, eps: float, model: Mapping[str, Any]) -> Optional[Dict[str, list]]:
     """The stable orbit at ORBIT_SPEED of the diagram at the larger seed
     freeplay, continued in y_fp (stored as yfp_stored.stored_orbits does);
     None if that diagram has no stable orbit there."""
@@ -96,7 +96,7 @@ def compute() -> Dict[str, Any]:
     return out
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
     from mlgshimmy.shared import draw

@@ -75,7 +75,7 @@ def parameters(rho: float, mu: float, eom_terms: int = 2) -> Dict[str, float]:
     return {"Fstar": 1.0, "yfp": 0.0, **geometry.model_angles(rho, mu, eom_terms)}
 
 
-def problem(point):
+def problem(point: Tuple[float, float]) -> Optional[str]:
     """Why the grid point (rho, mu) cannot be run, or None."""
     rho, mu = point
     try:

@@ -66,7 +66,7 @@ def grid(args: Any) -> List[Tuple[float, float]]:
     return [(v, f) for f, v in jobgrid.plane(fstars, vs)]
 
 
-def problem(point):
+def problem(point: Tuple[float, float]) -> Optional[str]:
     """Why the cell (V, F*) cannot be run, or None: a 1 ms run validates the
     parameters and finds the equilibrium."""
     v, fstar = point
