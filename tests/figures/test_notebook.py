@@ -1,7 +1,6 @@
 """The drivers from a notebook (#40): the model's vector field, frequencies
-in Hz, "did you mean" on a misspelt name, type hints on the modules a user
-calls, and `make venv` (or its one-sentence refusal)."""
-import ast
+in Hz, "did you mean" on a misspelt name, and `make venv` (or its
+one-sentence refusal); the type hints: tests/release/test_type_hints.py."""
 import os
 import subprocess
 import sys
@@ -11,12 +10,6 @@ import pytest
 
 from helpers import ROOT
 from mlgshimmy.shared import mlgmodel, spectrum
-
-# The modules a notebook user calls (docs/auto-python.md, "From a notebook")
-# that carry hints on every public function (naming, lyapunov, freeplay and
-# simulator were reworked on main meanwhile and do not yet)
-TYPED = ["mlgmodel", "spectrum", "floquet", "rolling", "domain", "suggest"]
-
 
 def test_rhs_vanishes_at_straight_rolling_and_is_the_jacobians_f():
     model = mlgmodel.Model(Fstar=0.2, V=300.0, yfp=1.0)
@@ -55,22 +48,6 @@ def test_stability_changes_give_hertz_as_hopf_scan_does():
     eig = spectrum.eigenvalues(mlgmodel.Model(V=V, Fstar=1.0, yfp=0.0))
     assert hz == pytest.approx(numpy.min(numpy.abs(eig.imag[numpy.argsort(abs(eig.real))[:2]]))
                                / (2 * numpy.pi), rel=1e-6)
-
-
-def _untyped(path):
-    tree = ast.parse(open(path).read())
-    for node in tree.body + [n for c in tree.body if isinstance(c, ast.ClassDef) for n in c.body]:
-        if isinstance(node, ast.FunctionDef) and not node.name.startswith("_"):
-            a = node.args
-            args = [x for x in a.posonlyargs + a.args + a.kwonlyargs if x.arg not in ("self", "cls")]
-            if node.returns is None or any(x.annotation is None for x in args):
-                yield f"{os.path.basename(path)}: {node.name}"
-
-
-def test_the_notebook_modules_are_typed():
-    shared = os.path.join(ROOT, "drivers", "mlgshimmy", "shared")
-    assert [f for m in TYPED for f in _untyped(os.path.join(shared, m + ".py"))] == []
-    assert os.path.exists(os.path.join(ROOT, "drivers", "mlgshimmy", "py.typed"))
 
 
 def _make_venv(tmp_path, python):
