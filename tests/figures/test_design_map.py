@@ -15,6 +15,7 @@ import subprocess
 import sys
 
 import matplotlib
+import numpy
 import pytest
 
 import helpers
@@ -221,6 +222,65 @@ def test_summary_writes_the_table_from_the_grids_records(tmp_path, monkeypatch):
         assert len(boxes) == 1 and boxes[0].get_xy() == pytest.approx((1 - 0.44, -0.44))
     labels = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "your gear rho = 10, mu = 3 deg (nearest grid point 10, 0)" in labels
+
+
+@pytest.mark.parametrize("largest, limit", [(0.0, 5.0), (5.0, 5.0), (5.01, 10.0), (15.0, 20.0),
+                                            (49.0, 50.0), (446.0, 50.0)])
+def test_a_shared_scale_of_changes_takes_the_least_step_that_holds_the_largest(largest, limit):
+    """angle_map.change_limit: the least of 5, 10, 20, 50 % holding the
+    largest |change| over all maps, 50 % beyond (the colours saturate);
+    non-finite changes (a value that vanished) do not count."""
+    from mlgshimmy.shared.draw import angle_map
+    maps = [numpy.array([[1.0, -largest], [numpy.nan, 0.0]]), numpy.full((2, 2), numpy.nan),
+            numpy.array([[0.5 * largest]])]
+    assert angle_map.CHANGE_STEPS == (5.0, 10.0, 20.0, 50.0)
+    assert angle_map.change_limit(maps) == limit
+
+
+def test_the_changes_are_from_the_paper_s_geometry_else_from_the_grid_s_median():
+    """Each quantity but the links' positions as its change in % from
+    rho = mu = 0; without that point in the grid, from its median; NaN where
+    the value vanished."""
+    cells = [record(0.0, 0.0, H1=2.0, S=40.0), record(10.0, 0.0, H1=2.3, S=40.0),
+             record(20.0, 0.0, H1=None, S=36.0)]
+    change, against = design_map.changes(cells, [0.0, 10.0, 20.0], [0.0])
+    assert against == "the paper's geometry"
+    assert set(change) == {k for k, _, _, _ in design_map.QUANTITIES} - set(design_map.POSITION)
+    assert change["H1"][0, :2] == pytest.approx([0.0, 15.0]) and numpy.isnan(change["H1"][0, 2])
+    assert change["S"][0] == pytest.approx([0.0, 0.0, -10.0])
+    change, against = design_map.changes(cells[1:], [10.0, 20.0], [0.0])
+    assert against == "the grid's median"
+    assert change["S"][0] == pytest.approx([100 * 2 / 38, -100 * 2 / 38])
+
+
+def test_every_panel_shares_one_of_two_colour_scales(tmp_path, monkeypatch):
+    """The map's twelve panels: the ten changes on one scale -L..L (L = 20 %
+    here: H1 changes by 15 %), the two link positions on -1..1; one colour
+    bar each; the cells hold the values (not the changes), in one font size."""
+    from mlgshimmy.shared import draw
+    monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
+    saved = {}
+    monkeypatch.setattr(draw, "save", lambda fig, name: saved.update(fig=fig))
+    cells = [record(0.0, 0.0, H1=2.0, ytlk_ratio=0.0), record(10.0, 0.0, H1=2.3, ytlk_ratio=-0.7),
+             record(0.0, 10.0, H1=None, ytlk_ratio=0.3), record(10.0, 10.0, H1=2.1, S=0.95)]
+    design_map.plot(cells)
+    fig = saved["fig"]
+    titles = {title: key for key, (title, _) in design_map.PANELS.items()}
+    panels = {titles[ax.get_title()]: ax for ax in fig.axes if ax.get_title() in titles}
+    assert set(panels) == {key for key, _, _, _ in design_map.QUANTITIES}
+    norms = {key: ax.images[0].norm for key, ax in panels.items()}
+    change = [norms[k] for k in norms if k not in design_map.POSITION]
+    position = [norms[k] for k in design_map.POSITION]
+    assert all(n is change[0] for n in change) and all(n is position[0] for n in position)
+    assert (change[0].vmin, change[0].vmax) == (-20.0, 20.0)
+    assert (position[0].vmin, position[0].vmax) == (-1.0, 1.0)
+    bars = [ax for ax in fig.axes if ax not in panels.values() and ax.get_visible()]
+    assert sorted(ax.get_ylabel() or ax.get_xlabel() for ax in bars) == [
+        "change from the paper's geometry [%]",
+        r"links' position $y_{tlk}/y_{fp}$: $\pm$1 against a side of the freeplay gap"]
+    h1 = sorted(t.get_text() for t in panels["H1"].texts)
+    assert h1 == ["2.00", "2.10", "2.30", "none"]
+    assert len({t.get_fontsize() for ax in panels.values() for t in ax.texts}) == 1
 
 
 def test_a_finished_grid_is_done_for_status_missing_and_submit(tmp_path, monkeypatch):

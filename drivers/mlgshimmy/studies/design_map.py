@@ -405,61 +405,124 @@ def summary(points: Sequence[Tuple[float, float]], results: Sequence[Mapping[str
 
 
 SWITCH_FLAGGED = ("kappa", "kappa_yfp", "kappa_Fstar")   # panels hatched where on_switch
+# each panel's title in the reader's words and its cells' format (fewer
+# digits than the table's, so that they can be read; "none" where a value is
+# missing, a vanished Hopf point too), by QUANTITIES' key
+PANELS = {"critical_V": ("critical speed without freeplay [m/s]", ".1f"),
+          "H1": ("H1 [m/s]", ".2f"), "H2": ("H2 [m/s]", ".1f"), "H3": ("H3 [m/s]", ".1f"),
+          "S": ("fold S [m/s]", ".1f"), "bistable_width": ("bistable band H3 - S [m/s]", ".1f"),
+          "kappa": (r"$\kappa^*$ (eq. 17)", ".3f"),
+          "kappa_yfp": (r"allowed freeplay $y_{fp}$ [mm]", ".4f"),
+          "kappa_Fstar": (r"load $F^*$ that sets $\kappa^*$", ".2f"),
+          "off_switch_yfp": (r"allowed $y_{fp}$ away from the stage switch [mm]", ".4f"),
+          "ytlk_ratio": (r"links' position $y_{tlk}/y_{fp}$ at $F^*$ = 1", "+.2f"),
+          "ytlk_ratio_kappa": (r"links' position $y_{tlk}/y_{fp}$ at $\kappa^*$", "+.2f")}
+POSITION = ("ytlk_ratio", "ytlk_ratio_kappa")   # on a scale of their own: -1, 1 the gap's sides
+
+
+def grid_of(cells: Sequence[Mapping[str, Any]], key: str, rhos: List[float],
+            mus: List[float]) -> numpy.ndarray:
+    """One quantity as [mu, rho] (NaN where it is None)."""
+    values = numpy.full((len(mus), len(rhos)), numpy.nan)
+    for c in cells:
+        if c.get(key) is not None:
+            values[mus.index(c["mu_deg"]), rhos.index(c["rho_deg"])] = c[key]
+    return values
+
+
+def changes(cells: Sequence[Mapping[str, Any]], rhos: List[float],
+            mus: List[float]) -> Tuple[Dict[str, numpy.ndarray], str]:
+    """({key: [mu, rho] change in %}, what from): each quantity but the
+    links' positions against the paper's geometry rho = mu = 0 where the
+    grid has it, else against its median over the grid; NaN throughout
+    where that reference is zero or missing."""
+    baseline = 0.0 in rhos and 0.0 in mus
+    out = {}
+    for key, _, _, _ in QUANTITIES:
+        if key in POSITION:
+            continue
+        values = grid_of(cells, key, rhos, mus)
+        finite = values[numpy.isfinite(values)]
+        ref = (values[mus.index(0.0), rhos.index(0.0)] if baseline
+               else numpy.median(finite) if finite.size else numpy.nan)
+        out[key] = (100.0 * (values - ref) / abs(ref) if numpy.isfinite(ref) and ref != 0
+                    else numpy.full_like(values, numpy.nan))
+    return out, ("the paper's geometry" if baseline else "the grid's median")
 
 
 def plot(cells: Sequence[Mapping[str, Any]], mark: Optional[Tuple[float, float]] = None) -> None:
+    """Every quantity of QUANTITIES as a map over (rho, mu), its values in
+    the cells, coloured on two scales that the panels share (the palette's
+    diverging map): the change from the paper's geometry in %, limited by
+    angle_map.change_limit, and the links' position in the freeplay gap
+    from -1 to 1 (against its sides)."""
     import matplotlib.pyplot as plt
+    from matplotlib.colors import Normalize
     from matplotlib.patches import Patch, Rectangle
 
     from mlgshimmy.shared import draw
-    from mlgshimmy.shared.draw.angle_map import angle_map
+    from mlgshimmy.shared.draw.angle_map import angle_map, change_limit
+    palette = draw.palette
     rhos = sorted({c["rho_deg"] for c in cells})
     mus = sorted({c["mu_deg"] for c in cells})
     yours = nearest(cells, mark)
-    fig, axes_ = plt.subplots(3, 4, figsize=(17, 11))
-    for ax, (key, heading, unit, fmt) in zip(axes_.flat, QUANTITIES):
-        values = numpy.full((len(mus), len(rhos)), numpy.nan)
-        for c in cells:
-            if c.get(key) is not None:
-                values[mus.index(c["mu_deg"]), rhos.index(c["rho_deg"])] = c[key]
-        finite = values[numpy.isfinite(values)]
-        diverging = key.startswith("ytlk")
-        limit = max(numpy.max(numpy.abs(finite)), 1e-12) if finite.size else 1.0
-        missing = "vanished" if key in HOPF_NAMES else "none"
-        mesh = angle_map(ax, rhos, mus, values,
-                         lambda v: format(v, fmt.lstrip("+")) if numpy.isfinite(v) else missing,
-                         draw.palette.DIVERGING_MAP if diverging else draw.palette.SEQUENCE_MAP,
-                         vmin=-limit if diverging else None, vmax=limit if diverging else None)
+    change, against = changes(cells, rhos, mus)
+    limit = change_limit(change.values())
+    scales = {"change": Normalize(-limit, limit), "position": Normalize(-1.0, 1.0)}
+    numbers = {key: grid_of(cells, key, rhos, mus) for key, _, _, _ in QUANTITIES}
+
+    def text(key: str, value: float) -> str:
+        return format(value, PANELS[key][1]) if numpy.isfinite(value) else "none"
+
+    # one size for every cell's number, the longest filling its cell's width
+    # (a panel is about 200 pt wide)
+    longest = max(len(text(key, v)) for key, values in numbers.items() for v in values.flat)
+    fontsize = min(12.0, 300.0 / (len(rhos) * longest))
+    fig, axes_ = plt.subplots(3, 4, figsize=(15, 11.5), constrained_layout=True)
+    meshes = {}
+    for ax, (key, _, _, _) in zip(axes_.flat, QUANTITIES):
+        scale = "position" if key in POSITION else "change"
+        meshes[scale] = angle_map(ax, rhos, mus, numbers[key] if scale == "position"
+                                  else change[key], functools.partial(text, key),
+                                  palette.DIVERGING_MAP, norm=scales[scale],
+                                  numbers=numbers[key], fontsize=fontsize)
         for c in cells:
             j, i = rhos.index(c["rho_deg"]), mus.index(c["mu_deg"])
             if key in SWITCH_FLAGGED and c["on_switch"]:
                 ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="//",
-                                       ec=draw.palette.GUIDE, lw=0))
+                                       ec=palette.GUIDE, lw=0))
             if c is yours:
                 ax.add_patch(Rectangle((j - 0.44, i - 0.44), 0.88, 0.88, fill=False, lw=2.2,
-                                       ec=draw.palette.LIFTOFF, ls="--"))
+                                       ec=palette.LIFTOFF, ls="--"))
         if 0.0 in rhos and 0.0 in mus:     # the paper's geometry
             ax.add_patch(Rectangle((rhos.index(0.0) - 0.5, mus.index(0.0) - 0.5), 1, 1,
                                    fill=False, lw=2.2, ec=draw.NEUTRAL))
-        ax.set_title(heading + (f" [{unit}]" if unit else ""), fontsize=9)
-        fig.colorbar(mesh, ax=ax, fraction=0.046, pad=0.03)
+        ax.set_title(PANELS[key][0], fontsize=11)
     for ax in axes_.flat[len(QUANTITIES):]:
         ax.set_visible(False)
+    panels = dict(zip([key for key, _, _, _ in QUANTITIES], axes_.flat))
+    fig.colorbar(meshes["change"], ax=[ax for key, ax in panels.items() if key not in POSITION],
+                 shrink=0.6, extend="both", label=f"change from {against} [%]")
+    fig.colorbar(meshes["position"], ax=[panels[key] for key in POSITION], location="bottom",
+                 shrink=0.8, label=r"links' position $y_{tlk}/y_{fp}$: $\pm$1 against a side "
+                                   "of the freeplay gap")
     legend = [Patch(fill=False, ec=draw.NEUTRAL, lw=2.2,
-                    label="the paper's geometry rho = mu = 0"),
-              Patch(fill=False, hatch="//", ec=draw.palette.GUIDE,
-                    label="kappa* set on the oleo's stage switch (read the off-switch value)")]
+                    label=r"the paper's geometry $\rho = \mu = 0$"),
+              Patch(fill=False, hatch="//", ec=palette.GUIDE,
+                    label=r"$\kappa^*$ set on the oleo's stage switch (read the value away "
+                          "from it)")]
     if yours is not None:
         at_point = (yours["rho_deg"], yours["mu_deg"]) == tuple(mark)
-        legend.append(Patch(fill=False, ec=draw.palette.LIFTOFF, ls="--", lw=2.2, label=(
+        legend.append(Patch(fill=False, ec=palette.LIFTOFF, ls="--", lw=2.2, label=(
             f"your gear rho = {mark[0]:g}, mu = {mark[1]:g} deg" + ("" if at_point else
             f" (nearest grid point {yours['rho_deg']:g}, {yours['mu_deg']:g})"))))
-    fig.legend(handles=legend, loc="lower center", ncol=len(legend), fontsize=9, frameon=False)
+    fig.legend(handles=legend, loc="upper center", bbox_to_anchor=(0.5, 0.0),
+               ncol=len(legend), fontsize=10, frameon=False)
     fig.suptitle(f"Design map over the side-stay angles ({geometry.EOM_WORDS[2]}, our "
-                 "calibrated parameter set; "
-                 r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm, $F^*$ = 1 unless stated); "
-                 r"allowed $y_{fp}$ = $\kappa^*\epsilon$ at $\epsilon$ = 0.1 mm")
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+                 "calibrated parameter set;\n"
+                 r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm, $F^*$ = 1 unless stated; "
+                 r"allowed $y_{fp}$ = $\kappa^*\epsilon$ at $\epsilon$ = 0.1 mm); the cells "
+                 "hold the values, the colours compare them")
     draw.save(fig, "design_map")
 
 

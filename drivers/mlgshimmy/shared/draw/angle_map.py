@@ -1,28 +1,35 @@
 """A quantity over a (rho, mu) grid of side-stay angles as labelled cells: the
-sweep's critical speed and each panel of the design map."""
+sweep's critical speed and each panel of the design map; and the limit of a
+colour scale of changes that several such maps share."""
 from __future__ import annotations
 
-from typing import Any, Callable, Optional, Sequence
+from typing import Any, Callable, Iterable, Optional, Sequence
 
 import numpy
 
 from mlgshimmy.shared.draw import palette
 
+CHANGE_STEPS = (5.0, 10.0, 20.0, 50.0)   # [%]: the limits a shared scale of changes takes
+
 
 def angle_map(ax: Any, rhos: Sequence[float], mus: Sequence[float], values: numpy.ndarray,
               text: Callable[[float], str], cmap: Any = palette.SEQUENCE_MAP,
-              vmin: Optional[float] = None, vmax: Optional[float] = None) -> Any:
+              norm: Any = None, numbers: Optional[numpy.ndarray] = None,
+              fontsize: float = 8) -> Any:
     """values[i, j] at (rhos[j], mus[i]) [deg] as one cell each (evenly
-    spaced whatever the angles' spacing), each labelled text(value) in a
+    spaced whatever the angles' spacing), coloured by `norm` (a matplotlib
+    Normalize, which several maps may share; default: the values' range)
+    and labelled text(number), numbers[i, j] (default: the values), in a
     colour readable on its fill (white where the value is not finite).
     Returns the image, for a colour bar."""
-    mesh = ax.imshow(values, origin="lower", aspect="auto", cmap=cmap, vmin=vmin, vmax=vmax,
+    numbers = values if numbers is None else numbers
+    mesh = ax.imshow(values, origin="lower", aspect="auto", cmap=cmap, norm=norm,
                      extent=(-0.5, len(rhos) - 0.5, -0.5, len(mus) - 0.5))
     for i in range(len(mus)):
         for j in range(len(rhos)):
             v = values[i, j]
             fill = mesh.cmap(mesh.norm(v)) if numpy.isfinite(v) else "white"
-            ax.text(j, i, text(v), ha="center", va="center", fontsize=8,
+            ax.text(j, i, text(numbers[i, j]), ha="center", va="center", fontsize=fontsize,
                     color=palette.text_on(fill))
     ax.set_xticks(range(len(rhos)), [f"{r:g}" for r in rhos])
     ax.set_yticks(range(len(mus)), [f"{m:g}" for m in mus])
@@ -30,3 +37,12 @@ def angle_map(ax: Any, rhos: Sequence[float], mus: Sequence[float], values: nump
     ax.set_ylabel(r"$\mu$ [deg]")
     ax.grid(False)
     return mesh
+
+
+def change_limit(changes: Iterable[numpy.ndarray]) -> float:
+    """The limit L [%] of one scale -L..L shared by maps of changes: the
+    least of CHANGE_STEPS that holds the largest finite |change|, else the
+    last (beyond it the colours saturate)."""
+    largest = max((float(numpy.max(numpy.abs(c[numpy.isfinite(c)])))
+                   for c in changes if numpy.isfinite(c).any()), default=0.0)
+    return next((step for step in CHANGE_STEPS if largest <= step), CHANGE_STEPS[-1])
