@@ -48,10 +48,11 @@ def made_up():
             "stage_switch": [0.63, 0.70], "numbers": {}, "codim2": [], "codim2_notes": [], **ends}
 
 
-def draw_fig11(tmp_path, monkeypatch, mark=None):
-    """Draw the made-up result; (its legends' texts, the overlapping texts,
-    the caption, the PNG).  mark(ax): marks more points before the plot
-    draws (as a figure marking codimension-two points would)."""
+def draw_fig11(tmp_path, monkeypatch, mark=None, result=None):
+    """Draw the made-up result (or `result`); (its legends' texts, the
+    overlapping texts, the caption, the PNG).  mark(ax): marks more points
+    before the plot draws (as a figure marking codimension-two points
+    would)."""
     import matplotlib.pyplot as plt
     monkeypatch.setenv("MLG_RUN_ROOT", str(tmp_path))
     monkeypatch.setattr(fig11_plot.paper, "report", lambda *args, **kw: "")
@@ -72,7 +73,7 @@ def draw_fig11(tmp_path, monkeypatch, mark=None):
         kept["overlaps"] = draw.overlap.overlaps(fig)
         save(fig, name)
     monkeypatch.setattr(draw, "save", keep)
-    fig11_plot.plot(made_up())
+    fig11_plot.plot(made_up() if result is None else result)
     kept["caption"] = (tmp_path / "figures" / fig11_plot.CAPTION).read_text()
     kept["png"] = tmp_path / "figures" / "fig11.png"
     return kept
@@ -123,3 +124,21 @@ def test_a_special_point_marked_gets_its_entry(tmp_path, monkeypatch):
     drawn = draw_fig11(tmp_path, monkeypatch, lambda ax: draw.mark(ax, 100.0, 1.0, "GH"))
     assert [t for t in drawn["legends"][0] if t.startswith("GH: ")] == \
         ["GH: generalised Hopf point (l1 = 0)"]
+
+
+def test_the_region_with_no_shimmy_gets_its_entry_within_the_limit(tmp_path, monkeypatch):
+    """Where no shimmy is stable the map is left white (dotted: straight
+    rolling there; hatched: yawed rolling): its entry comes first among the
+    regions, and with every other kind present the legends still hold at
+    most MAX_ENTRIES, none over other text."""
+    result = made_up()
+    code = numpy.array(result["region_map"]["code"])
+    code[:, V_GRID < 10] = ATTRACTORS["straight"]
+    code[(F_GRID > 0.2) & (F_GRID < 0.4), :] |= ATTRACTORS["yaw"]
+    result["region_map"]["code"] = code.tolist()
+    drawn = draw_fig11(tmp_path, monkeypatch, result=result)
+    assert drawn["legends"][1] == ["white: no shimmy", "low-frequency shimmy",
+                                   "high-frequency shimmy", "dotted: straight rolling too",
+                                   "hatched: yawed rolling too"]
+    assert sum(len(legend) for legend in drawn["legends"]) <= MAX_ENTRIES
+    assert drawn["overlaps"] == []

@@ -144,8 +144,10 @@ def plot(result: Dict[str, Any]) -> None:
     ax.set_ylim(0, F_MAX)
     ax.set_xlabel("V [m/s]")
     ax.set_ylabel(r"$F_z^*$")
+    # the unfilled region (no shimmy: straight or yawed rolling, by its pattern) too
     regions = [(Patch(facecolor=colour, edgecolor=palette.GUIDE, alpha=REGION_ALPHA),
-                fill_words(kinds)) for kinds, colour in fills.items() if kinds]
+                fill_words(kinds) if kinds else f"white: {fill_words(kinds)}")
+               for kinds, colour in fills.items()]
     regions += [(Patch(facecolor="none", edgecolor=palette.NEUTRAL, hatch=PATTERNS[kind]),
                  f"{'dotted' if kind == 'straight' else 'hatched'}: {WORDS[kind]} too")
                 for kind in patterned]
