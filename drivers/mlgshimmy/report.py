@@ -95,7 +95,7 @@ def read_notes(figure: str, root: str) -> List[str]:
         return []
 
 
-def read_summary(figure: str, root: str) -> Optional[List[Tuple[str, float]]]:
+def read_summary(figure: str, root: str) -> Optional[List[Dict[str, Any]]]:
     """Rows of a simulation summary (<fig>/summary.txt: "name value"
     lines, Fig. 8), or None."""
     try:

@@ -4,7 +4,7 @@
 orbits at V = 15, 50, 80, 110 m/s continued in y_fp."""
 from __future__ import annotations
 
-from typing import Any, Dict, Mapping, Optional, Sequence
+from typing import Any, Dict, Mapping, Optional, Sequence, Tuple
 
 import matplotlib.pyplot as plt
 import numpy
@@ -77,7 +77,7 @@ def stable_piece(stable: ArrayLike, start: int) -> numpy.ndarray:
 
 
 def numbers(diagrams: Sequence[Mapping[str, Any]],
-            orbits: Optional[Mapping[str, Any]]) -> Dict[str, Optional[float]]:
+            orbits: Optional[Sequence[Tuple[float, Mapping[str, Any]]]]) -> Dict[str, float]:
     """{quantity: value}: Hopf and fold speeds per y_fp, and per orbit speed
     the slope of psi_amp against y_fp (fit through 0), its largest relative
     residual, the intercept of a free linear fit, and the frequency range."""

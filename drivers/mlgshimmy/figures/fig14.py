@@ -71,7 +71,7 @@ def lowest_orbit(curve: Mapping[str, Any], V: float) -> Tuple[float, str]:
 
 
 def numbers(diagrams: Sequence[Mapping[str, Any]],
-            orbits: Optional[Mapping[str, Any]]) -> Dict[str, Optional[float]]:
+            orbits: Optional[Sequence[Tuple[float, Mapping[str, Any]]]]) -> Dict[str, float]:
     """{quantity: value}: Hopf and fold speeds per y_fp; per orbit speed the
     smallest y_fp the orbits reach and the Hopf points in y_fp there."""
     out = yfp_stored.diagram_numbers(diagrams)

@@ -198,7 +198,7 @@ def torus_icp() -> List[Union[str, int]]:
 
 
 def monodromy_path(sol: Any,
-                   parameter_set: str = "figures") -> Tuple[numpy.ndarray, numpy.ndarray]:
+                   parameter_set: str = "figures") -> Tuple[numpy.ndarray, List[numpy.ndarray]]:
     """The fundamental matrix Phi(t) of the orbit `sol` (an AUTO solution,
     time scaled to [0, 1]) at its stored points: dPhi/dt = T J(u(t)) Phi,
     Phi(0) = I, by RK4 on u interpolated linearly between the points (the

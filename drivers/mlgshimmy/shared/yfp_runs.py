@@ -212,7 +212,7 @@ def orbit_curve(runs: Tuple[Sequence[Any], Sequence[Any]],
 
 
 def window_point_curve(rundir: str, tag: str, yfp: float, Fstar: float, stop: Sequence[float],
-                       dsmax: float = 0.02, **model: Any) -> List[Any]:
+                       dsmax: float = 0.02, **model: Any) -> Dict[str, Any]:
     """The Hopf point of straight rolling at V = V_LIMIT near y_fp = `yfp`
     (eps = 0.1 mm; a window point a or b on V = V_LIMIT) continued by AUTO in
     (F*, y_fp) both ways from `Fstar` to the loads `stop`.  `model`: PAR

@@ -11,7 +11,7 @@ from mlgshimmy.shared.yfp_runs import V_ORBITS, curve_points, diagram_in_V, orbi
 
 
 def stored_orbits(orbits: Mapping[float, Tuple[List[Any], List[Any]]]
-                  ) -> List[Tuple[float, Dict[str, list]]]:
+                  ) -> List[Tuple[float, Dict[str, Any]]]:
     """The orbits of orbits_in_yfp for the cache: [(V, {"yfp", "psi_amp",
     "freq", "stable"})], each joined by orbit_curve."""
     out = []
@@ -81,7 +81,7 @@ def diagram_numbers(diagrams: Sequence[Mapping[str, Any]], prefix: str = "") -> 
 
 
 def stored_curves(curves: Sequence[Tuple[Any, Any]],
-                  columns: Sequence[str] = ("yfp", "V")) -> List[Dict[str, list]]:
+                  columns: Sequence[str] = ("yfp", "V")) -> List[Dict[str, Any]]:
     """Curves (pairs of runs) for the cache: [{column: polyline}]
     (curve_points); "freq" is 1/T along a curve with the period printed."""
     out = []

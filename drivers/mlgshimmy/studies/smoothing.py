@@ -182,7 +182,8 @@ def diagram(model: Mapping[str, Any],
                                for b in jobs.stored(run, yfp_stored.COLUMNS)]}
 
 
-def answers(ratio: Optional[float]) -> Dict[str, Optional[float]]:
+def answers(ratio: Optional[float]
+            ) -> Tuple[Dict[str, Optional[float]], Optional[Dict[str, Any]]]:
     """({quantity: value} at one smoothing (None: the limit), the Fig. 10
     diagram or eq. (14)'s simulated orbits for the overlay)."""
     model = values(ratio)

@@ -102,7 +102,7 @@ def inside(switch: Optional[Tuple[float, float]], Fstar: float) -> bool:
 
 
 def joins_outside(joins: Sequence[Mapping[str, Any]],
-                  switch: Optional[Tuple[float, float]]) -> List[Dict[str, Any]]:
+                  switch: Optional[Tuple[float, float]]) -> List[Mapping[str, Any]]:
     """The joins (mx_ends) with Hopf joins outside the stage-switch window
     `switch` (or None) of kind "hopf_elsewhere": at side-stay angles Hopf
     curves from the slices also meet in pairs at loads away from it

@@ -61,7 +61,7 @@ def yaw_stable(parameter_set: str = "figures") -> numpy.ndarray:
     return yawed.stable_grid(parameter_set, F_GRID, V_GRID, FREEPLAY, **GEOMETRY)
 
 
-def region_map(sr_stable: numpy.ndarray, orbits: Mapping[str, Any],
+def region_map(sr_stable: numpy.ndarray, orbits: Sequence[Tuple[float, Mapping[str, Any]]],
                edge_curves: Sequence[Mapping[str, Any]], yaw: numpy.ndarray,
                lift: Optional[Mapping[str, Any]] = None) -> Tuple[numpy.ndarray, Dict[str, Any]]:
     """(code [F*, V] on F_GRID x V_GRID, check): the regions bounded by the

@@ -31,7 +31,7 @@ def expand(text: str) -> List[int]:
     return indices
 
 
-def parse_job_id(text: str) -> Tuple[Optional[int], Optional[List[int]]]:
+def parse_job_id(text: str) -> Tuple[Optional[str], Optional[List[int]]]:
     """'12_3' -> (12, [3]); '12_[1-4]' -> (12, [1, 2, 3, 4]); '12' -> (12, None)."""
     job, _, indices = text.strip().partition("_")
     if not job.isdigit():

@@ -36,7 +36,7 @@ def _rectangle(centre, along, across, length, width):
 
 
 def plan_state(f: Mapping[str, float], mean_beta: float,
-               scale: Mapping[str, float]) -> Tuple[numpy.ndarray, numpy.ndarray, float]:
+               scale: Mapping[str, float]) -> Tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
     """Plan-view positions [m] (x lateral, y forward) at one frame: the
     axle's centre, its unit vector and the wheels' heading."""
     theta = scale["angle"] * f["psi"]

@@ -3,7 +3,7 @@ orbits continued in y_fp and diagrams in V, from their cached records
 (yfp_stored.stored_orbits, yfp_stored.stored_diagram)."""
 from __future__ import annotations
 
-from typing import Any, Mapping
+from typing import Any, Mapping, Sequence, Tuple
 
 import numpy
 from matplotlib.lines import Line2D
@@ -14,7 +14,8 @@ from mlgshimmy.shared.yfp_runs import V_ORBITS
 ORBIT_COLOURS = dict(zip(V_ORBITS, draw.sequence(len(V_ORBITS))))
 
 
-def orbits_in_yfp(ax_amp: Any, ax_freq: Any, orbits: Mapping[str, Any]) -> None:
+def orbits_in_yfp(ax_amp: Any, ax_freq: Any,
+                  orbits: Sequence[Tuple[float, Mapping[str, Any]]]) -> None:
     """Torsional amplitude [deg] and frequency [Hz] against y_fp of stored
     orbits (stored_orbits; solid stable, dashed unstable), one colour per
     speed; the legend on ax_amp names the speeds and the two styles."""
