@@ -11,6 +11,10 @@ continued by AUTO as curves of Hopf points at V = 120 m/s in (y_fp, F*) as a
 check, with their codimension-two points (shared.codim2).  The regions
 drawn are bounded by the curves a, b, c and the pitchfork; the cells of the
 eigenvalue grid only label them (shared.regions)."""
+from __future__ import annotations
+
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
+
 import matplotlib.pyplot as plt
 import numpy
 from matplotlib.colors import ListedColormap
@@ -64,7 +68,7 @@ LABELS = {"p": "pitchfork", "a_end": "stable again below b: its edges", "next": 
 NAMES = {"a_end": "end of a's window", "next": "next window"}
 
 
-def region(Fstar, kappa, b, **model):
+def region(Fstar: float, kappa: float, b: Optional[float], **model: float) -> int:
     """Index in REGIONS of what straight rolling does for V <= 120 m/s."""
     worst = {band: max(kappa_criterion.growth(Fstar, kappa * freeplay.EPSILON, V, **model)[band]
                        for V in MAP_SPEEDS)
@@ -78,7 +82,7 @@ def region(Fstar, kappa, b, **model):
     return 0 if b is None or kappa * freeplay.EPSILON < b else 1
 
 
-def gap(Fstar, **model):
+def gap(Fstar: float, **model: float) -> Dict[str, Optional[float]]:
     """{"a_end", "next"}: the end of a's window of high-frequency
     instability in y_fp (b itself if straight rolling is not stable again
     below b at every V <= 120) and the start of the next window (None if
@@ -92,7 +96,8 @@ def gap(Fstar, **model):
             "next": windows[1][0] if len(windows) > 1 else None}
 
 
-def auto_check(rundir, points, **model):
+def auto_check(rundir: str, points: Sequence[Mapping[str, Any]],
+               **model: float) -> Tuple[Dict[str, List[Any]], Dict[str, List[Any]]]:
     """a and b continued by AUTO in (y_fp, F*) at V = 120 from F* = 1:
     ({name: [runs]}, {name: [(F*, AUTO's y_fp or RunError, the scan's)]});
     where a run stops, the point is located by AUTO at every scanned load
@@ -126,7 +131,7 @@ def auto_check(rundir, points, **model):
     return curves, values
 
 
-def runs(where="fig18", **model):
+def runs(where: str = "fig18", **model: float) -> Tuple[List[Dict[str, Any]], numpy.ndarray, Any]:
     """(window points per F*, region map, AUTO's check runs)."""
     rundir = paths.rundir(where)
     points = []
@@ -143,14 +148,17 @@ def runs(where="fig18", **model):
     return points, grid, auto_check(rundir, points, **model)
 
 
-def kappa_star(points, **model):
+def kappa_star(points: Sequence[Mapping[str, Any]],
+               **model: float) -> Tuple[float, Dict[str, Any]]:
     """min over F* of the smallest y_fp/eps with unstable straight rolling:
     the grid minimum, refined on a grid 10 times finer around it."""
     return kappa_criterion.kappa_star(lambda F: kappa_criterion.window_points(F, **model), FSTARS,
                                       model, points)
 
 
-def numbers(points, curves, values, kappa, best):
+def numbers(points: Sequence[Mapping[str, Any]], curves: Mapping[str, Any],
+            values: Mapping[str, Any], kappa: float,
+            best: Mapping[str, Any]) -> Dict[str, Optional[float]]:
     out = {"kappa*": kappa, "kappa*: at F*": best["Fstar"], "kappa*: at V [m/s]": best["first_V"]}
     for p in points:
         if round(p["Fstar"] * 10, 6) % 2 == 0:
@@ -177,7 +185,7 @@ def numbers(points, curves, values, kappa, best):
     return out
 
 
-def compute(name="fig18", variant=0):
+def compute(name: str = "fig18", variant: int = 0) -> Dict[str, Any]:
     model = {"strut_variant": float(variant)} if variant else {}
     model.update(gear.parameters())   # the side-stay geometry ({} at the paper's)
     points, grid, (curves, values) = runs(name, **model)
@@ -200,7 +208,7 @@ EDGES = ("a", "b", "c", "p", "a_end", "next")   # the curves bounding the region
 BEYOND = 10.0                  # a point at infinity is drawn this far beyond the plot
 
 
-def edge_curves(points):
+def edge_curves(points: Sequence[Mapping[str, Any]]) -> Dict[str, Tuple[List[float], List[float]]]:
     """The curves a, b, c, p as (y_fp/eps, F*) polylines; a point that does
     not exist (None: no crossing for y_fp up to YFP_MAX, beyond the plot) is
     placed beyond the plot's right edge, so the curve leaves through it."""
@@ -209,7 +217,8 @@ def edge_curves(points):
                     else p[name] / freeplay.EPSILON for p in points], Fs) for name in EDGES}
 
 
-def painted_regions(points, grid, raster_F):
+def painted_regions(points: Sequence[Mapping[str, Any]], grid: numpy.ndarray,
+                    raster_F: numpy.ndarray) -> Tuple[numpy.ndarray, Dict[str, Any]]:
     """[F*, y_fp/eps] on raster_F x RASTER_KAPPA: the region index of each
     piece between the curves a, b, c, p, labelled by the eigenvalue grid's
     cells inside it (regions.paint); and the check of the labels."""
@@ -221,7 +230,7 @@ def painted_regions(points, grid, raster_F):
     return regions.paint(edges, samples)
 
 
-def drawn_values(points, name):
+def drawn_values(points: Sequence[Mapping[str, Any]], name: str) -> numpy.ndarray:
     """y_fp/eps of the curve `name` at each load, NaN where it is not drawn:
     where it does not exist, and a's window's end where it is b (drawn as
     b) but at the loads next to where it is not, so that it meets b."""
@@ -234,7 +243,7 @@ def drawn_values(points, name):
     return ys
 
 
-def plot(result):
+def plot(result: Mapping[str, Any]) -> None:
     paper.report(result["name"], result["numbers"],
                  notes=yfp_codim2.codim2_lines(result["codim2"], "Fstar"))
     points, auto, kappa = result["points"], result["auto"], result["kappa_star"]
