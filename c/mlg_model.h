@@ -136,16 +136,8 @@ int mlg_third_form(const mlg_params *p, const double u[MLG_NX], const double x[M
                    const double y[MLG_NX], const double z[MLG_NX], double C[MLG_NX]);
 
 /* Intermediate quantities of one evaluation, for tests and reports, in SI
- * units.  X(name, n): one double (n = 1) or a tyre pair [0] = L, [1] = R
- * (n = 2).  The struct is generated from this table, and the drivers read
- * the layout through mlg_diagnostic_name / _size. */
-#define MLG_DIAGNOSTICS(X)                                                         \
-    X(F_z, 1) X(F_dyn, 1) X(cos_phi, 1) X(F_keta, 1) X(F_ceta, 1)                  \
-    X(L_beta, 1) X(L_delta, 1) X(I_a, 1) X(I_beta, 1) X(I_delta, 1)                \
-    X(k_delta, 1) X(c_delta, 1) X(r_tlk, 1)                                        \
-    X(F, 2) X(d, 2) X(h, 2) X(L, 2) X(r_eff, 2) X(alpha, 2) X(F_y, 2) X(M_z, 2)    \
-    X(M_kpsi, 1) X(M_cpsi, 1) X(M_psi, 1) X(M_delta, 1) X(M_beta, 1)               \
-    X(m, 1) X(p, 1)                          /* side-stay angles (Fig. 3) */
+ * units: generated from MLG_DIAGNOSTICS (c/mlg_parameters.h); the drivers
+ * read the layout through mlg_diagnostic_name / _size. */
 #define MLG_DIAGNOSTIC_FIELD_1(name) double name;
 #define MLG_DIAGNOSTIC_FIELD_2(name) double name[2];
 typedef struct {

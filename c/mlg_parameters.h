@@ -72,6 +72,18 @@
     X(freq,      FREQ, MLG_PSI,   "Hz",  "frequency 1/T; 0 on equilibria")       \
     X(psi_mean,  MEAN, MLG_PSI,   "rad", "mean torsion: the yaw of off-centre equilibria")
 
+/* Intermediate quantities of one evaluation (mlg_diagnose: the struct
+ * mlg_diagnostics, c/mlg_model.h), filled where the model computes them
+ * (c/vector_field.h).  X(name, n): one double (n = 1) or a tyre pair
+ * [0] = L, [1] = R (n = 2). */
+#define MLG_DIAGNOSTICS(X)                                                         \
+    X(F_z, 1) X(F_dyn, 1) X(cos_phi, 1) X(F_keta, 1) X(F_ceta, 1)                  \
+    X(L_beta, 1) X(L_delta, 1) X(I_a, 1) X(I_beta, 1) X(I_delta, 1)                \
+    X(k_delta, 1) X(c_delta, 1) X(r_tlk, 1)                                        \
+    X(F, 2) X(d, 2) X(h, 2) X(L, 2) X(r_eff, 2) X(alpha, 2) X(F_y, 2) X(M_z, 2)    \
+    X(M_kpsi, 1) X(M_cpsi, 1) X(M_psi, 1) X(M_delta, 1) X(M_beta, 1)               \
+    X(m, 1) X(p, 1)                          /* side-stay angles (Fig. 3) */
+
 #define MLG_CONSTANTS(X)                                                            \
     /* Table 1: geometry */                                                          \
     X(phi0,     -0.1222, "rad",     "initial rake angle")                        \
