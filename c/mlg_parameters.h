@@ -1,4 +1,4 @@
-/* Every parameter of the MLG model, in one place.
+/* Every parameter, measure and diagnostic of the MLG model, in one place.
  *
  * AUTO's PAR array (docs/model.md, section 2.1):
  *   PAR(1-10)   MLG_CONTINUATION_PARAMETERS, in this order (PAR(1) = V, ...):
@@ -7,9 +7,10 @@
  *   PAR(12)     AUTO's (torus angle); never ours.
  *   PAR(13-20)  MLG_SWITCHES with an AUTO slot, and MLG_PAR_CONSTANTS_FILE.
  *   PAR(21-28)  MLG_MEASURES, written by PVLS (models/mlg.c).
- * This file is the single definition of these indices; constants/c.mlg
- * repeats the names in `parnames` and tests/model/test_auto_plugin.py checks that
- * the two agree.
+ * This file is the single definition of these indices and names: AUTO's
+ * `parnames` are printed from it (models/auto_names.c), the drivers read
+ * them from the library (mlgshimmy.shared.mlgmodel), and overlays from
+ * this file's text (mlgshimmy.shared.overlay).
  * MLG_CONSTANTS lists every fixed constant of the paper (Table 1, II.A, II.B)
  * under the paper's symbol, with its `table` value.
  * MLG_SWITCHES lists the model switches: discrete choices between variants

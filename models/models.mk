@@ -7,6 +7,20 @@ $(eval $(call auto_equations,$(MLG_MODEL),models/mlg.c,$(MLG_LIB),$(MODEL_INCLUD
 MLG_SEGMENTED := build/models/mlg_segmented
 $(eval $(call auto_equations,$(MLG_SEGMENTED),models/mlg_segmented.c,$(MLG_LIB),$(MODEL_INCLUDES)))
 
+# The AUTO constants every run of the model starts from: constants/c.mlg and
+# the names of the states and PAR slots, printed from the library's tables
+# (models/auto_names.c), so that a new parameter is named in one place.
+# Built before either executable (order-only: the names do not change them).
+MLG_AUTO_CONSTANTS := build/models/c.mlg
+MLG_AUTO_NAMES := build/bin/mlg_auto_names
+$(MLG_AUTO_NAMES): models/auto_names.c $(MLG_HEADERS) $(MLG_LIB)
+	@mkdir -p $(@D)
+	$(CC) $(MLG_CFLAGS) $< $(MLG_LIB) -lm -o $@
+$(MLG_AUTO_CONSTANTS): constants/c.mlg $(MLG_AUTO_NAMES)
+	@mkdir -p $(@D)
+	set -e; { cat $<; $(MLG_AUTO_NAMES); } > $@.tmp; mv $@.tmp $@
+$(MLG_MODEL).exe $(MLG_SEGMENTED).exe: | $(MLG_AUTO_CONSTANTS)
+
 # make demo [DEMO_DIR=build/demo]: a run directory for AUTO's own workflow,
 # as in AUTO's demos: `auto mlg.auto`, `@r mlg`, `@sv mlg` (docs/auto-workflow.md).
 # AUTO's run() and @r compile <e>.c and link <e>.o with AUTO's commands only,
@@ -31,7 +45,7 @@ DEMO_FILES := $(addprefix $(DEMO)/,mlg.c mlg.o mlg.exe c.mlg mlg.auto mlg.mk aut
 DEMO_ABS := $(abspath $(DEMO))
 
 $(DEMO)/mlg.c: models/mlg.c
-$(DEMO)/c.mlg: constants/c.mlg
+$(DEMO)/c.mlg: $(MLG_AUTO_CONSTANTS)
 $(DEMO)/mlg.auto: models/mlg.auto
 $(DEMO)/mlg.c $(DEMO)/c.mlg $(DEMO)/mlg.auto:
 	@mkdir -p $(@D)

@@ -43,8 +43,9 @@ def rundir(root):
 # --- constants and parameters --------------------------------------------------
 
 def test_constants_c_mlg_names_every_par_slot_of_the_library():
-    """constants/c.mlg names every PAR slot of the library, the period and
-    the measures of MLG_MEASURES, and nothing else."""
+    """The constants AUTO reads (build/models/c.mlg) name every PAR slot of
+    the library, the period and the measures of MLG_MEASURES from
+    mlgmodel.MEASURES_FIRST_PAR on, and nothing else."""
     c = autosession.init().parseC.parseC(ct.CONSTANTS)
     parnames = {int(k): v for k, v in c["parnames"]}
     ours = {k + 1: name for k, name in enumerate(mlgmodel.PARNAMES) if name is not None}
@@ -56,6 +57,14 @@ def test_constants_c_mlg_names_every_par_slot_of_the_library():
     assert not wrong, f"c.mlg parnames differ from the library (library, c.mlg): {wrong}"
     extra = {k: v for k, v in parnames.items() if k not in ours}
     assert not extra, f"c.mlg parnames names what the library does not: {extra}"
+
+
+def test_constants_template_names_nothing():
+    """constants/c.mlg holds no copy of the names: make appends the
+    library's (models/auto_names.c), so a new parameter is named once."""
+    c = autosession.init().parseC.parseC(os.path.join(paths.ROOT, "constants", "c.mlg"))
+    copied = {key: c[key] for key in ("parnames", "unames") if key in c and c[key]}
+    assert not copied, f"constants/c.mlg names {copied}: remove them, make generates them"
 
 
 def test_constants_unames_follow_the_librarys_states():

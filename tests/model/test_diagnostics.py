@@ -1,5 +1,5 @@
 """mlg_diagnose from Python (shared.domain): the layout of mlg_diagnostics
-is the library's (c/mlg_model.h MLG_DIAGNOSTICS), so every field is read
+is the library's (MLG_DIAGNOSTICS, c/mlg_parameters.h), so every field is read
 at its own place, the first, a tyre pair in the middle and the last.
 
 Run: /usr/bin/python3 -m pytest -q tests/model/test_diagnostics.py

@@ -27,7 +27,9 @@ from mlgshimmy.shared import rolling
 from mlgshimmy.shared import spectrum
 
 MODEL = os.path.join(paths.BUILD, "models", "mlg")
-CONSTANTS = os.path.join(paths.ROOT, "constants", "c.mlg")
+# constants/c.mlg with the names of the states and PAR slots, built by make
+# from the library's tables (models/models.mk)
+CONSTANTS = os.path.join(paths.BUILD, "models", "c.mlg")
 RUN_CONSTANTS = os.path.join(paths.ROOT, "constants", "runs")
 # m/s: the paper's speeds (V = 0 is degenerate: the tyre states are undetermined)
 V_MIN, V_MAX = 0.5, 600.0
@@ -101,6 +103,10 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
     allow_mx=True it is kept as it ends; with allow_mx=Ends(...) an MX
     that the Ends explains is kept and any other goes up the ladder
     (EDGE: the ends of the model's domain and of the orbits)."""
+    if not os.path.exists(CONSTANTS):
+        raise runerror.RunError(f"{CONSTANTS} is missing: run `make -C {paths.ROOT} "
+                                f"{os.path.relpath(CONSTANTS, paths.ROOT)}` (the make target "
+                                "of a figure or study builds it too)")
     files = [CONSTANTS] + [os.path.join(RUN_CONSTANTS, f"c.{k}") for k in (kind, overlay) if k]
     rundir = rundirs.claim(rundir)            # emptied on first use: claim, then write
     mlgmodel.write_constants_files(rundir)    # constants set from Python (PAR(15))
