@@ -37,7 +37,7 @@ $(MLG_LIB): $(MLG_OBJECTS)
 MLG_TEST_SOURCES := $(wildcard tests/c/test_*.c)
 MLG_TESTS := $(patsubst tests/c/%.c,build/tests/%,$(MLG_TEST_SOURCES))
 
-$(MLG_TESTS): build/tests/%: tests/c/%.c tests/c/unit.h tests/c/near_equilibrium.h tests/c/state_samples.h $(MLG_LIB) | $(PACKAGES_STAMP)
+$(MLG_TESTS): build/tests/%: tests/c/%.c tests/c/unit.h tests/c/near_equilibrium.h tests/c/state_samples.h tests/c/jacobian_error.h $(MLG_LIB) | $(PACKAGES_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(MLG_CFLAGS) -Itests/c $< $(MLG_LIB) -llapack -lm -o $@
 
@@ -61,7 +61,7 @@ $(MLG_UBSAN_LIB): $(MLG_UBSAN_OBJECTS)
 	@mkdir -p $(@D)
 	rm -f $@
 	ar rcs $@ $^
-$(MLG_UBSAN_TESTS): build/ubsan/tests/%: tests/c/%.c tests/c/unit.h tests/c/near_equilibrium.h tests/c/state_samples.h $(MLG_UBSAN_LIB) | $(PACKAGES_STAMP)
+$(MLG_UBSAN_TESTS): build/ubsan/tests/%: tests/c/%.c tests/c/unit.h tests/c/near_equilibrium.h tests/c/state_samples.h tests/c/jacobian_error.h $(MLG_UBSAN_LIB) | $(PACKAGES_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(MLG_CFLAGS) $(MLG_UBSAN_FLAGS) -Itests/c $< $(MLG_UBSAN_LIB) -llapack -lm -o $@
 

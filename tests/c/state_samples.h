@@ -118,18 +118,17 @@ static void scales(const sample *s, double *scale)
         scale[MLG_BETA_DOT] = fmin(scale[MLG_BETA_DOT], twist_rate);
         scale[MLG_ETA_DOT] = fmin(scale[MLG_ETA_DOT], s->p.v_fric);
     }
-    double *ps = scale + MLG_NX;
-    for (int k = 0; k < MLG_NPAR; k++) ps[k] = NAN;   /* a parameter left out fails below */
-    ps[MLG_PAR_V] = 1.0;
-    ps[MLG_PAR_Fstar] = 1e-2;
+    /* a parameter's step: 1e-3 of its value here, at least 1e-3 of its unit
+     * (a table value may be 0), so a new one needs no line; the widths of the
+     * freeplay's corners and the angles instead resolve those corners */
+    double par[MLG_PAR_SLOTS], *ps = scale + MLG_NX;
+    mlg_params_get_par(&s->p, par);
+    for (int k = 0; k < MLG_NPAR; k++) ps[k] = 1e-3 * fmax(fabs(par[k]), 1.0);
     ps[MLG_PAR_yfp] = fmin(1e-2, 1e3 * eps);     /* mm */
     ps[MLG_PAR_eps_abs] = fmin(1e-2, 1e3 * eps);  /* mm */
     ps[MLG_PAR_eps_rel] = 1e-3;
-    ps[MLG_PAR_c_psi] = 1.0;
     ps[MLG_PAR_rho] = torsion;
     ps[MLG_PAR_mu] = torsion;
-    ps[MLG_PAR_k_tlk] = 1e4;
-    ps[MLG_PAR_M_fric] = 1.0;
 }
 
 #endif

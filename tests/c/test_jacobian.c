@@ -1,50 +1,17 @@
 /* The analytic (forward-mode) Jacobians df/du and df/dp against central
- * finite differences of the plain-double vector field.
- *
- * Error measure: row-scaled maximum norm.  With s_j the scale of variable j
- * (the finite-difference step is 1e-4 s_j), the scaled entry is
- * J_ij s_j / max_k |J_ik s_k|, and the error of a sample is the largest
- * difference of scaled entries between analytic and finite-difference
- * Jacobians.  The difference quotient is Richardson-extrapolated from steps
- * h and h/2 (truncation error O(h^4)).  Tolerance 1e-6.
+ * finite differences of the plain-double vector field (jacobian_error.h:
+ * row-scaled error, tolerance 1e-6) over the samples of state_samples.h.
  * Every freeplay law is drawn in turn; with law (14), each mode of the
  * freeplay too (mlg_rhs_jacobian_in_modes), a fixed mode also exactly on its
  * switching surface, where that mode's field is smooth; so is each mode of
  * the twist's Coulomb friction (stick: the holding moment's derivatives). */
 #include <string.h>
 
+#include "jacobian_error.h"
 #include "jacobian_variants.h"
-#include "state_samples.h"
 #include "unit.h"
 
 #define NSAMPLES 1200
-
-/* Central difference of f in direction j (state j, or parameter j - MLG_NX). */
-static void difference(const sample *s, int j, double h, double *df)
-{
-    double fp[MLG_NX], fm[MLG_NX];
-    for (int sign = -1; sign <= 1; sign += 2) {
-        sample t = *s;
-        if (j < MLG_NX) {
-            t.u[j] += sign * h;
-        } else {
-            double par[MLG_PAR_SLOTS];
-            mlg_params_get_par(&t.p, par);
-            par[j - MLG_NX] += sign * h;
-            mlg_params_set_par(&t.p, par);
-        }
-        mlg_rhs_in_modes(&t.p, t.modes, t.u, sign > 0 ? fp : fm);
-    }
-    for (int i = 0; i < MLG_NX; i++) df[i] = (fp[i] - fm[i]) / (2.0 * h);
-}
-
-static void richardson(const sample *s, int j, double h, double *df)
-{
-    double d1[MLG_NX], d2[MLG_NX];
-    difference(s, j, h, d1);
-    difference(s, j, 0.5 * h, d2);
-    for (int i = 0; i < MLG_NX; i++) df[i] = (4.0 * d2[i] - d1[i]) / 3.0;
-}
 
 int main(void)
 {
@@ -59,17 +26,6 @@ int main(void)
     int variants_compared = 0, variants_differ = 0, stick = 0;
     double worst_stick = 0.0;
     const char *worst_where = "";
-    {   /* every continuation parameter has a df/dp scale, so its column is checked */
-        sample s = draw(0);
-        double scale[MLG_NDIR];
-        scales(&s, scale);
-        for (int k = 0; k < MLG_NPAR; k++) {
-            char name[80];
-            snprintf(name, sizeof name, "dfdp_scale_of_%s", mlg_par_name(k));
-            check(scale[MLG_NX + k] > 0.0, name, "scale %g (tests/c/test_jacobian.c scales())",
-                  scale[MLG_NX + k]);
-        }
-    }
     for (int n = 0; n < NSAMPLES; n++) {
         sample s = draw(n);
         double f[MLG_NX], J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR], Jx[MLG_NX * MLG_NX];
@@ -106,50 +62,20 @@ int main(void)
         int coulomb = s.p.friction_law == 1.0, friction = s.modes[MLG_DISCRETE_FRICTION] + 1;
         if (coulomb) per_coulomb[friction]++;
 
-        double scale[MLG_NDIR], fd[MLG_NDIR][MLG_NX], row[MLG_NX];
-        scales(&s, scale);
-        for (int j = 0; j < MLG_NDIR; j++)
-            if (scale[j] > 0.0) richardson(&s, j, 1e-4 * scale[j], fd[j]);
-        /* stuck, the twist's acceleration is zero by construction (at eom_terms 0
-         * psi'' itself): its rows are measured against their size when sliding */
-        double Jslip[MLG_NX * MLG_NX], Pslip[MLG_NX * MLG_NPAR];
-        int stuck = coulomb && s.modes[MLG_DISCRETE_FRICTION] == MLG_MODE_STICK;
-        if (stuck) {
-            sample t = s;
-            t.modes[MLG_DISCRETE_FRICTION] = MLG_MODE_SLIP_POS;
-            mlg_rhs_jacobian_in_modes(&t.p, t.modes, t.u, f2, Jslip, Pslip);
+        double err_u, err_p;
+        jacobian_error(&s, &err_u, &err_p);
+        double err = fmax(err_u, err_p);
+        if (s.p.rho != 0.0) worst_level[level] = fmax(worst_level[level], err);
+        worst_law[law] = fmax(worst_law[law], err);
+        if (law == mlg_freeplay_law_index("nonsmooth"))
+            worst_mode[mode] = fmax(worst_mode[mode], err);
+        if (s.stick) worst_stick = fmax(worst_stick, err);
+        if (coulomb) worst_coulomb[friction] = fmax(worst_coulomb[friction], err);
+        if (err_u > worst_u) {
+            worst_u = err_u;
+            worst_where = s.region;
         }
-        for (int i = 0; i < MLG_NX; i++) {
-            row[i] = 0.0;
-            for (int j = 0; j < MLG_NDIR; j++) {
-                double an = j < MLG_NX ? J[i + MLG_NX * j] : P[i + MLG_NX * (j - MLG_NX)];
-                row[i] = fmax(row[i], fabs(an) * scale[j]);
-                if (stuck) {
-                    double slid = j < MLG_NX ? Jslip[i + MLG_NX * j]
-                                             : Pslip[i + MLG_NX * (j - MLG_NX)];
-                    row[i] = fmax(row[i], fabs(slid) * scale[j]);
-                }
-            }
-        }
-        for (int i = 0; i < MLG_NX; i++) {
-            if (row[i] == 0.0) continue;
-            for (int j = 0; j < MLG_NDIR; j++) {
-                if (scale[j] == 0.0) continue;
-                double an = j < MLG_NX ? J[i + MLG_NX * j] : P[i + MLG_NX * (j - MLG_NX)];
-                double err = fabs(an - fd[j][i]) * scale[j] / row[i];
-                if (s.p.rho != 0.0) worst_level[level] = fmax(worst_level[level], err);
-                worst_law[law] = fmax(worst_law[law], err);
-                if (law == mlg_freeplay_law_index("nonsmooth"))
-                    worst_mode[mode] = fmax(worst_mode[mode], err);
-                if (s.stick) worst_stick = fmax(worst_stick, err);
-                if (coulomb) worst_coulomb[friction] = fmax(worst_coulomb[friction], err);
-                if (j < MLG_NX && err > worst_u) {
-                    worst_u = err;
-                    worst_where = s.region;
-                }
-                if (j >= MLG_NX && err > worst_p) worst_p = err;
-            }
-        }
+        worst_p = fmax(worst_p, err_p);
     }
     printf("# %d samples: %d inside, %d at the edge of, %d outside the freeplay, %d zero "
            "freeplay; %d drawn outside the model's domain and skipped\n",
