@@ -1,5 +1,6 @@
-"""The AUTO plugin (models/mlg.c) on the MLG model: constants agree with the
-library, JAC=1 and JAC=0 give the same special points, the `figures` Hopf
+"""The AUTO plugin (models/mlg.c) on the MLG model (the names AUTO reads:
+tests/model/test_declarations.py): PAR(1-10) hold only continuation
+parameters, JAC=1 and JAC=0 give the same special points, the `figures` Hopf
 speed at F* = 1 is the paper's 346.1 m/s, the Hopf is supercritical, the
 periodic orbit at V = 300 m/s, F* = 0.2 matches the time simulation, a
 constant set from Python reaches AUTO, and bad input stops every entry point
@@ -13,7 +14,7 @@ import textwrap
 
 import pytest
 
-from mlgshimmy.shared import autoglue, autosession, rundirs, runerror
+from mlgshimmy.shared import autoglue, rundirs, runerror
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import mlgmodel
@@ -41,38 +42,6 @@ def rundir(root):
 
 
 # --- constants and parameters --------------------------------------------------
-
-def test_constants_c_mlg_names_every_par_slot_of_the_library():
-    """The constants AUTO reads (build/models/c.mlg) name every PAR slot of
-    the library, the period and the measures of MLG_MEASURES from
-    mlgmodel.MEASURES_FIRST_PAR on, and nothing else."""
-    c = autosession.init().parseC.parseC(ct.CONSTANTS)
-    parnames = {int(k): v for k, v in c["parnames"]}
-    ours = {k + 1: name for k, name in enumerate(mlgmodel.PARNAMES) if name is not None}
-    ours[11] = "T"
-    ours.update({mlgmodel.MEASURES_FIRST_PAR + k: name
-                 for k, name in enumerate(mlgmodel.MEASURES)})
-    wrong = {f"PAR({k})": (name, parnames.get(k)) for k, name in sorted(ours.items())
-             if parnames.get(k) != name}
-    assert not wrong, f"c.mlg parnames differ from the library (library, c.mlg): {wrong}"
-    extra = {k: v for k, v in parnames.items() if k not in ours}
-    assert not extra, f"c.mlg parnames names what the library does not: {extra}"
-
-
-def test_constants_template_names_nothing():
-    """constants/c.mlg holds no copy of the names: make appends the
-    library's (models/auto_names.c), so a new parameter is named once."""
-    c = autosession.init().parseC.parseC(os.path.join(paths.ROOT, "constants", "c.mlg"))
-    copied = {key: c[key] for key in ("parnames", "unames") if key in c and c[key]}
-    assert not copied, f"constants/c.mlg names {copied}: remove them, make generates them"
-
-
-def test_constants_unames_follow_the_librarys_states():
-    c = autosession.init().parseC.parseC(ct.CONSTANTS)
-    unames = {int(k): v for k, v in c["unames"]}
-    assert [unames.get(i + 1) for i in range(mlgmodel.NX)] == mlgmodel.UNAMES, \
-        f"c.mlg {unames}, library {mlgmodel.UNAMES}"
-
 
 def test_constants_par_1_to_10_hold_only_continuation_parameters():
     continuation = [name for name in mlgmodel.PARNAMES[:10] if name is not None]

@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 import os
 import re
-from typing import Callable, Dict, Mapping, Optional, Sequence, Tuple
+from typing import Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 
 from mlgshimmy.shared import number_text
 from mlgshimmy.shared.suggest import did_you_mean
@@ -58,16 +58,19 @@ def _table_text(text: str, table: str) -> str:
     return "\n".join(lines)
 
 
-def known() -> Dict[str, str]:
-    """{name: unit} of every parameter, switch and constant of the model."""
+def entries(table: str) -> List[Tuple[str, str]]:
+    """(name, unit) of each entry of one X-macro table of c/mlg_parameters.h
+    with a unit (TABLES), in the table's order."""
     with open(HEADER) as f:
         text = re.sub(r"/\*.*?\*/", "", f.read(), flags=re.S)
-    names: Dict[str, str] = {}
-    for table in TABLES:
-        for entry in re.finditer(r"X\(\s*(\w+)\s*,([^\"]*?)\"([^\"]*)\"",
-                                 _table_text(text, table)):
-            names[entry.group(1)] = entry.group(3)
-    return names
+    return [(entry.group(1), entry.group(3))
+            for entry in re.finditer(r"X\(\s*(\w+)\s*,([^\"]*?)\"([^\"]*)\"",
+                                     _table_text(text, table))]
+
+
+def known() -> Dict[str, str]:
+    """{name: unit} of every parameter, switch and constant of the model."""
+    return {name: unit for table in TABLES for name, unit in entries(table)}
 
 
 def laws() -> Tuple[str, ...]:
