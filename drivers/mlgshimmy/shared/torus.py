@@ -43,6 +43,7 @@ CURVE_TIME_LIMIT = 120  # s of CPU per direction (the main curve of Fig. 11: ~25
 # the step down to it, each try a failed Newton solve on the 3 x 10-dimensional
 # system (~0.7 s); on Fig. 11's curves no step below 1e-3 ever converged
 CURVE_DSMIN = 5e-4
+CLOSE_TOL = 0.05       # closes(): a point this many chords from the curve lies on it
 
 
 def orbit_branch(rundir: str, name: str, values: Mapping[str, float], mesh: Tuple[int, int],
@@ -265,11 +266,31 @@ def seeded(start: Any, angle: float, parameter_set: str = "figures") -> Any:
     return start
 
 
+def closes(V: Sequence[float], Fstar: Sequence[float]) -> bool:
+    """Whether a curve in (V, F*), once away from its start, passes back
+    through its first two points (within CLOSE_TOL of a step's chord, in
+    V/V_MAX and F*/F* span): a closed curve, which the other direction
+    would only trace again."""
+    x = numpy.c_[numpy.asarray(V) / V_MAX, numpy.asarray(Fstar) / (CURVE_FSTAR[1] - CURVE_FSTAR[0])]
+
+    def near(point, k):   # point within CLOSE_TOL chords of the chord k -> k + 1
+        chord = x[k + 1] - x[k]
+        length = numpy.linalg.norm(chord)
+        t = numpy.clip(numpy.dot(point - x[k], chord) / max(length ** 2, 1e-300), 0.0, 1.0)
+        return numpy.linalg.norm(x[k] + t * chord - point) <= CLOSE_TOL * length
+    away = False
+    for k in range(2, len(x) - 1):
+        away = away or numpy.linalg.norm(x[k] - x[0]) > 5 * numpy.linalg.norm(x[k + 1] - x[k])
+        if away and near(x[0], k) and any(near(x[1], j) for j in range(k, min(k + 3, len(x) - 1))):
+            return True
+    return False
+
+
 def torus_curve(rundir: str, name: str, tr: Any, parameter_set: str = "figures",
-                steps: Mapping[str, Any] = CURVE_STEPS,
-                ntst: Optional[int] = None) -> Tuple[Any, Any]:
+                steps: int = CURVE_STEPS, ntst: Optional[int] = None) -> Tuple[Any, ...]:
     """The TR point continued in (V, F*) both ways, within CURVE_FSTAR and
-    V <= V_MAX: the runs (<name>_up, <name>_down); ntst: their mesh, if not
+    V <= V_MAX: the runs (<name>_up, <name>_down), or (<name>_up,) alone
+    where that run closes (closes); ntst: their mesh, if not
     the orbit's (a finer one: see fig11.TONGUE_EDGES).  AUTO's first ISW = 2
     run from a TR label only builds the extended system's data (its last
     point, EP, or MX where its degenerate Newton solve fails: the orbit is
@@ -282,11 +303,17 @@ def torus_curve(rundir: str, name: str, tr: Any, parameter_set: str = "figures",
     seed = seeded(first()[-1], tr.PAR["PAR(12)"], parameter_set)
     stop = {"Fstar": list(CURVE_FSTAR), "V": [0.5, V_MAX]}
     mesh = {"NTST": ntst} if ntst else {}
-    return tuple(ct.run(rundir, f"{name}_{part}", "periodic", data=seed, ISW=2, ICP=torus_icp(),
-                        DS=sign * 0.05, DSMIN=CURVE_DSMIN, DSMAX=5.0, NMX=steps, UZSTOP=stop,
-                        allow_mx=True,
-                        time_limit=CURVE_TIME_LIMIT, **mesh)
-                 for sign, part in ((1, "up"), (-1, "down")))
+    runs = []
+    for sign, part in ((1, "up"), (-1, "down")):
+        runs.append(ct.run(rundir, f"{name}_{part}", "periodic", data=seed, ISW=2,
+                           ICP=torus_icp(), DS=sign * 0.05, DSMIN=CURVE_DSMIN, DSMAX=5.0,
+                           NMX=steps, UZSTOP=stop, allow_mx=True, time_limit=CURVE_TIME_LIMIT,
+                           **mesh))
+        if closes(runs[0][0]["V"], runs[0][0]["Fstar"]):
+            print(f"torus: {name} is a closed curve in (V, F*): not run the other way",
+                  flush=True)
+            break
+    return tuple(runs)
 
 
 def curve_arrays(runs: Sequence[Any]) -> List[Dict[str, Any]]:
