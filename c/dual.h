@@ -12,7 +12,7 @@
  * Every operation is one call of the chain rule d_lin1, d_lin2 or d_lin2_over.
  * vector_field_value.c and vector_field_jacobian.c compile the same model
  * with the two settings.  With DUAL_TAYLOR defined instead, `dual` carries
- * three derivatives along one direction (dual_taylor.h,
+ * five derivatives along one direction (dual_taylor.h,
  * vector_field_taylor.c). */
 #ifndef MLG_DUAL_H
 #define MLG_DUAL_H

@@ -122,14 +122,22 @@ int mlg_rhs_jacobian(const mlg_params *p, const double u[MLG_NX], double f[MLG_N
                      double dfdu[MLG_NX * MLG_NX], double dfdp[MLG_NX * MLG_NPAR]);
 
 /* ---- higher derivatives, exact to rounding (vector_field_taylor.c) ---- */
-/* f[i + MLG_NX*k] = d^k/dt^k f_i(u + t d) at t = 0, k = 0..3: f, J d,
- * D^2 f[d, d] and D^3 f[d, d, d], by Taylor arithmetic along d. */
+/* The highest derivative: the fifth, for Kuznetsov's E of the second
+ * Lyapunov coefficient */
+enum { MLG_TAYLOR_ORDER = 5 };
+int mlg_taylor_order(void);   /* MLG_TAYLOR_ORDER, for callers through an FFI */
+/* f[i + MLG_NX*k] = d^k/dt^k f_i(u + t d) at t = 0, k = 0..MLG_TAYLOR_ORDER:
+ * f, J d, D^2 f[d, d], ..., by Taylor arithmetic along d. */
 int mlg_rhs_taylor(const mlg_params *p, const double u[MLG_NX], const double d[MLG_NX],
-                   double f[4 * MLG_NX]);
-/* The second and third multilinear forms of f at u for real arguments:
- * B_i = sum_jk d2f_i/du_j du_k x_j y_k and C_i likewise (Kuznetsov's B, C),
- * from 2 and 4 calls of mlg_rhs_taylor.  Complex arguments by linearity:
- * B(q, q), B(q, conj q), C(q, q, conj q) from the real and imaginary parts. */
+                   double f[(MLG_TAYLOR_ORDER + 1) * MLG_NX]);
+/* The n-th multilinear form of f at u (1 <= n <= MLG_TAYLOR_ORDER, else
+ * MLG_BAD_PARAMETER) for real arguments v[0..n-1]:
+ * F_i = sum d^n f_i/du_j1..du_jn v[0]_j1 ... v[n-1]_jn (Kuznetsov's B, C, D,
+ * E for n = 2..5), from 2^(n-1) calls of mlg_rhs_taylor.  Complex arguments
+ * by linearity, from the real and imaginary parts. */
+int mlg_form(const mlg_params *p, const double u[MLG_NX], int n, const double *const v[],
+             double F[MLG_NX]);
+/* mlg_form for n = 2 and 3: B(x, y) and C(x, y, z) */
 int mlg_second_form(const mlg_params *p, const double u[MLG_NX], const double x[MLG_NX],
                     const double y[MLG_NX], double B[MLG_NX]);
 int mlg_third_form(const mlg_params *p, const double u[MLG_NX], const double x[MLG_NX],

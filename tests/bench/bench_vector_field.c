@@ -1,6 +1,6 @@
 /* Benchmark (not a test): CPU time of one evaluation of f, of f + df/du, of
- * f + df/du + df/dp, of f and three derivatives along a direction (Taylor),
- * and of the forms B(x, y) and C(x, y, z), at representative states; ratios
+ * f + df/du + df/dp, of f and five derivatives along a direction (Taylor),
+ * and of the forms B(x, y), C(x, y, z), D and E, at representative states; ratios
  * from the same run. */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
@@ -19,16 +19,17 @@ static double now(void)
 enum { NSTATES = 16 };
 static mlg_params params;
 static double states[NSTATES][MLG_NX];
-static double directions[3][MLG_NX];
+static double directions[5][MLG_NX];
 static volatile double sink;
 
-enum { F, JACOBIAN, JACOBIAN_P, TAYLOR, SECOND_FORM, THIRD_FORM, NKINDS };
+enum { F, JACOBIAN, JACOBIAN_P, TAYLOR, SECOND_FORM, THIRD_FORM, FOURTH_FORM, FIFTH_FORM, NKINDS };
 
 /* Seconds per call of one kind over about 0.05 s */
 static double time_per_call(int kind)
 {
-    double f[4 * MLG_NX], J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
+    double f[(MLG_TAYLOR_ORDER + 1) * MLG_NX], J[MLG_NX * MLG_NX], P[MLG_NX * MLG_NPAR];
     const double *x = directions[0], *y = directions[1], *z = directions[2];
+    const double *const v[5] = {x, y, z, directions[3], directions[4]};
     long calls = 0;
     double start = now(), elapsed;
     do {
@@ -38,6 +39,8 @@ static double time_per_call(int kind)
             else if (kind == TAYLOR) mlg_rhs_taylor(&params, u, x, f);
             else if (kind == SECOND_FORM) mlg_second_form(&params, u, x, y, f);
             else if (kind == THIRD_FORM) mlg_third_form(&params, u, x, y, z, f);
+            else if (kind == FOURTH_FORM) mlg_form(&params, u, 4, v, f);
+            else if (kind == FIFTH_FORM) mlg_form(&params, u, 5, v, f);
             else mlg_rhs_jacobian(&params, u, f, J, kind == JACOBIAN_P ? P : NULL);
             sink += f[MLG_PSI_DOT];
         }
@@ -72,7 +75,7 @@ int main(void)
         states[k][MLG_LAMBDA_L] = 1e-3 * (k % 4 - 1.5);
         states[k][MLG_LAMBDA_R] = -1e-3 * (k % 4 - 1.5);
     }
-    for (int k = 0; k < 3; k++)   /* unit directions of mixed sign, as a Hopf eigenvector's parts */
+    for (int k = 0; k < 5; k++)   /* unit directions of mixed sign, as a Hopf eigenvector's parts */
         for (int i = 0; i < MLG_NX; i++) directions[k][i] = cos(1.0 + 2.0 * i + 3.0 * k);
     double best[NKINDS];
     time_all(best);
@@ -81,12 +84,16 @@ int main(void)
     printf("  f                  %8.3f us\n", 1e6 * t_f);
     printf("  f + df/du          %8.3f us   (%.1f x f)\n", 1e6 * t_fj, t_fj / t_f);
     printf("  f + df/du + df/dp  %8.3f us   (%.1f x f)\n", 1e6 * t_fjp, t_fjp / t_f);
-    printf("  f, D^1..3 f along d %7.3f us   (%.1f x f)\n", 1e6 * best[TAYLOR],
+    printf("  f, D^1..5 f along d %7.3f us   (%.1f x f)\n", 1e6 * best[TAYLOR],
            best[TAYLOR] / t_f);
     printf("  B(x, y), exact     %8.3f us   (%.1f x f)\n", 1e6 * best[SECOND_FORM],
            best[SECOND_FORM] / t_f);
     printf("  C(x, y, z), exact  %8.3f us   (%.1f x f)\n", 1e6 * best[THIRD_FORM],
            best[THIRD_FORM] / t_f);
+    printf("  D(x, y, z, w), exact %6.3f us   (%.1f x f)\n", 1e6 * best[FOURTH_FORM],
+           best[FOURTH_FORM] / t_f);
+    printf("  E(x, ..., v), exact %7.3f us   (%.1f x f)\n", 1e6 * best[FIFTH_FORM],
+           best[FIFTH_FORM] / t_f);
     printf("  finite-difference df/du would cost %d f-evaluations (%.1f x f with one-sided steps)\n",
            MLG_NX + 1, (double)(MLG_NX + 1));
     return 0;

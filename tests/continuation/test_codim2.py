@@ -28,11 +28,12 @@ class Cubic:
         J[3:, 3:] = [[b - 0.3, -3.3], [3.3, b - 0.3]]
         return J
 
-    def second_form(self, u, x, y):
-        return np.zeros(5)
+    def form(self, u, *vectors):
+        """B = 0; C: D^3 of b (x^3 + x y^2) and b (y^3 + y x^2)."""
+        if len(vectors) == 2:
+            return np.zeros(5)
+        x, y, z = vectors
 
-    def third_form(self, u, x, y, z):
-        """D^3 of b (x^3 + x y^2) and b (y^3 + y x^2)."""
         def mixed(i, j):   # D^3 of v_i v_j^2 in the directions x, y, z
             return 2 * (x[i] * y[j] * z[j] + x[j] * y[i] * z[j] + x[j] * y[j] * z[i])
         return self.b * np.array([6 * x[0] * y[0] * z[0] + mixed(0, 1),
@@ -50,10 +51,10 @@ class Nilpotent:
     def jacobian(self, u):
         return np.array([[0.0, 1.0], [-self.b + 2 * u[0], self.a]])
 
-    def second_form(self, u, x, y):
-        return np.array([0.0, 2 * x[0] * y[0]])
-
-    def third_form(self, u, x, y, z):
+    def form(self, u, *vectors):
+        """B from x^2; C = 0."""
+        if len(vectors) == 2:
+            return np.array([0.0, 2 * vectors[0][0] * vectors[1][0]])
         return np.zeros(2)
 
 
@@ -119,7 +120,8 @@ class Cusp:
     def jacobian(self, u):
         return np.array([[self.b - 3 * u[0] ** 2, 0.0], [0.0, -1.0]])
 
-    def second_form(self, u, x, y):
+    def form(self, u, x, y):
+        """B, the only form codim2.fold_coefficient asks for."""
         return np.array([-6 * u[0] * x[0] * y[0], 0.0])
 
 

@@ -199,15 +199,23 @@ def test_amplitude_predicted_by_l1_matches_the_first_orbits(name, rel):
     assert K == pytest.approx(np.sqrt(K2), rel=rel)
 
 
-@pytest.mark.parametrize("form, vectors, bad", [
-    ("second_form", {"x": np.ones(9), "y": np.ones(10)}, "x"),
-    ("third_form", {"x": np.ones(10), "y": np.ones(10), "z": np.ones((10, 1))}, "z"),
+@pytest.mark.parametrize("vectors, bad", [
+    ([np.ones(9), np.ones(10)], "vector 1"),
+    ([np.ones(10), np.ones(10), np.ones((10, 1))], "vector 3"),
+    ([np.ones(10)] * 4 + [np.ones(11)], "vector 5"),
 ])
-def test_model_forms_name_a_vector_of_the_wrong_shape(form, vectors, bad):
+def test_model_forms_name_a_vector_of_the_wrong_shape(vectors, bad):
     """A short vector would reach C padded with zeros: refused, named."""
     model, u = rolling_at(100.0, PAPER_GEAR)
-    with pytest.raises(ValueError, match=f"mlg_{form}: {bad} has shape"):
-        getattr(model, form)(u, **vectors)
+    with pytest.raises(ValueError, match=f"form: {bad} has shape"):
+        model.form(u, *vectors)
+
+
+@pytest.mark.parametrize("count", [0, 6])
+def test_model_forms_of_an_order_the_library_lacks_are_refused(count):
+    model, u = rolling_at(100.0, PAPER_GEAR)
+    with pytest.raises(ValueError, match=f"form: {count} vectors; the library's forms take 1 to 5"):
+        model.form(u, *[np.ones(10)] * count)
 
 
 class KinkDamped:
@@ -222,11 +230,8 @@ class KinkDamped:
     def jacobian(self, u):
         return np.array([[0.0, 1.0], [-1.0, -2 * self.c * abs(u[1])]])
 
-    def second_form(self, u, x, y):
+    def form(self, u, *vectors):
         return np.zeros(2)      # at y = 0 the kink has no second derivative
-
-    def third_form(self, u, x, y, z):
-        return np.zeros(2)
 
     def taylor(self, u, d):
         """f(u + t d) = f(u) + t A d + t^2 (0, -c |d_y| d_y) for t > 0."""

@@ -206,7 +206,7 @@ def fold_coefficient(model: Any, u: ArrayLike,
     coefficient on the centre manifold (Kuznetsov, section 5.4), q oriented
     as `ref`; zero at a cusp (section 8.2)."""
     q, p = _null_vectors(numpy.asarray(model.jacobian(u)), ref)
-    return 0.5 * float(numpy.dot(p, model.second_form(u, q, q))), q
+    return 0.5 * float(numpy.dot(p, model.form(u, q, q))), q
 
 
 def _singularity(A, q, p):
@@ -252,8 +252,7 @@ def along_fold_curve(points: Sequence[Tuple[float, float, Any]], at: Callable) -
     """{"a": the cusp coefficient at each stored point, "points": the cusp
     points located between them, [{"type": "CP", "a", "b", "u"}]} on a
     fold curve of equilibria: points [(a, b, state)] in order, at(a, b) ->
-    the model (an mlgmodel.Model or one with .rhs, .jacobian and
-    .second_form).  q is oriented along the curve by continuity."""
+    the model (an mlgmodel.Model or one with .rhs, .jacobian and .form).  q is oriented along the curve by continuity."""
     points = [(float(a), float(b), numpy.asarray(u, float)) for a, b, u in points]
     values, ref = [], None
     for a, b, u in points:

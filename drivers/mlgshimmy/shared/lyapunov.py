@@ -9,8 +9,8 @@ equilibrium alone (numpy and the c/ library, no AUTO).
 
 Kuznetsov, Elements of Applied Bifurcation Theory (3rd ed.), section 3.5,
 eq. (3.20): coefficient(A, B, C).  first_lyapunov takes the forms B and C
-exact to rounding from the c/ library (Model.second_form, .third_form:
-Taylor arithmetic, c/vector_field_taylor.c); by_differences takes them
+exact to rounding from the c/ library (Model.form: Taylor arithmetic,
+c/vector_field_taylor.c); by_differences takes them
 from central differences of the exact Jacobian, for a model that has only
 .jacobian(u) and as the independent check of the exact forms.
 
@@ -88,12 +88,12 @@ def complex_form(real_form: Callable) -> Callable:
     return form
 
 
-def exact_forms(model: Any, u: ArrayLike) -> Tuple[Callable, Callable]:
-    """(B, C) at u for complex arguments, exact to rounding: the c/ library's
-    real forms (Model.second_form, Model.third_form)."""
+def exact_form(model: Any, u: ArrayLike) -> Callable:
+    """The multilinear forms at u for complex arguments, exact to rounding:
+    F(x, y) = B, F(x, y, z) = C, ... by the number of arguments (the c/
+    library's real forms, Model.form)."""
     u = numpy.asarray(u, dtype=float)
-    return (complex_form(lambda x, y: model.second_form(u, x, y)),
-            complex_form(lambda x, y, z: model.third_form(u, x, y, z)))
+    return complex_form(lambda *vectors: model.form(u, *vectors))
 
 
 def difference_forms(model: Any, u: ArrayLike, h: float) -> Tuple[Callable, Callable]:
@@ -146,7 +146,8 @@ def first_lyapunov(model: Any, u: Any) -> Hopf:
     """l1 at the equilibrium u (a sequence or {state name: value}) of a
     model with exact forms (an mlgmodel.Model)."""
     u = _state(u)
-    return coefficient(model.jacobian(u), *exact_forms(model, u))
+    form = exact_form(model, u)
+    return coefficient(model.jacobian(u), form, form)
 
 
 def at_step(model: Any, u: Any, h: float) -> Hopf:

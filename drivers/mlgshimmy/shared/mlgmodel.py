@@ -68,8 +68,7 @@ def library() -> ctypes.CDLL:
     lib.mlg_rhs_jacobian.argtypes = [P, D, D, D, D]
     lib.mlg_rhs_jacobian_in_modes.argtypes = [P, ctypes.POINTER(ctypes.c_int), D, D, D, D]
     lib.mlg_rhs_taylor.argtypes = [P, D, D, D]
-    lib.mlg_second_form.argtypes = [P, D, D, D, D]
-    lib.mlg_third_form.argtypes = [P, D, D, D, D, D]
+    lib.mlg_form.argtypes = [P, D, ctypes.c_int, ctypes.POINTER(D), D]
     lib.mlg_r_tlk.restype = ctypes.c_double
     lib.mlg_r_tlk.argtypes = [P, ctypes.c_double]
     lib.mlg_epsilon_m.restype = ctypes.c_double
@@ -111,15 +110,16 @@ def _table(key: str):
                          for k, name in enumerate(_names(lib.mlg_diagnostic_name))],
             C_PSI_FIGURES=ctypes.c_double.in_dll(lib, "MLG_C_PSI_FIGURES").value)
         _tables["NX"] = len(_tables["UNAMES"])
+        _tables["TAYLOR_ORDER"] = lib.mlg_taylor_order()   # the highest derivative of taylor()
     return _tables[key]
 
 
 def __getattr__(name: str):
-    """PARNAMES, MEASURES, FIELDS, UNAMES, LAWS, DIAGNOSTICS, NX, C_PSI_FIGURES:
-    read from the library when first asked for, so importing this module
-    needs no build."""
+    """PARNAMES, MEASURES, FIELDS, UNAMES, LAWS, DIAGNOSTICS, NX, C_PSI_FIGURES,
+    TAYLOR_ORDER: read from the library when first asked for, so importing
+    this module needs no build."""
     if name in ("PARNAMES", "MEASURES", "FIELDS", "UNAMES", "LAWS", "DIAGNOSTICS", "NX",
-                "C_PSI_FIGURES"):
+                "C_PSI_FIGURES", "TAYLOR_ORDER"):
         return _table(name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
@@ -133,6 +133,16 @@ _constants_files: Dict[int, str] = {}
 
 
 State = Union[Dict[str, float], Sequence[float]]
+
+
+def _vector(name: str, v: Sequence[float]):
+    """v as the library's array of NX doubles; ValueError naming it if it
+    has another shape (a short one would reach C padded with zeros)."""
+    nx = _table("NX")
+    v = numpy.asarray(v, dtype=float)
+    if v.shape != (nx,):
+        raise ValueError(f"{name} has shape {v.shape}, not ({nx},)")
+    return (ctypes.c_double * nx)(*v)
 
 
 def _state(u: State):
@@ -293,44 +303,34 @@ class Model:
         return numpy.array(f, dtype=float), numpy.array(J, dtype=float).reshape(nx, nx).T
 
     def taylor(self, u: Sequence[float], d: Sequence[float]) -> numpy.ndarray:
-        """[f, D f[d], D^2 f[d, d], D^3 f[d, d, d]] at the state u along d
-        (sequences in UNAMES order), a 4 x NX array, exact to rounding; at a
-        kink of f (|eta'| eta' at eta' = 0) the one-sided derivatives, t -> 0+."""
-        nx = _table("NX")
-        out = numpy.zeros(4 * nx)
-        self._form(library().mlg_rhs_taylor, out, u=u, d=d)
-        return out.reshape(4, nx)
+        """[f, D f[d], D^2 f[d, d], ..., D^K f[d, ..., d]] at the state u along
+        d (sequences in UNAMES order), a (K + 1) x NX array, K = TAYLOR_ORDER,
+        exact to rounding; at a kink of f (|eta'| eta' at eta' = 0) the
+        one-sided derivatives, t -> 0+."""
+        nx, order = _table("NX"), _table("TAYLOR_ORDER")
+        out = (ctypes.c_double * ((order + 1) * nx))()
+        self._call(library().mlg_rhs_taylor, _vector("taylor: u", u), _vector("taylor: d", d), out)
+        return numpy.array(out, dtype=float).reshape(order + 1, nx)
 
-    def second_form(self, u: Sequence[float], x: Sequence[float],
-                    y: Sequence[float]) -> numpy.ndarray:
-        """B(x, y) = sum_jk d2f/du_j du_k x_j y_k at the state u (a sequence in
-        UNAMES order) for real x and y, exact to rounding (c/vector_field_taylor.c)."""
-        return self._form(library().mlg_second_form, None, u=u, x=x, y=y)
+    def form(self, u: Sequence[float], *vectors: Sequence[float]) -> numpy.ndarray:
+        """The n-th multilinear form of f at the state u for n = len(vectors)
+        real arguments (1 <= n <= TAYLOR_ORDER), sequences in UNAMES order:
+        F_i = sum d^n f_i / du_j1 ... du_jn v1_j1 ... vn_jn, Kuznetsov's B, C,
+        D, E for n = 2..5, exact to rounding (c/vector_field_taylor.c)."""
+        order = _table("TAYLOR_ORDER")
+        if not 1 <= len(vectors) <= order:
+            raise ValueError(f"form: {len(vectors)} vectors; the library's forms take 1 to {order}")
+        arguments = (ctypes.POINTER(ctypes.c_double) * len(vectors))(
+            *[_vector(f"form: vector {k + 1}", v) for k, v in enumerate(vectors)])
+        out = (ctypes.c_double * _table("NX"))()
+        self._call(library().mlg_form, _vector("form: u", u), len(vectors), arguments, out)
+        return numpy.array(out, dtype=float)
 
-    def third_form(self, u: Sequence[float], x: Sequence[float], y: Sequence[float],
-                   z: Sequence[float]) -> numpy.ndarray:
-        """C(x, y, z) = sum_jkl d3f/du_j du_k du_l x_j y_k z_l at u, real
-        arguments, exact to rounding."""
-        return self._form(library().mlg_third_form, None, u=u, x=x, y=y, z=z)
-
-    def _form(self, function, out, **arguments) -> numpy.ndarray:
-        """function(params, *arguments, out) with arguments of shape (NX,),
-        each checked (ValueError naming it); out: an array to fill (default
-        NX values)."""
-        nx = _table("NX")
-        vectors = []
-        for name, v in arguments.items():
-            v = numpy.asarray(v, dtype=float)
-            if v.shape != (nx,):
-                raise ValueError(f"{function.__name__}: {name} has shape {v.shape}, not ({nx},)")
-            vectors.append((ctypes.c_double * nx)(*v))
-        out = numpy.zeros(nx) if out is None else out
-        buffer = (ctypes.c_double * len(out))()
-        status = function(ctypes.byref(self._p), *vectors, buffer)
+    def _call(self, function, *arguments):
+        """function(params, *arguments); a status other than 0 raised, naming it."""
+        status = function(ctypes.byref(self._p), *arguments)
         if status != 0:
             raise RuntimeError(f"{function.__name__}: {library().mlg_status_text(status).decode()}")
-        out[:] = buffer
-        return out
 
     def energy(self, u: Sequence[float], eta_ref: float) -> Tuple[float, float]:
         """(kinetic, potential) of the model's Lagrangian at the state u (a
