@@ -29,8 +29,8 @@ class Cubic:
         return J
 
     def form(self, u, *vectors):
-        """B = 0; C: D^3 of b (x^3 + x y^2) and b (y^3 + y x^2)."""
-        if len(vectors) == 2:
+        """B, D, E = 0; C: D^3 of b (x^3 + x y^2) and b (y^3 + y x^2)."""
+        if len(vectors) != 3:
             return np.zeros(5)
         x, y, z = vectors
 
@@ -68,7 +68,8 @@ def nilpotent_at(a, b):
 
 def test_gh_hh_zh_located_on_a_hopf_curve():
     """Stored points b = -0.95, -0.85, ... (none at a zero); each point
-    located to 1e-8 of the curve's extent, l1 = 2 b along it."""
+    located to 1e-8 of the curve's extent, l1 = 2 b along it; at GH the
+    field is linear to fifth order, l2 = 0."""
     b = np.linspace(-0.95, 0.95, 20)
     found = codim2.along_hopf_curve([(0.0, v) for v in b], cubic_at)
     assert np.array(found["l1"]) == pytest.approx(2 * b, rel=1e-12)
@@ -78,6 +79,7 @@ def test_gh_hh_zh_located_on_a_hopf_curve():
         assert point["a"] == pytest.approx(0.0, abs=2e-8)
         assert point["omega"] == pytest.approx(1.0, rel=1e-9)
     assert found["points"][0]["l1"] == pytest.approx(0.0, abs=1e-7)
+    assert found["points"][0]["l2"] == pytest.approx(0.0, abs=1e-12)   # no quintic terms
 
 
 def test_bt_located_where_the_hopf_curve_meets_the_neutral_saddles():

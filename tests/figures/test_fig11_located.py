@@ -1,13 +1,14 @@
 """Fig. 11's located codimension-two points (figures/fig11/located.py) on
 synthetic input, no AUTO run: a fold curve's end is a GH point only near
-a located one, the sign of l2 from the side the fold curve leaves on, and
-one entry per point where two curves both locate it."""
+a located one, the sign of l2 from the side the fold curve leaves on
+against the computed l2, and one entry per point where two curves both
+locate it."""
 import pytest
 
 from mlgshimmy.figures.fig11 import ends, located
 
 GH = {"type": "GH", "V": 40.4767, "Fstar": 1.37361, "curve": "hopf1", "omega": 60.0,
-      "l1": 0.0, "dl1_db": 745.0, "a2": -1.3e-5}
+      "l1": 0.0, "l2": -2.5e4, "dl1_db": 745.0, "a2": -1.3e-5}
 
 
 def fold(Vs, Fs):
@@ -30,7 +31,8 @@ def test_a_fold_curves_end_is_a_gh_point_only_within_the_fold_tolerance():
 def test_l2_sign_from_the_side_the_fold_curve_leaves_on(above, sign):
     """l1 rises with F* through the GH point (subcritical above it): a fold
     curve of orbits that leaves on the side above has l1 > 0 there, so
-    l1 l2 < 0 gives l2 < 0; leaving below, l2 > 0."""
+    l1 l2 < 0 gives l2 < 0; leaving below, l2 > 0, which the point's
+    computed l2 < 0 contradicts."""
     step = 0.01 if above else -0.01
     Fs = [GH["Fstar"] + step * k for k in (5, 4, 3, 2, 1, 0)]
     Vs = [GH["V"] + 0.5 * k for k in (5, 4, 3, 2, 1, 0)]
@@ -38,7 +40,9 @@ def test_l2_sign_from_the_side_the_fold_curve_leaves_on(above, sign):
     stop = {"V": Vs[-1], "Fstar": Fs[-1], "curve": "fold1"}
     located.l2_signs([point], [fold(Vs, Fs)], [stop])
     assert point["l2_sign"] == sign and point["l2_from"] == "fold1"
-    assert ("l2 < 0" if sign < 0 else "l2 > 0") in located.coefficient(point)
+    text = located.coefficient(point)
+    assert "l2 = -2.5e+04" in text
+    assert f"says l2 {'< 0' if sign < 0 else '> 0'}: {'agrees' if above else 'DISAGREES'}" in text
 
 
 def test_a_point_two_curves_locate_is_listed_once():

@@ -55,9 +55,12 @@ def parts() -> Dict[str, Any]:
 
 def compute(parts: Any) -> Dict[str, Any]:
     diagrams, orbits = yfp_stored.diagrams_of(parts.all())
+    codim2 = yfp_codim2.codim2_points(parts["hopf_curves"], "fixed", "V", **gear.parameters())
     return {"numbers": numbers(diagrams, orbits), "diagrams": diagrams, "orbits": orbits,
-            "hopf_curves": parts["hopf_curves"],
-            "codim2": yfp_codim2.codim2_points(parts["hopf_curves"], "fixed", "V", **gear.parameters())}
+            "hopf_curves": parts["hopf_curves"], "codim2": codim2,
+            # each GH point's l2 against the folds of the diagrams beside it
+            "codim2_folds": [yfp_codim2.fold_check(p, diagrams, "fixed", **gear.parameters())
+                             if p["type"] == "GH" else None for p in codim2]}
 
 
 def lowest_orbit(curve: Mapping[str, Any], V: float) -> Tuple[float, str]:
@@ -91,7 +94,8 @@ def numbers(diagrams: Sequence[Mapping[str, Any]],
 
 
 def plot(result: Mapping[str, Any]) -> None:
-    paper.report("fig14", result["numbers"], notes=yfp_codim2.codim2_lines(result["codim2"]))
+    paper.report("fig14", result["numbers"],
+                 notes=yfp_codim2.codim2_lines(result["codim2"], checks=result["codim2_folds"]))
     fig = plt.figure(figsize=(12, 12))
     grid = fig.add_gridspec(4, 6)
     k_tlk = mlgmodel.Model("figures")["k_tlk"]

@@ -31,9 +31,10 @@ points: [(a, b)] of the curve in its two parameters, in order; at(a, b)
 sign change between two stored points is bisected along the segment
 joining them, each trial point moved back onto the curve along the
 segment's normal (Re of the critical pair = 0), until the segment is
-TOL of the curve's extent.  l2 at a GH point is not computed (it needs
-fifth derivatives): its sign data instead, dl1/db across it (_slope: the
-side of the GH point where the Hopf points are subcritical).  kink(model, u): the oleo kink's a2 at a point of the curve
+TOL of the curve's extent.  At a GH point the second Lyapunov coefficient
+l2 (shared.bautin: on which side the fold of limit cycles leaves) and
+dl1/db across it (_slope: the side of the GH point where the Hopf points
+are subcritical).  kink(model, u): the oleo kink's a2 at a point of the curve
 (where the mode moves eta', a2 decides the criticality up to an amplitude,
 and l1 = 0 is then the one-sided expansion's).
 """
@@ -44,7 +45,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 import numpy
 from numpy.typing import ArrayLike
 
-from mlgshimmy.shared import lyapunov, mlgmodel, spectrum
+from mlgshimmy.shared import bautin, lyapunov, mlgmodel, spectrum
 
 TOL = 1e-8       # of the curve's extent in each parameter
 TYPES = ("GH", "BT", "ZH", "HH")
@@ -158,7 +159,8 @@ def _slope(at, p0, p1, s, scale, along) -> float:
 def along_hopf_curve(points: Sequence[Tuple[float, float]], at: Callable,
                      along: int = 0) -> Dict[str, List]:
     """{"l1", "omega": at each stored point, "points": the codimension-two
-    points located between them, [{"type", "a", "b", "omega", "l1"}]};
+    points located between them, [{"type", "a", "b", "omega", "l1", and at
+    GH "l2", "dl1_db"}]};
     along: the parameter (0: a, 1: b) in which a trial point is moved back
     onto the curve, one the equilibrium does not depend on where there is
     one (V for straight rolling, docs/model.md 4.20)."""
@@ -175,6 +177,7 @@ def along_hopf_curve(points: Sequence[Tuple[float, float]], at: Callable,
                 point = {"type": kind, "a": a, "b": b, "omega": there["omega"],
                          "l1": there["GH"]}
                 if kind == "GH":
+                    point["l2"] = bautin.second_lyapunov(*at(a, b)).l2
                     point["dl1_db"] = _slope(at, points[k], points[k + 1], s, scale, along)
                 found.append(point)
     return {"l1": [v["GH"] for v in values], "omega": [v["omega"] for v in values],

@@ -135,7 +135,7 @@ def coefficient(A: numpy.ndarray, B: Callable, C: Callable) -> Hopf:
     return Hopf(bracket.real / (2 * omega), omega, q, p, real_part)
 
 
-def _state(u) -> numpy.ndarray:
+def state(u) -> numpy.ndarray:
     """u as an array, from a sequence or {state name: value}."""
     if isinstance(u, dict):
         u = [u[name] for name in mlgmodel.UNAMES]
@@ -145,14 +145,14 @@ def _state(u) -> numpy.ndarray:
 def first_lyapunov(model: Any, u: Any) -> Hopf:
     """l1 at the equilibrium u (a sequence or {state name: value}) of a
     model with exact forms (an mlgmodel.Model)."""
-    u = _state(u)
+    u = state(u)
     form = exact_form(model, u)
     return coefficient(model.jacobian(u), form, form)
 
 
 def at_step(model: Any, u: Any, h: float) -> Hopf:
     """coefficient() with B and C by central differences of step h."""
-    u = _state(u)
+    u = state(u)
     hopf = coefficient(model.jacobian(u), *difference_forms(model, u, h))
     return hopf._replace(h=h)
 
@@ -195,7 +195,7 @@ def kink_coefficient(model: Any, u: Any, hopf: Hopf, steps: int = KINK_STEPS) ->
     Zero where f is twice differentiable there: B(x, x) has harmonics 0 and
     2 only.  With r = |z|: r' = mu r + Re(a2) r^2 + omega l1 r^3, so for
     small r Re a2 < 0 stabilises (supercritical), whatever l1 says."""
-    u = _state(u)
+    u = state(u)
     theta = 2 * numpy.pi * numpy.arange(steps) / steps
     planar = [2 * numpy.real(hopf.q * numpy.exp(1j * t)) for t in theta]
     terms = [numpy.vdot(hopf.p, 0.5 * model.taylor(u, x)[2]) * numpy.exp(-1j * t)

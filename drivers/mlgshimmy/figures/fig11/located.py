@@ -43,15 +43,15 @@ def _plain(point, curve, at):
     if point["type"] == "GH":
         point = dict(point)
         point["a2"], _ = codim2.kink(*at(point["a"], point["b"]))
-    for key in ("omega", "l1", "dl1_db", "a2"):
+    for key in ("omega", "l1", "l2", "dl1_db", "a2"):
         if key in point:
             out[key] = None if not numpy.isfinite(point[key]) else float(point[key])
     return out
 
 
 def points(drawn: Mapping[str, Any]) -> List[Dict[str, Any]]:
-    """[{"type", "V", "Fstar", "curve", "omega", "l1", and at GH "dl1_db",
-    "a2"}] on the drawn Hopf curves ({"hopf": [...], "zero":
+    """[{"type", "V", "Fstar", "curve", "omega", "l1", and at GH "l2",
+    "dl1_db", "a2"}] on the drawn Hopf curves ({"hopf": [...], "zero":
     [...]}, stored diagrams), in V, those inside the plane (ends.in_plane: a
     curve started on its lower edge may run below it); a branch codim2
     cannot follow is reported and left out."""
@@ -97,10 +97,11 @@ def l2_signs(located: Sequence[Dict[str, Any]], folds: Sequence[Any],
              ends: Sequence[Mapping[str, Any]]) -> None:
     """Each located GH point where a fold curve of orbits ends (`ends`:
     ends.explained's "generalised_hopf"; `folds`: the drawn fold curves,
-    stored diagrams) gets "l2_sign" and "l2_from" (the curve): near a GH
-    point the fold curve leaves along the Hopf curve on the side where
-    l1 l2 < 0 (Kuznetsov, section 8.3), so sign l2 = -sign(dl1/dF* dF*),
-    dF* from the GH point to the fold curve BACK steps before its end."""
+    stored diagrams) gets "l2_sign" and "l2_from" (the curve), the check of
+    its l2: near a GH point the fold curve leaves along the Hopf curve on
+    the side where l1 l2 < 0 (Kuznetsov, section 8.3), so sign l2 =
+    -sign(dl1/dF* dF*), dF* from the GH point to the fold curve BACK steps
+    before its end."""
     for stop in ends:
         gh = min((p for p in located if p["type"] == "GH"), key=lambda p: distance(p, stop))
         n = int(stop["curve"][len("fold"):]) - 1
@@ -114,16 +115,18 @@ def l2_signs(located: Sequence[Dict[str, Any]], folds: Sequence[Any],
 
 
 def coefficient(p: Mapping[str, Any]) -> str:
-    """The point's coefficient as the table writes it: at GH the sign data
-    (l2 is not computed: codim2) and the oleo kink's a2 where it is more
-    than rounding (A2_NOISE; at l1 = 0 a nonzero a2 is the leading term:
-    the point is then the one-sided expansion's GH)."""
+    """The point's coefficient as the table writes it: at GH l2 (shared.bautin),
+    the side dl1/dF* makes subcritical, whether the side a fold curve
+    leaves on agrees with l2's sign (l2_signs), and the oleo kink's a2
+    where it is more than rounding (A2_NOISE; at l1 = 0 a nonzero a2 is
+    the leading term: the point is then the one-sided expansion's GH)."""
     if p["type"] == "GH":
         side = "F* above" if (p["dl1_db"] or 0.0) > 0 else "F* below"
-        text = f"l2 not computed; dl1/dF* = {p['dl1_db']:+.3g} (subcritical for {side})"
+        text = f"l2 = {p['l2']:+.3g}; dl1/dF* = {p['dl1_db']:+.3g} (subcritical for {side})"
         if "l2_sign" in p:
-            text += (f"; l2 {'< 0' if p['l2_sign'] < 0 else '> 0'} by the side {p['l2_from']} "
-                     "leaves on")
+            verdict = "agrees" if p["l2_sign"] == numpy.sign(p["l2"]) else "DISAGREES"
+            text += (f"; the side {p['l2_from']} leaves on says l2 "
+                     f"{'< 0' if p['l2_sign'] < 0 else '> 0'}: {verdict}")
         if abs(p["a2"] or 0.0) > A2_NOISE:
             text += f"; the oleo's kink: Re a2 = {p['a2']:+.3g}"
         return text

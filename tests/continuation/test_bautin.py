@@ -1,0 +1,193 @@
+"""Tests of shared/bautin.py: the second Lyapunov coefficient l2 on the
+Bautin normal form written in other coordinates, where l1 and l2 are known
+in closed form, its l1 against lyapunov.coefficient's (eq. 3.20), and l2
+at Fig. 14's GH point against the fold of limit cycles of the reference
+diagrams beside it."""
+import os
+
+import numpy as np
+import pytest
+
+import helpers
+from mlgshimmy.shared import bautin, lyapunov, mlgmodel, naming, spectrum, yfp_codim2, yfp_runs
+
+REFERENCE = os.path.join(helpers.ROOT, "tests", "reference", "fig14")
+
+OMEGA, LAM = 2.0, 0.7
+
+
+class NormalFormSeenElsewhere:
+    """x' = f(x): w = x1 + i x2 has w' = (i OMEGA + c1 |w|^2 + c2 |w|^4) w,
+    x3' = -LAM x3, seen in y with x = Psi(y) = y + quadratic + cubic terms
+    (DPsi(0) = I, so q and p at 0 are those of x): y' = DPsi(y)^-1 f(Psi(y)),
+    whose forms B ... E at 0 all mix the three coordinates.  Along
+    q = (1, -i, 0) / sqrt2 (<q, q> = 1) w = sqrt2 z, so Kuznetsov's
+    coefficients are 2 c1 and 4 c2: l1 = 2 Re c1 / OMEGA, l2 = 4 Re c2 /
+    OMEGA (the first nonzero one is invariant under Psi).  The forms come
+    from the field's analytic continuation: the coefficient of s_1 ... s_n
+    in g(sum s_k v_k), by the discrete Cauchy integral over s_k = R
+    e^(2 pi i m / M) (aliasing ~ R^M, rounding ~ 1e-16 / R^(n-1)): l2 to
+    2e-14 at R = 0.1, M = 14, to 1e-11 at M = 10."""
+    R, M = 0.1, 14
+
+    def __init__(self, c1, c2):
+        self.c1, self.c2 = complex(c1), complex(c2)
+
+    def field(self, x):
+        """f at states x (..., 3), complex ones too: |w|^2 continued as
+        x1^2 + x2^2, w' = (alpha + i beta) w with alpha, beta its real
+        polynomials."""
+        s = x[..., 0] ** 2 + x[..., 1] ** 2
+        alpha = self.c1.real * s + self.c2.real * s ** 2
+        beta = OMEGA + self.c1.imag * s + self.c2.imag * s ** 2
+        return np.stack([alpha * x[..., 0] - beta * x[..., 1],
+                         beta * x[..., 0] + alpha * x[..., 1], -LAM * x[..., 2]], axis=-1)
+
+    @staticmethod
+    def psi(y):
+        y1, y2, y3 = y[..., 0], y[..., 1], y[..., 2]
+        return np.stack([y1 + 0.3 * y1 * y3 - 0.2 * y2 ** 2 + 0.15 * y2 ** 3,
+                         y2 + 0.25 * y1 ** 2 + 0.15 * y2 * y3 + 0.1 * y1 ** 3,
+                         y3 + 0.4 * y1 * y2 - 0.3 * y3 ** 2 + 0.2 * y1 * y2 ** 2], axis=-1)
+
+    @staticmethod
+    def dpsi(y):
+        y1, y2, y3 = y[..., 0], y[..., 1], y[..., 2]
+        one, zero = np.ones_like(y1), np.zeros_like(y1)
+        rows = [[one + 0.3 * y3, -0.4 * y2 + 0.45 * y2 ** 2, 0.3 * y1],
+                [0.5 * y1 + 0.3 * y1 ** 2, one + 0.15 * y3, 0.15 * y2 + zero],
+                [0.4 * y2 + 0.2 * y2 ** 2, 0.4 * y1 + 0.4 * y1 * y2, one - 0.6 * y3]]
+        return np.stack([np.stack(row, axis=-1) for row in rows], axis=-2)
+
+    def g(self, y):
+        return np.linalg.solve(self.dpsi(y), self.field(self.psi(y))[..., None])[..., 0]
+
+    def jacobian(self, u):
+        J = np.zeros((3, 3))
+        J[:2, :2] = [[0.0, -OMEGA], [OMEGA, 0.0]]
+        J[2, 2] = -LAM
+        return J
+
+    def form(self, *vectors):
+        n = len(vectors)
+        sizes = [np.linalg.norm(v) for v in vectors]
+        if min(sizes) == 0.0:
+            return np.zeros(3, dtype=complex)
+        s = self.R * np.exp(2j * np.pi * np.arange(self.M) / self.M)
+        grid = np.meshgrid(*[s] * n, indexing="ij")
+        y = sum(g[..., None] * (np.asarray(v) / size) for g, v, size in zip(grid, vectors, sizes))
+        weight = 1.0 / np.prod(grid, axis=0)
+        coefficient = np.mean(self.g(y) * weight[..., None], axis=tuple(range(n)))
+        return coefficient * np.prod(sizes)
+
+
+def test_the_field_is_the_normal_form_to_first_order():
+    """The discrete Cauchy integral of the first order gives the Jacobian."""
+    system = NormalFormSeenElsewhere(0.35j, -0.4 + 0.25j)
+    for e in np.eye(3):
+        assert system.form(e) == pytest.approx(system.jacobian(0) @ e, abs=1e-13)
+
+
+@pytest.mark.parametrize("c1, c2", [(0.35j, -0.4 + 0.25j), (-0.2j, 0.3 - 0.5j), (0.0, 0.15)],
+                         ids=["l2 < 0", "l2 > 0", "c1 = 0"])
+def test_l2_of_the_normal_form_in_other_coordinates(c1, c2):
+    """At Re c1 = 0: l1 = 0 to 1e-13, g_21 = 2 c1 to 1e-13 and l2 = 4 Re c2
+    / OMEGA to 1e-12 relative (found within 3e-14: the forms' rounding)."""
+    system = NormalFormSeenElsewhere(c1, c2)
+    gh = bautin.coefficients(system.jacobian(0), system.form)
+    assert gh.omega == pytest.approx(OMEGA, rel=1e-14)
+    assert gh.l1 == pytest.approx(0.0, abs=1e-13)
+    assert gh.g21 == pytest.approx(2 * c1, abs=1e-13)
+    assert gh.l2 == pytest.approx(4 * np.real(c2) / OMEGA, rel=1e-12)
+
+
+def test_l1_agrees_with_eq_3_20_away_from_a_gh_point():
+    """Re c1 = -0.3: bautin's l1 is lyapunov.coefficient's, 2 Re c1 / OMEGA."""
+    system = NormalFormSeenElsewhere(-0.3 + 0.1j, 0.2)
+    A = system.jacobian(0)
+    assert bautin.coefficients(A, system.form).l1 == pytest.approx(-0.3, rel=1e-10)
+    assert lyapunov.coefficient(A, system.form, system.form).l1 == pytest.approx(-0.3, rel=1e-10)
+
+
+def hopf_speed(yfp):
+    """Fig. 14's high-frequency Hopf point at this y_fp (F* = 1, eps = 0.1 mm)."""
+    (V, _), = spectrum.hopf_scan("figures", "V", np.linspace(35.0, 50.0, 16),
+                                 **yfp_runs.values("fixed", yfp))
+    return V
+
+
+def reference_orbits(yfp):
+    """(V, psi_amp) along the orbits from the Hopf point of the reference
+    diagram at this y_fp (b.y<y_fp>_po0: BR PT TY LAB V L2-NORM T psi_amp ...),
+    the Hopf point first."""
+    path = os.path.join(REFERENCE, f"y{yfp:g}", f"b.y{yfp:g}_po0")
+    rows = [line.split() for line in open(path)]
+    return np.array([(float(r[4]), float(r[7])) for r in rows if r[0] != "0"])
+
+
+def test_l2_at_fig14s_gh_point_puts_the_fold_of_cycles_where_the_diagrams_have_it():
+    """Fig. 14's GH point (located from the Hopf curve's points at y_fp =
+    0.098 ... 0.106, as test_codim2 does): l2 < 0 and dl1/dy_fp > 0, so the
+    fold of cycles runs beside the Hopf curve where l1 > 0, above the point
+    in y_fp.  The reference diagrams agree: at y_fp = 0.11 (l1 > 0) the
+    orbits leave the Hopf point down in V and turn at a fold; at 0.098
+    (l1 < 0) they leave upwards and never come below it.  The normal form
+    truncated at r^5, with l2 of the GH point and l1, omega, d Re lambda/dV
+    of the Hopf point at 0.11 (bautin.fold_of_cycles), puts that fold 1.12
+    m/s below the Hopf point at psi = 1.16e-4 rad; AUTO's is 1.224 m/s
+    below at 1.141e-4 rad.  Tolerances 15 % and 5 %: the terms left out are
+    of relative order l1 r^2 / (l2 r^4) ~ 1 at the fold, and 0.11 is 0.0075
+    mm from the point (l1 = 50 there, 0 at the point).  And bautin's l1
+    equals lyapunov's at both points, to rounding."""
+    yfps = (0.098, 0.100, 0.102, 0.104, 0.106)
+    gh, = yfp_codim2.codim2_points([{"V": [hopf_speed(y) for y in yfps], "yfp": yfps}], "fixed")
+    assert gh["type"] == "GH" and gh["l2"] < 0 and gh["dl1_dyfp"] > 0
+    model = mlgmodel.Model("figures", V=gh["V"], **yfp_runs.values("fixed", gh["yfp"]))
+    u = model.equilibrium()
+    assert bautin.second_lyapunov(model, u).l1 == pytest.approx(
+        lyapunov.first_lyapunov(model, u).l1, abs=1e-12)
+
+    above, below = reference_orbits(0.11), reference_orbits(0.098)
+    # the sides they leave on, from the first orbit past 1e-6 rad (AUTO's
+    # first step may go 1e-8 m/s either way)
+    for orbits, side in ((above, -1), (below, +1)):
+        first = orbits[np.argmax(orbits[:, 1] > 1e-6)]
+        assert np.sign(first[0] - orbits[0, 0]) == side
+    assert below[:, 0].min() >= below[0, 0] - 1e-6                      # no fold at 0.098
+    fold = above[np.argmin(above[:, 0])]
+    assert 0.5 < above[0, 0] - fold[0] < 5.0                            # a fold at 0.11
+
+    V_H = hopf_speed(0.11)
+    assert V_H == pytest.approx(above[0, 0], abs=1e-6)
+    values = yfp_runs.values("fixed", 0.11)
+    mode = naming.mode("figures", "V", V_H, **values)
+    assert mode["l1"] > 0
+    distance, r2 = bautin.fold_of_cycles(mode["l1"], gh["l2"], 2 * np.pi * mode["freq_hz"],
+                                         mode["mu_slope"])
+    model = mlgmodel.Model("figures", V=V_H, **values)
+    hopf = lyapunov.first_lyapunov(model, model.equilibrium())
+    assert bautin.second_lyapunov(model, model.equilibrium()).l1 == pytest.approx(hopf.l1,
+                                                                                 rel=1e-12)
+    assert distance == pytest.approx(fold[0] - V_H, rel=0.15)
+    assert 2 * abs(hopf.q[0]) * np.sqrt(r2) == pytest.approx(fold[1], rel=0.05)
+    # on the other side the normal form has no fold
+    assert np.isnan(bautin.fold_of_cycles(-1.0, gh["l2"], 100.0, 0.07)[0])
+
+
+@pytest.mark.parametrize("V, turn", [
+    ([41.1, 41.1 - 1e-8, 41.0, 40.2, 39.9, 40.5, 45.0], 39.9),   # down, a fold, back up
+    ([40.5, 40.5 - 1e-8, 40.6, 41.0, 44.0], None),               # up from the Hopf point
+    ([41.1, 40.0, 30.0], None),                                  # down to the run's end
+])
+def test_first_turn_of_a_branch_of_orbits(V, turn):
+    """yfp_codim2.first_turn: AUTO's first step 1e-8 m/s the wrong way is
+    no direction (STEP_NOISE); a branch that only ends has no turn."""
+    assert yfp_codim2.first_turn(V) == turn
+
+
+def test_fold_check_agrees_only_where_folds_lie_as_the_normal_form_says():
+    one = {"yfp": 0.11, "fold": 39.878, "predicted": 39.98}
+    other = {"yfp": 0.098, "fold": None, "predicted": None}
+    assert yfp_codim2.agrees([one, other])
+    assert not yfp_codim2.agrees([{**one, "fold": None}, other])
+    assert not yfp_codim2.agrees([one, {**other, "fold": 40.1}])
