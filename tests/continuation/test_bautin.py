@@ -174,6 +174,42 @@ def test_l2_at_fig14s_gh_point_puts_the_fold_of_cycles_where_the_diagrams_have_i
     assert np.isnan(bautin.fold_of_cycles(-1.0, gh["l2"], 100.0, 0.07)[0])
 
 
+def differenced_forms(model, u, h):
+    """The real forms with D and E as central differences of the exact C
+    (step h along each direction scaled to max-norm 1): D(x, y, z, w) =
+    d/ds C(x, y, z) at u + s w, E the four-point mixed difference in w, v."""
+    def form(*v):
+        if len(v) <= 3:
+            return model.form(u, *v)
+        scales = [np.max(np.abs(w)) for w in v[3:]]
+        steps = [h * w / size for w, size in zip(v[3:], scales)]
+        if len(v) == 4:
+            return (model.form(u + steps[0], *v[:3]) - model.form(u - steps[0], *v[:3])) \
+                * scales[0] / (2 * h)
+        a, b = steps
+        return sum(sa * sb * model.form(u + sa * a + sb * b, *v[:3])
+                   for sa in (1, -1) for sb in (1, -1)) * scales[0] * scales[1] / (4 * h * h)
+    return form
+
+
+def test_l2_with_the_fourth_and_fifth_forms_by_differences_of_the_third():
+    """At Fig. 14's Hopf point at y_fp = 0.104 mm: l2 from the exact D and
+    E (Taylor arithmetic to fifth order) against l2 with D and E as central
+    differences of the exact C, an independent path for both.  The
+    differences converge on it as h^2 (error 3.8e-7 at h = 1e-5, 3.4e-8 at
+    3e-6, a ratio of 11.1 for (10/3)^2 = 11.1): within 1e-7 at 3e-6, and
+    the ratio of the two errors between 8 and 14."""
+    model = mlgmodel.Model("figures", V=hopf_speed(0.104), **yfp_runs.values("fixed", 0.104))
+    u = lyapunov.state(model.equilibrium())
+    exact = bautin.second_lyapunov(model, u)
+    errors = []
+    for h in (1e-5, 3e-6):
+        differenced = bautin.coefficients(model.jacobian(u),
+                                          lyapunov.complex_form(differenced_forms(model, u, h)))
+        assert differenced.l1 == pytest.approx(exact.l1, rel=1e-12)
+        errors.append(abs(differenced.l2 / exact.l2 - 1))
+    assert errors[1] < 1e-7 and 8 < errors[0] / errors[1] < 14
+
 @pytest.mark.parametrize("V, turn", [
     ([41.1, 41.1 - 1e-8, 41.0, 40.2, 39.9, 40.5, 45.0], 39.9),   # down, a fold, back up
     ([40.5, 40.5 - 1e-8, 40.6, 41.0, 44.0], None),               # up from the Hopf point
