@@ -9,7 +9,7 @@ Applied Bifurcation Theory, 3rd ed., section 8.3).
 The centre manifold u = u0 + H(z, zbar), H = sum c_jk z^j zbar^k (c_10 = q,
 c_01 = conj q), carries the normal form z' = i omega z + g_21 z|z|^2 + g_32
 z|z|^4; f(u0 + H) = H_z z' + H_zbar zbar' is solved order by order for c_jk
-and the resonant g_(k+1)k (Kuznetsov, section 8.7; Kuznetsov, SIAM J. Numer.
+and the resonant g_(k+1)k (Kuznetsov, chapter 8, the critical normal forms; SIAM J. Numer.
 Anal. 36 (1999) 1104, the Bautin point: g_21 = G21 / 2, g_32 = G32 / 12):
 
   (i omega (j - k) I - A) c_jk = R_jk - L_jk - g_jk q,
