@@ -25,6 +25,7 @@
 #define NPROBES 3
 #define NSTEPS 6
 #define STEP_MAX 1e-2    /* times the directions, which are of the states' scales */
+#define HIGHER_EVERY 3   /* D and E on every third sample: their differences cost 60 forms */
 
 static void direction(const double *scale, double *x)
 {
@@ -134,7 +135,7 @@ int main(void)
     /* D and E by region: inside, edge, outside the freeplay, zero freeplay */
     double worst_D[4] = {0, 0, 0, 0}, worst_E[4] = {0, 0, 0, 0}, worst_polar[4] = {0, 0, 0, 0};
     int counted = 0, outside_domain = 0, value_differs = 0, per_region[4] = {0, 0, 0, 0};
-    int nonzero_C = 0, forms_failed = 0;
+    int nonzero_C = 0, forms_failed = 0, higher_counted = 0;
     const char *worst_where = "";
     for (int n = 0; n < NSAMPLES; n++) {
         sample s = draw(n);
@@ -153,7 +154,7 @@ int main(void)
         double Cfd[NPROBES][NSTEPS][MLG_NX], slope[NPROBES][MLG_NX], Jx[NPROBES][MLG_NX];
         double D[NPROBES][MLG_NX], E[NPROBES][MLG_NX], Dfd[NPROBES][NSTEPS][MLG_NX];
         double Efd[NPROBES][NSTEPS][MLG_NX], fifth[NPROBES][MLG_NX], E_diag[NPROBES][MLG_NX];
-        int status = MLG_OK;
+        int status = MLG_OK, higher = n % HIGHER_EVERY == 0;
         for (int k = 0; k < NPROBES; k++) {
             double x[MLG_NX], y[MLG_NX], z[MLG_NX], w[MLG_NX], v[MLG_NX], d1[MLG_NX], d2[MLG_NX];
             double taylor[(MLG_TAYLOR_ORDER + 1) * MLG_NX];
@@ -179,8 +180,10 @@ int main(void)
                 third_difference(&s, x, y, z, h, d1);
                 third_difference(&s, x, y, z, 0.5 * h, d2);
                 for (int i = 0; i < MLG_NX; i++) Cfd[k][m][i] = (4.0 * d2[i] - d1[i]) / 3.0;
-                form_difference(&s, 3, xyz, w, h, Dfd[k][m]);
-                form_difference(&s, 4, xyzw, v, h, Efd[k][m]);
+                if (higher) {
+                    form_difference(&s, 3, xyz, w, h, Dfd[k][m]);
+                    form_difference(&s, 4, xyzw, v, h, Efd[k][m]);
+                }
             }
         }
         if (status != MLG_OK) {   /* the same state as the Jacobian's: never */
@@ -193,8 +196,11 @@ int main(void)
         for (int i = 0; i < MLG_NX; i++) nonzero_C += C[0][i] != 0.0;
         worst_slope = fmax(worst_slope, probe_error(slope, &Jx[0][0], 1));
         worst_B = fmax(worst_B, probe_error(B, &Bfd[0][0][0], NSTEPS));
-        worst_D[region] = fmax(worst_D[region], probe_error(D, &Dfd[0][0][0], NSTEPS));
-        worst_E[region] = fmax(worst_E[region], probe_error(E, &Efd[0][0][0], NSTEPS));
+        if (higher) {
+            higher_counted++;
+            worst_D[region] = fmax(worst_D[region], probe_error(D, &Dfd[0][0][0], NSTEPS));
+            worst_E[region] = fmax(worst_E[region], probe_error(E, &Efd[0][0][0], NSTEPS));
+        }
         worst_polar[region] = fmax(worst_polar[region], probe_error(E_diag, &fifth[0][0], 1));
         double err_C = probe_error(C, &Cfd[0][0][0], NSTEPS);
         worst_region_C[region] = fmax(worst_region_C[region], err_C);
@@ -227,6 +233,7 @@ int main(void)
      * terms of the smooth field are tiny (|E_i| ~ 1e-9 along these directions)
      * and carry the rounding of the model's large intermediate terms: up to
      * 5 % of E there, printed, not a defect of the arithmetic */
+    printf("# D and E against differences at %d samples\n", higher_counted);
     printf("# D error by region: inside %.2e, edge %.2e, outside %.2e, zero freeplay %.2e\n",
            worst_D[0], worst_D[1], worst_D[2], worst_D[3]);
     printf("# E error by region: inside %.2e, edge %.2e, outside %.2e, zero freeplay %.2e\n",
@@ -240,7 +247,7 @@ int main(void)
           "max error %.2e with freeplay", polar);
     check(err_D <= 1e-4, "fourth_form_matches_differences_of_the_third",
           "max error %.2e with freeplay", err_D);
-    check(err_E <= 1e-3, "fifth_form_matches_differences_of_the_fourth",
+    check(err_E <= 1e-4, "fifth_form_matches_differences_of_the_fourth",
           "max error %.2e with freeplay", err_E);
     double up = kink_error(0.05), down = kink_error(-0.05);
     check(up < 1e-3 && down < 1e-3, "one_sided_at_the_oleo_kink",
