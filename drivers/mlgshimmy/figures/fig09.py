@@ -75,13 +75,15 @@ def about(result: Mapping[str, Any]) -> List[str]:
              f"{sign}",
              "codimension-two points on it (codim2): " + (", ".join(
                  f"{p['type']} at V = {p['a']:.6g} m/s, F* = {p['b']:.6g} (omega "
-                 f"{p['omega']:.4g} rad/s, l1 {p['l1']:+.4g})" for p in found) or "none")]
+                 f"{p['omega']:.4g} rad/s, l1 {p['l1']:+.4g}"
+                 + (f", l2 {p['l2']:+.4g}" if p["type"] == "GH" else "") + ")" for p in found)
+                 or "none")]
     decided = [a2 for a2, psi in result["kinks"] if psi > naming.SEEN]
     if decided:
         lines.append(f"the oleo's kink decides at {len(decided)} of {len(result['kinks'])} points "
                      f"(Re a2 {min(decided):+.3g} to {max(decided):+.3g}; "
                      f"{'supercritical' if max(decided) < 0 else 'mixed'} there): "
-                     "the mode moves eta', l1 and its GH points are those of the one-sided "
+                     "the mode moves eta', l1, l2 and its GH points are those of the one-sided "
                      "expansion, above the kink's amplitude")
     lines += [f"end at F* = {Fstar:.3g}: {p['about']}"
               for (Fstar, _), p in zip(result["ends"], result["named"])]
