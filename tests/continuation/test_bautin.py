@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 import helpers
-from mlgshimmy.shared import bautin, lyapunov, mlgmodel, naming, spectrum, yfp_codim2, yfp_runs
+from mlgshimmy.shared import (bautin, lyapunov, mlgmodel, naming, rundirs, spectrum, yfp_codim2,
+                               yfp_runs, yfp_stored)
 
 REFERENCE = os.path.join(helpers.ROOT, "tests", "reference", "fig14")
 
@@ -125,7 +126,30 @@ def reference_orbits(yfp):
     return np.array([(float(r[4]), float(r[7])) for r in rows if r[0] != "0"])
 
 
-def test_l2_at_fig14s_gh_point_puts_the_fold_of_cycles_where_the_diagrams_have_it():
+@pytest.fixture(scope="module")
+def fig14_gh():
+    """Fig. 14's GH point, located from the Hopf curve's points at y_fp =
+    0.098 ... 0.106 as test_codim2 does."""
+    yfps = (0.098, 0.100, 0.102, 0.104, 0.106)
+    gh, = yfp_codim2.codim2_points([{"V": [hopf_speed(y) for y in yfps], "yfp": yfps}], "fixed")
+    return gh
+
+
+def fold_predicted(gh, yfp):
+    """(Hopf speed, the normal form's fold: distance in V, psi amplitude) at
+    this y_fp, with l1, omega, d Re lambda/dV of its Hopf point and l2 of
+    the GH point (bautin.fold_of_cycles)."""
+    V_H = hopf_speed(yfp)
+    values = yfp_runs.values("fixed", yfp)
+    mode = naming.mode("figures", "V", V_H, **values)
+    distance, r2 = bautin.fold_of_cycles(mode["l1"], gh["l2"], 2 * np.pi * mode["freq_hz"],
+                                         mode["mu_slope"])
+    model = mlgmodel.Model("figures", V=V_H, **values)
+    q_psi = abs(lyapunov.first_lyapunov(model, model.equilibrium()).q[0])
+    return V_H, distance, 2 * q_psi * np.sqrt(r2)
+
+
+def test_l2_at_fig14s_gh_point_puts_the_fold_of_cycles_where_the_diagrams_have_it(fig14_gh):
     """Fig. 14's GH point (located from the Hopf curve's points at y_fp =
     0.098 ... 0.106, as test_codim2 does): l2 < 0 and dl1/dy_fp > 0, so the
     fold of cycles runs beside the Hopf curve where l1 > 0, above the point
@@ -139,8 +163,7 @@ def test_l2_at_fig14s_gh_point_puts_the_fold_of_cycles_where_the_diagrams_have_i
     of relative order l1 r^2 / (l2 r^4) ~ 1 at the fold, and 0.11 is 0.0075
     mm from the point (l1 = 50 there, 0 at the point).  And bautin's l1
     equals lyapunov's at both points, to rounding."""
-    yfps = (0.098, 0.100, 0.102, 0.104, 0.106)
-    gh, = yfp_codim2.codim2_points([{"V": [hopf_speed(y) for y in yfps], "yfp": yfps}], "fixed")
+    gh = fig14_gh
     assert gh["type"] == "GH" and gh["l2"] < 0 and gh["dl1_dyfp"] > 0
     model = mlgmodel.Model("figures", V=gh["V"], **yfp_runs.values("fixed", gh["yfp"]))
     u = model.equilibrium()
@@ -157,21 +180,40 @@ def test_l2_at_fig14s_gh_point_puts_the_fold_of_cycles_where_the_diagrams_have_i
     fold = above[np.argmin(above[:, 0])]
     assert 0.5 < above[0, 0] - fold[0] < 5.0                            # a fold at 0.11
 
-    V_H = hopf_speed(0.11)
+    V_H, distance, amplitude = fold_predicted(gh, 0.11)
     assert V_H == pytest.approx(above[0, 0], abs=1e-6)
     values = yfp_runs.values("fixed", 0.11)
-    mode = naming.mode("figures", "V", V_H, **values)
-    assert mode["l1"] > 0
-    distance, r2 = bautin.fold_of_cycles(mode["l1"], gh["l2"], 2 * np.pi * mode["freq_hz"],
-                                         mode["mu_slope"])
     model = mlgmodel.Model("figures", V=V_H, **values)
     hopf = lyapunov.first_lyapunov(model, model.equilibrium())
+    assert hopf.l1 > 0
     assert bautin.second_lyapunov(model, model.equilibrium()).l1 == pytest.approx(hopf.l1,
                                                                                  rel=1e-12)
     assert distance == pytest.approx(fold[0] - V_H, rel=0.15)
-    assert 2 * abs(hopf.q[0]) * np.sqrt(r2) == pytest.approx(fold[1], rel=0.05)
+    assert amplitude == pytest.approx(fold[1], rel=0.05)
     # on the other side the normal form has no fold
     assert np.isnan(bautin.fold_of_cycles(-1.0, gh["l2"], 100.0, 0.07)[0])
+
+
+def test_the_fold_of_cycles_nearer_the_gh_point_converges_on_the_normal_forms(fig14_gh,
+                                                                               tmp_path):
+    """Fig. 14's diagram in V at y_fp = 0.103 mm, 0.00054 mm from the GH
+    point (l1 = +3.8 at its Hopf point), run by AUTO as the figure runs it
+    (yfp_runs.diagram_in_V): its orbits turn 0.00795 m/s below the Hopf
+    point at psi = 3.0737e-5 rad, where the normal form with the GH point's
+    l2 puts the fold 0.00790 m/s below at 3.074e-5.  The error of the
+    distance falls with l1 (8.3 % at 0.11 mm, l1 = 49.9; 2.0 % at 0.104,
+    l1 = 10.8; 0.7 % here), as the next term of the normal form does:
+    tolerances 2 % and 0.5 %."""
+    with pytest.MonkeyPatch.context() as mp:
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
+        diagram = yfp_stored.stored_diagram(yfp_runs.diagram_in_V(
+            str(tmp_path), "y0.103", "fixed", 0.103, uzr=(), figure="test_bautin"))
+    V_H, distance, amplitude = fold_predicted(fig14_gh, 0.103)
+    branch, = [b["columns"] for b in diagram["branches"] if abs(b["columns"]["V"][0] - V_H) < 1e-3]
+    turn = yfp_codim2.first_turn(branch["V"])
+    at_turn = np.asarray(branch["psi_amp"])[np.argmin(np.abs(np.asarray(branch["V"]) - turn))]
+    assert turn - V_H == pytest.approx(distance, rel=0.02)
+    assert at_turn == pytest.approx(amplitude, rel=0.005)
 
 
 def differenced_forms(model, u, h):
