@@ -27,7 +27,7 @@ l2 by s^-4); its sign does not.
 """
 import itertools
 import math
-from typing import Callable, Dict, NamedTuple, Tuple
+from typing import Any, Callable, Dict, NamedTuple, Tuple
 
 import numpy
 
@@ -101,7 +101,7 @@ def coefficients(A: numpy.ndarray, form: Callable) -> Bautin:
     return Bautin(g[(2, 1)].real / omega, g[(3, 2)].real / omega, omega, g[(2, 1)], g[(3, 2)])
 
 
-def second_lyapunov(model, u) -> Bautin:
+def second_lyapunov(model: Any, u: Any) -> Bautin:
     """l1 and l2 at the equilibrium u of an mlgmodel.Model, its forms exact
     (lyapunov.exact_form: Taylor arithmetic of the c/ library)."""
     u = lyapunov.state(u)

@@ -135,7 +135,7 @@ def coefficient(A: numpy.ndarray, B: Callable, C: Callable) -> Hopf:
     return Hopf(bracket.real / (2 * omega), omega, q, p, real_part)
 
 
-def state(u) -> numpy.ndarray:
+def state(u: Any) -> numpy.ndarray:
     """u as an array, from a sequence or {state name: value}."""
     if isinstance(u, dict):
         u = [u[name] for name in mlgmodel.UNAMES]

@@ -23,7 +23,7 @@ STEP_NOISE = 1e-6
 HOPF_TOL = 1e-3    # [m/s] a branch starting this near a Hopf point is born there
 
 
-def first_turn(V):
+def first_turn(V: Sequence[float]) -> Optional[float]:
     """The speed where a branch of orbits first reverses its direction in V
     (a fold, whether AUTO labels it LP or not), or None."""
     V = numpy.asarray(V, dtype=float)
@@ -75,7 +75,8 @@ def codim2_points(curves: Sequence[Mapping[str, Any]], scaling: str, other: str 
     return out
 
 
-def fold_check(gh, diagrams, scaling, **model):
+def fold_check(gh: Mapping[str, Any], diagrams: Sequence[Mapping[str, Any]], scaling: str,
+               **model: Any) -> List[Dict[str, Any]]:
     """What Fig. 14's diagrams in V (yfp_stored.stored_diagram) say of a GH
     point's l2: near it the fold of limit cycles runs beside the Hopf curve
     on the side of y_fp where l1 l2 < 0 (bautin.fold_of_cycles).  For the
@@ -104,7 +105,7 @@ def fold_check(gh, diagrams, scaling, **model):
     return out
 
 
-def agrees(check) -> bool:
+def agrees(check: Sequence[Mapping[str, Any]]) -> bool:
     """Whether each diagram of fold_check has a fold where the normal form
     puts one, and none where it puts none."""
     return all((c["fold"] is None) == (c["predicted"] is None) for c in check)
@@ -119,7 +120,8 @@ def _fold_text(check):
     return "; ".join(parts) + (": agrees" if agrees(check) else ": DISAGREES")
 
 
-def codim2_lines(points, other="V", checks=None):
+def codim2_lines(points: Sequence[Mapping[str, Any]], other: str = "V",
+                 checks: Optional[Sequence[Any]] = None) -> List[str]:
     """The table's lines of codim2_points; checks: fold_check's list per
     point (None: not checked)."""
     unit = " m/s" if other == "V" else ""
