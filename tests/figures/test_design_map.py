@@ -312,3 +312,14 @@ def test_a_finished_grid_is_done_for_status_missing_and_submit(tmp_path, monkeyp
         capture_output=True, text=True, env={**os.environ, "MLG_RUN_ROOT": str(tmp_path)})
     assert submitted.returncode == 0 and "nothing to submit" in submitted.stderr, \
         submitted.stdout + submitted.stderr
+
+
+def test_s_is_found_where_the_fast_steps_stop_before_it(tmp_path, capsys):
+    """At (10, 10) deg the orbits from H3 stop (MX) just short of their fold
+    with DSMAX 3; fold_S runs them again with Fig. 10's DSMAX 1 and finds S
+    at 42.262 m/s, as the 5 x 5 map's table gives it (docs/design-map.md)."""
+    _, values = design_map.at(10.0, 10.0)
+    h3 = [v for v, hz in design_map.speeds(values)["hopf"] if hz >= design_map.HIGH_HZ][0]
+    found = design_map.fold_S(str(tmp_path), h3, values)
+    assert "again at DSMAX 1" in capsys.readouterr().out
+    assert found["S"] == pytest.approx(42.262, abs=2e-3) and found["stop"] != "MX (no convergence)"

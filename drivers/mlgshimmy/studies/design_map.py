@@ -98,6 +98,9 @@ PSI_AMP_STOP = 0.01          # rad: the branch from H3 is followed to here, past
 # that reached it (S within 2e-5 m/s of DSMAX 1's at four geometries, for
 # 60-75 % of the CPU)
 ORBIT_STEPS = {"DS": 0.05, "DSMAX": 3.0, "NMX": 2000, "DSMIN": 1e-9}
+# where the orbits stop (MX) at the fold S with DSMAX 3 before AUTO labels it
+# (23 of the 441 geometries of the 2-degree map), Fig. 10's DSMAX 1
+ORBIT_STEPS_RETRY = {**ORBIT_STEPS, "DSMAX": 1.0}
 KAPPA_LOADS = kappa_criterion.ENVELOPE_LOADS[::2]        # as studies.criterion
 KAPPA_FINER = (5, 4)
 HOPF_NAMES = ("H1", "H2", "H3")   # the paper's points, by mode (shared.naming)
@@ -121,6 +124,7 @@ def settings() -> Dict[str, Any]:
     return {"eom_terms": EOM, "Fstar": FSTAR, "freeplay": FREEPLAY, "high_Hz": HIGH_HZ,
             "V_scan": [ct.V_MIN, ct.V_MAX, len(ct.SPEED_SCAN)],
             "psi_amp_stop": PSI_AMP_STOP, "orbit_steps": ORBIT_STEPS,
+            "orbit_steps_retry": ORBIT_STEPS_RETRY,
             "kappa_loads": [float(F) for F in KAPPA_LOADS], "kappa_finer": KAPPA_FINER}
 
 
@@ -186,11 +190,17 @@ def fold_S(rundir: str, start: Optional[float], values: Mapping[str, float]) -> 
                 "S_psi_amp": None}
     point = ct.hopf_point(rundir, "hb_high", "figures", "V", start, Fstar=FSTAR, **FREEPLAY,
                           **values)
-    orbits = ct.periodic_from(rundir, "po_high", point,
-                              stop={"V": [ct.V_MIN, ct.V_MAX], "psi_amp": PSI_AMP_STOP},
-                              allow_mx=True, **ORBIT_STEPS)
-    folds = [p for p in orbits("LP") if abs(p["V"] - start) > 1e-3 * start]
-    last = orbits()[-1]["TY name"]
+    for steps in (ORBIT_STEPS, ORBIT_STEPS_RETRY):
+        orbits = ct.periodic_from(rundir, "po_high", point,
+                                  stop={"V": [ct.V_MIN, ct.V_MAX], "psi_amp": PSI_AMP_STOP},
+                                  allow_mx=True, **steps)
+        folds = [p for p in orbits("LP") if abs(p["V"] - start) > 1e-3 * start]
+        last = orbits()[-1]["TY name"]
+        if folds or last != "MX":
+            break
+        print(f"design_map: the orbits from H3 stop (MX) at V = {orbits()[-1]['V']:.3f} before "
+              f"any fold at DSMAX {steps['DSMAX']:g}; again at DSMAX "
+              f"{ORBIT_STEPS_RETRY['DSMAX']:g}", flush=True)
     # S: the fold of least V, where the stable large orbits begin (at rho =
     # mu = 0 the only one; where the links sit near a side of the freeplay the
     # branch first folds above H3, ~130 m/s, unstable on both sides)
