@@ -323,3 +323,24 @@ def test_s_is_found_where_the_fast_steps_stop_before_it(tmp_path, capsys):
     found = design_map.fold_S(str(tmp_path), h3, values)
     assert "again at DSMAX 1" in capsys.readouterr().out
     assert found["S"] == pytest.approx(42.262, abs=2e-3) and found["stop"] != "MX (no convergence)"
+
+
+@pytest.mark.parametrize("n, cell_texts, named", [(5, 25, 5), (11, 121, 11), (21, 0, 11)])
+def test_a_fine_grid_names_every_other_angle_and_leaves_its_numbers_to_the_table(n, cell_texts,
+                                                                                 named):
+    """draw.angle_map on an n x n grid of 2-degree steps: each cell numbered
+    up to 11 per axis, none beyond; at most 11 angles named per axis; no
+    text over text either way (draw.overlap)."""
+    import matplotlib.pyplot as plt
+    from mlgshimmy.shared.draw import angle_map, overlap
+    angles = [2.0 * k - (n - 1) for k in range(n)]
+    fig, ax = plt.subplots(figsize=(3.5, 3.0))
+    angle_map.angle_map(ax, angles, angles, numpy.arange(n * n, dtype=float).reshape(n, n) / 7,
+                        lambda v: f"{v:.2f}", fontsize=4)
+    fig.canvas.draw()
+    assert len(ax.texts) == cell_texts
+    assert len([t for t in ax.get_xticklabels() if t.get_text()]) == named
+    assert len([t for t in ax.get_yticklabels() if t.get_text()]) == named
+    if n > 11:
+        assert overlap.overlaps(fig) == []
+    plt.close(fig)

@@ -471,7 +471,7 @@ def plot(cells: Sequence[Mapping[str, Any]], mark: Optional[Tuple[float, float]]
     from matplotlib.patches import Patch, Rectangle
 
     from mlgshimmy.shared import draw
-    from mlgshimmy.shared.draw.angle_map import angle_map, change_limit
+    from mlgshimmy.shared.draw.angle_map import MAX_LABELLED, angle_map, change_limit
     palette = draw.palette
     rhos = sorted({c["rho_deg"] for c in cells})
     mus = sorted({c["mu_deg"] for c in cells})
@@ -531,8 +531,10 @@ def plot(cells: Sequence[Mapping[str, Any]], mark: Optional[Tuple[float, float]]
     fig.suptitle(f"Design map over the side-stay angles ({geometry.EOM_WORDS[2]}, our "
                  "calibrated parameter set;\n"
                  r"$y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm, $F^*$ = 1 unless stated; "
-                 r"allowed $y_{fp}$ = $\kappa^*\epsilon$ at $\epsilon$ = 0.1 mm); the cells "
-                 "hold the values, the colours compare them")
+                 r"allowed $y_{fp}$ = $\kappa^*\epsilon$ at $\epsilon$ = 0.1 mm); "
+                 + ("the cells hold the values, the colours compare them"
+                    if max(len(rhos), len(mus)) <= MAX_LABELLED else
+                    "the colours compare the values, the table holds them"))
     draw.save(fig, "design_map")
 
 

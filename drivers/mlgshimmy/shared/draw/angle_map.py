@@ -10,6 +10,10 @@ import numpy
 from mlgshimmy.shared.draw import palette
 
 CHANGE_STEPS = (5.0, 10.0, 20.0, 50.0)   # [%]: the limits a shared scale of changes takes
+# A grid with more cells than this along an axis is drawn without its
+# numbers (they would not be legible: the table holds them), and with every
+# k-th angle named so that at most this many are.
+MAX_LABELLED = 11
 
 
 def angle_map(ax: Any, rhos: Sequence[float], mus: Sequence[float], values: numpy.ndarray,
@@ -20,19 +24,23 @@ def angle_map(ax: Any, rhos: Sequence[float], mus: Sequence[float], values: nump
     spaced whatever the angles' spacing), coloured by `norm` (a matplotlib
     Normalize, which several maps may share; default: the values' range)
     and labelled text(number), numbers[i, j] (default: the values), in a
-    colour readable on its fill (white where the value is not finite).
-    Returns the image, for a colour bar."""
+    colour readable on its fill (white where the value is not finite), up
+    to MAX_LABELLED cells along each axis.  Returns the image, for a colour
+    bar."""
     numbers = values if numbers is None else numbers
     mesh = ax.imshow(values, origin="lower", aspect="auto", cmap=cmap, norm=norm,
                      extent=(-0.5, len(rhos) - 0.5, -0.5, len(mus) - 0.5))
-    for i in range(len(mus)):
+    labelled = max(len(rhos), len(mus)) <= MAX_LABELLED
+    for i in range(len(mus)) if labelled else ():
         for j in range(len(rhos)):
             v = values[i, j]
             fill = mesh.cmap(mesh.norm(v)) if numpy.isfinite(v) else "white"
             ax.text(j, i, text(numbers[i, j]), ha="center", va="center", fontsize=fontsize,
                     color=palette.text_on(fill))
-    ax.set_xticks(range(len(rhos)), [f"{r:g}" for r in rhos])
-    ax.set_yticks(range(len(mus)), [f"{m:g}" for m in mus])
+    for set_ticks, angles in ((ax.set_xticks, rhos), (ax.set_yticks, mus)):
+        every = -(-len(angles) // MAX_LABELLED)
+        named = range(0, len(angles), every)
+        set_ticks(list(named), [f"{angles[k]:g}" for k in named])
     ax.set_xlabel(r"$\rho$ [deg]")
     ax.set_ylabel(r"$\mu$ [deg]")
     ax.grid(False)
