@@ -273,9 +273,12 @@ def plot(result: Mapping[str, Any]) -> None:
         draw.mark(ax, point["yfp"] / freeplay.EPSILON, point["Fstar"], point["type"])
     ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
                                FSTARS[-1] - FSTARS[0], fill=False, hatch="//", lw=1.2))
+    shown = set(numpy.unique(painted)) | ({1} if 0 in painted else set())   # R1, R2: one entry
     handles = ax.get_legend_handles_labels()[0] + [
         Patch(facecolor=colour, edgecolor=draw.palette.GUIDE, alpha=0.8, label=name)
-        for colour, name in zip(COLOURS[1:], ("R1, R2: straight rolling stable",) + REGIONS[2:])
+        for k, colour, name in zip(range(1, len(REGIONS)), COLOURS[1:],
+                                   ("R1, R2: straight rolling stable",) + REGIONS[2:])
+        if k in shown
     ] + draw.point_handles(draw.marked_kinds(ax))
     ax.set(xscale="log", xlim=(MAP_KAPPA[0], MAP_KAPPA[-1]), ylim=(FSTARS[0], FSTARS[-1]),
            xlabel=r"$y_{fp}/\epsilon$", ylabel="$F_z^*$")
