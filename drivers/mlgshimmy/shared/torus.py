@@ -290,7 +290,8 @@ def torus_curve(rundir: str, name: str, tr: Any, parameter_set: str = "figures",
                 steps: int = CURVE_STEPS, ntst: Optional[int] = None) -> Tuple[Any, ...]:
     """The TR point continued in (V, F*) both ways, within CURVE_FSTAR and
     V <= V_MAX: the runs (<name>_up, <name>_down), or (<name>_up,) alone
-    where that run closes (closes); ntst: their mesh, if not
+    where that run closes (closes); a direction whose run fails is left out
+    and reported (RunError if both fail); ntst: their mesh, if not
     the orbit's (a finer one: see fig11.TONGUE_EDGES).  AUTO's first ISW = 2
     run from a TR label only builds the extended system's data (its last
     point, EP, or MX where its degenerate Newton solve fails: the orbit is
@@ -303,16 +304,25 @@ def torus_curve(rundir: str, name: str, tr: Any, parameter_set: str = "figures",
     seed = seeded(first()[-1], tr.PAR["PAR(12)"], parameter_set)
     stop = {"Fstar": list(CURVE_FSTAR), "V": [0.5, V_MAX]}
     mesh = {"NTST": ntst} if ntst else {}
-    runs = []
+    runs, failed = [], []
     for sign, part in ((1, "up"), (-1, "down")):
-        runs.append(ct.run(rundir, f"{name}_{part}", "periodic", data=seed, ISW=2,
-                           ICP=torus_icp(), DS=sign * 0.05, DSMIN=CURVE_DSMIN, DSMAX=5.0,
-                           NMX=steps, UZSTOP=stop, allow_mx=True, time_limit=CURVE_TIME_LIMIT,
-                           **mesh))
-        if closes(runs[0][0]["V"], runs[0][0]["Fstar"]):
+        try:
+            run = ct.run(rundir, f"{name}_{part}", "periodic", data=seed, ISW=2,
+                         ICP=torus_icp(), DS=sign * 0.05, DSMIN=CURVE_DSMIN, DSMAX=5.0,
+                         NMX=steps, UZSTOP=stop, allow_mx=True, time_limit=CURVE_TIME_LIMIT,
+                         **mesh)
+        except runerror.RunError as exc:
+            failed.append(exc)
+            continue
+        runs.append(run)
+        if part == "up" and closes(run[0]["V"], run[0]["Fstar"]):
             print(f"torus: {name} is a closed curve in (V, F*): not run the other way",
                   flush=True)
             break
+    if not runs:
+        raise failed[0]
+    for exc in failed:   # the other direction is kept and drawn
+        print(f"REPORTED: torus curve {name}: one direction left out: {exc.brief}", flush=True)
     return tuple(runs)
 
 
