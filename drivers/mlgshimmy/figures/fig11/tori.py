@@ -8,6 +8,8 @@ from typing import Any, Collection, Dict, List, Mapping, Sequence, Tuple
 
 import numpy
 
+from mlgshimmy.figures.fig11 import ends
+from mlgshimmy.figures.fig11.curves import stage_switch
 from mlgshimmy.figures.fig11.orbits import large_upwards, slice_rundir
 from mlgshimmy.figures.fig11.plane import MODEL, SLICES, V_MAX, V_MIN, on_curves
 from mlgshimmy.shared import runerror
@@ -37,6 +39,11 @@ TORUS_COLUMNS = ("V", "Fstar", "freq", "PAR(12)")
 # finds its starts on the slices (found_curves), at most MAX_CURVES curves.
 PINNED = stationary.symmetric(MODEL)
 MAX_CURVES = 10   # a cost guard: 8 before the edge slice (plane.EDGE_SLICE) took 2
+# A tongue edge started inside the oleo's stage switch (ends.inside) is
+# followed this many steps each way, not torus.CURVE_STEPS: there its course
+# is set by the switch's steepness k_stage, and AUTO's steps stay near their
+# first size (0.05) however far it goes, so 150 steps move it a few m/s.
+SWITCH_CURVE_STEPS = 30
 
 
 def tongue_parts() -> Dict[str, Any]:
@@ -84,7 +91,8 @@ def found_curves(large_loads: Collection[float]) -> Dict[str, Any]:
     slice's diagrams in V (diagrams_on; large_loads: the loads the large
     part reached).  From the lightest load up, each crossing that no curve
     so far passes through (on_curves, TONGUE_TOL) starts one, a "torus" or
-    "tongue" curve by its kind (crossing_kinds), up to MAX_CURVES; a start
+    "tongue" curve by its kind (crossing_kinds), up to MAX_CURVES (a
+    tongue edge inside the stage switch SWITCH_CURVE_STEPS each way); a start
     that fails is reported.  The crossings on no curve are returned as
     points."""
     rundir = paths.rundir("fig11/torus")
@@ -102,9 +110,11 @@ def found_curves(large_loads: Collection[float]) -> Dict[str, Any]:
                     continue
                 if k < MAX_CURVES:
                     k += 1
+                    steps = (SWITCH_CURVE_STEPS if kind == "tongue"
+                             and ends.inside(stage_switch(), Fstar) else torus.CURVE_STEPS)
                     try:
                         out[kind].append(first_torus_curve(rundir, f"{kind}{k}", found, index,
-                                                           tr_name=f"tr{k}"))
+                                                           tr_name=f"tr{k}", steps=steps))
                         continue
                     except (runerror.RunError, ValueError) as exc:
                         print(f"REPORTED: fig11 {kind} curve from V = {c['value']:.4g}, "
