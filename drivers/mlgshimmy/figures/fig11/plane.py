@@ -33,10 +33,24 @@ STOP = {"Fstar": [F_MIN, F_MAX], "V": [V_MIN, V_MAX]}
 V_SCAN = ct.SPEED_SCAN
 
 
+def distance(point: Mapping[str, float], branch: Mapping[str, Any]) -> float:
+    """The distance from `point` ({"V", "F*"}) to a branch drawn as a
+    polyline through its points (in V/V_MAX and F*/F_MAX): to the nearest
+    chord, not the nearest point, so that it does not grow with the
+    branch's step (a torus curve's steps reach 5 m/s)."""
+    x = numpy.c_[numpy.asarray(branch["V"], float) / V_MAX,
+                 numpy.asarray(branch["Fstar"], float) / F_MAX]
+    p = numpy.array([point["V"] / V_MAX, point["Fstar"] / F_MAX])
+    if len(x) == 1:
+        return float(numpy.hypot(*(x[0] - p)))
+    a, chord = x[:-1], numpy.diff(x, axis=0)
+    t = numpy.clip(numpy.einsum("ij,ij->i", p - a, chord)
+                   / numpy.maximum(numpy.einsum("ij,ij->i", chord, chord), 1e-300), 0.0, 1.0)
+    return float(numpy.min(numpy.hypot(*(a + t[:, None] * chord - p).T)))
+
+
 def on_curves(point: Mapping[str, float], curves: Sequence[Sequence[Mapping[str, Any]]],
               tol: float = 0.01) -> bool:
     """Whether `point` ({"V", "Fstar"}) lies on one of the curves (lists of
-    branches; distance in V/V_MAX and F*/F_MAX below tol)."""
-    return any(numpy.min(numpy.hypot((numpy.asarray(branch["V"]) - point["V"]) / V_MAX,
-                                     (numpy.asarray(branch["Fstar"]) - point["Fstar"]) / F_MAX))
-               < tol for curve in curves for branch in curve)
+    branches; distance below tol)."""
+    return any(distance(point, branch) < tol for curve in curves for branch in curve)
