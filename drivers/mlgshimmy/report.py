@@ -470,10 +470,10 @@ def page(info: Mapping[str, Any], images: Mapping[str, str],
 <p>Howcroft, Lowenberg, Neild and Krauskopf, <i>Effects of freeplay on the dynamic stability
 of an aircraft main landing gear</i>: every figure beside the numbers the paper prints.
 Generated {html.escape(info["written"])} by <code>make report</code> from the cached results;
-nothing here is copied by hand. All figures use the <code>figures</code> parameter set, whose
-torsional damping c_psi = 724.0034 N m s/rad (instead of Table 1's 410) is calibrated so that
+nothing here is copied by hand. All figures use our calibrated parameter set: Table 1's,
+except the torsional damping c_psi = 724.0034 N m s/rad (instead of 410), calibrated so that
 the zero-freeplay Hopf point at F* = 1 lies at the paper's 346.1 m/s
-(docs/model.md, section 5); the <code>table</code> set is the paper as printed.</p>
+(docs/model.md, section 5; <code>make calibrate</code> recomputes it).</p>
 <h2 id="scorecard">Scorecard: every number the paper prints</h2>
 {score}
 <h2 id="provenance">Provenance</h2>
