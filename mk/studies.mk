@@ -205,7 +205,8 @@ point: $(MLG_SIMULATE) $(MLG_SHARED)
 # GEAR_FIGURES at the gear and at the paper's gear (for the numbers beside;
 # the gear's exported MLG_* cleared, or the base tree would get the gear's),
 # the animations of GEAR_MOTION (V:F*:start), then the gear tree's report,
-# which opens with the design answers (shared.gear_answers).
+# which opens with the design answers (shared.gear_answers).  An animation
+# that fails leaves the others and the page; make gear names it and fails.
 GEAR_FIGURES ?= fig07 fig10 fig18
 GEAR_MOTION ?= 15:1:rolling 300:1:shimmy 450:0.3:shimmy 50:0.2:yawed
 .PHONY: gear
@@ -214,7 +215,9 @@ gear:
 	MLG_RHO_DEG= MLG_MU_DEG= MLG_EOM= MLG_SET= MLG_BASE_RUN_ROOT= $(MAKE) --no-print-directory \
 	    MLG_RUN_ROOT=$(call shell_quote,$(BASE_RUN_ROOT)) RHO= MU= EOM= SET= $(GEAR_FIGURES)
 	$(MAKE) --no-print-directory $(GEAR_FIGURES)
-	set -e; $(foreach m,$(GEAR_MOTION),$(MAKE) --no-print-directory animate \
+	failed=; $(foreach m,$(GEAR_MOTION),$(MAKE) --no-print-directory animate \
 	    V=$(word 1,$(subst :, ,$(m))) FSTAR=$(word 2,$(subst :, ,$(m))) \
-	    START=$(word 3,$(subst :, ,$(m)));)
-	$(MAKE) --no-print-directory report
+	    START=$(word 3,$(subst :, ,$(m))) || failed="$$failed $(m)";) \
+	$(MAKE) --no-print-directory report || exit 1; \
+	if [ -n "$$failed" ]; then echo "gear: the page is written without the animations" \
+	    "that failed (V:F*:start, reasons above):$$failed"; exit 1; fi

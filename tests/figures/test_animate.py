@@ -4,6 +4,8 @@ refusals of bad input.
 
 Run: /usr/bin/python3 -m pytest -q tests/figures/test_animate.py   (about 30 s)
 """
+import json
+import os
 import subprocess
 
 import matplotlib
@@ -92,3 +94,26 @@ def test_motion_scale_is_stated_on_the_frame(shimmy):
     texts = [t.get_text() for t in fig.texts]
     assert any("angles ×10, tyre deflections ×20" in t for t in texts), texts
     matplotlib.pyplot.close(fig)
+
+
+def test_a_wheel_lifting_off_early_is_drawn_as_such():
+    """At rho = 20, mu = 5 deg, V = 450 m/s, F* = 0.3 (make gear's third
+    animation) the shimmy start lifts a wheel off at t = 3.0 s, before the
+    classifier's 2 x 5 s: the motion up to there is kind "domain" with the
+    high-frequency shimmy's numbers from its last LIFTOFF_SPAN, not an error."""
+    code = ("import json, sys, tempfile\n"
+            "from mlgshimmy.shared import freeplay, motion\n"
+            "m = motion.settle(450.0, 0.3, freeplay.NOMINAL, 'shimmy', 40.0, tempfile.mkdtemp())\n"
+            "print(json.dumps(dict({k: m[k] for k in ('kind', 'frequency_hz', 'amplitude_rad')},"
+            " t_end=m['start']['t_end'], frames=len(m['frames']['t']))))\n")
+    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": os.path.join(ROOT, "drivers"),
+           "MLG_RHO_DEG": "20", "MLG_MU_DEG": "5", "MLG_EOM": "2"}
+    proc = subprocess.run(["/usr/bin/python3", "-c", code], env=env, cwd=ROOT,
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    found = json.loads(proc.stdout.splitlines()[-1])
+    assert found["kind"] == "domain"
+    assert 2.0 < found["t_end"] < 2 * motion.WINDOW
+    assert 20.0 < found["frequency_hz"] < 60.0           # the high-frequency mode
+    assert found["amplitude_rad"] > 0.01
+    assert found["frames"] > 50

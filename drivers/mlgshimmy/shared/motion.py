@@ -6,7 +6,9 @@ the animations (studies.animate) draw.
 
 A start (STARTS: straight rolling at this load and gear with psi displaced,
 or the yawed stationary state) is simulated for t_end seconds; shared.attractor.classify names what it
-settled on, and the frames are the last few periods of it, with what the
+settled on (a run that leaves the model's domain, a wheel lifting off, is
+kind "domain", even before the classifier's windows are filled: its last
+LIFTOFF_SPAN gives its numbers), and the frames are the last few periods of it, with what the
 drawing needs at each (the torque-link deflection y_tlk = r_tlk psi_s, the
 tyre patch lengths h_i: shared.domain.diagnose).
 """
@@ -27,6 +29,8 @@ STILL_FRAMES = 12       # a stationary state: frames of it (nothing moves)
 QUASI_SPAN = 0.25       # s of a quasi-periodic or unsettled motion shown
 MAX_FRAMES = 120
 STILL_DEFLECTION = 1e-7  # m: a tyre deflection swing below this does not move
+LIFTOFF_SPAN = 0.5      # s before a wheel lifts off whose numbers are given (and
+                        # the least run that is drawn) when that is before 2 WINDOW
 # start: (psi displacement [rad], from the yawed state instead of straight rolling)
 STARTS = {"rolling": (simulator.STARTS["rolling"], False),
           "shimmy": (simulator.STARTS["shimmy"], False),
@@ -83,14 +87,21 @@ def settle(V: float, Fstar: float, freeplay: Mapping[str, float], start: str, t_
     proc = simulator.run(csv, *simulator.start_args(V, Fstar, freeplay, u0, psi0, t_end, DT_OUT,
                                                     gear.simulator_params()))
     data = numpy.genfromtxt(csv, delimiter=",", names=True) if os.path.exists(csv) else None
-    if proc.returncode != 0 and simulator.left_domain(proc) is None:
+    left = simulator.left_domain(proc) if proc.returncode != 0 else None
+    if proc.returncode != 0 and left is None:
         raise simulator.SimulationError(f"mlg_simulate failed: {proc.stderr.strip()}")
-    if data is None or data["t"][-1] - data["t"][0] < 2 * WINDOW:
+    span = 0.0 if data is None or data.size < 2 else float(data["t"][-1] - data["t"][0])
+    if span < 2 * WINDOW and (left is None or span < LIFTOFF_SPAN):
         raise RuntimeError(f"motion: the run at V = {V:g} m/s, F* = {Fstar:g} stopped at "
-                           f"t = {0 if data is None else data['t'][-1]:g} s, before "
-                           f"{2 * WINDOW:g} s to classify ({simulator.left_domain(proc)})")
+                           f"t = {span:g} s, before {2 * WINDOW:g} s to classify ({left})")
     psi_fp, psi_straight = yawed.reference("figures", Fstar, dict(freeplay), straight, **values)
-    found = attractor.classify(data["t"], data["psi"], WINDOW, psi_fp, psi_straight)
+    if span >= 2 * WINDOW:
+        found = attractor.classify(data["t"], data["psi"], WINDOW, psi_fp, psi_straight)
+    else:   # a wheel lifted off before the classifier's windows were filled
+        near_end = data["t"] >= data["t"][-1] - LIFTOFF_SPAN
+        numbers = attractor.window_numbers(data["t"][near_end], data["psi"][near_end])
+        found = {"kind": "domain", "frequency_hz": numbers["frequency_hz"],
+                 "amplitude_rad": numbers["amplitude"]}
     kind = "domain" if proc.returncode != 0 else found["kind"]
     t_end = float(data["t"][-1])
     times = _frame_times(t_end, kind, found["frequency_hz"])
