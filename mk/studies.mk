@@ -169,6 +169,8 @@ $(eval $(call cached_study,laws))
 
 # The gear's motion at one (V, F*), animated from the simulator (studies.animate):
 #   make animate V=300 FSTAR=1 [START=shimmy|rolling|yawed] [YFP=1] [RHO= MU= SET=]
+# (NEAR=1 with START=yawed: at the load nearest FSTAR where the gear has a
+# yawed state, as make gear asks)
 # (a GIF, an MP4 where ffmpeg is installed, a contact sheet of frames);
 # make animate-plot redraws the cached motion.
 START ?= shimmy
@@ -178,7 +180,7 @@ animate animate-plot: $(MLG_SIMULATE) $(MLG_SHARED)
 	$(if $(and $(V),$(FSTAR)),,$(error make $@ needs V=<m/s> FSTAR=<load>, e.g. make animate V=300 FSTAR=1))
 	$(PYTHON) -m mlgshimmy.studies.animate --V=$(call shell_quote,$(V)) \
 	    --Fstar=$(call shell_quote,$(FSTAR)) --start=$(call shell_quote,$(START)) \
-	    --yfp=$(call shell_quote,$(YFP))$(if $(filter animate-plot,$@), --plot)
+	    --yfp=$(call shell_quote,$(YFP))$(if $(NEAR), --near)$(if $(filter animate-plot,$@), --plot)
 
 # One animation per kind of attractor of Fig. 11 (studies.animate --fig11:
 # a point deep inside each kind's region of Fig. 11's cached map, listed in
@@ -217,7 +219,7 @@ gear:
 	$(MAKE) --no-print-directory $(GEAR_FIGURES)
 	failed=; $(foreach m,$(GEAR_MOTION),$(MAKE) --no-print-directory animate \
 	    V=$(word 1,$(subst :, ,$(m))) FSTAR=$(word 2,$(subst :, ,$(m))) \
-	    START=$(word 3,$(subst :, ,$(m))) || failed="$$failed $(m)";) \
+	    START=$(word 3,$(subst :, ,$(m))) NEAR=1 || failed="$$failed $(m)";) \
 	$(MAKE) --no-print-directory report || exit 1; \
 	if [ -n "$$failed" ]; then echo "gear: the page is written without the animations" \
 	    "that failed (V:F*:start, reasons above):$$failed"; exit 1; fi

@@ -117,3 +117,20 @@ def test_a_wheel_lifting_off_early_is_drawn_as_such():
     assert 20.0 < found["frequency_hz"] < 60.0           # the high-frequency mode
     assert found["amplitude_rad"] > 0.01
     assert found["frames"] > 50
+
+
+def test_the_yawed_load_is_the_nearest_that_has_a_yawed_state():
+    """make gear's yawed animation (NEAR=1): at the paper's gear F* = 0.2
+    has yawed states and is kept; from 1.5 the nearest load with one lies
+    just below the upper pitchfork (F* = 0.41 in Fig. 11).  At rho = 20,
+    mu = 5 deg they end below 0.2: the nearest is 0.19."""
+    assert motion.yawed_load(0.2, freeplay.NOMINAL) == 0.2
+    assert 0.36 <= motion.yawed_load(1.5, freeplay.NOMINAL) <= 0.45
+    code = ("from mlgshimmy.shared import freeplay, motion\n"
+            "print(motion.yawed_load(0.2, freeplay.NOMINAL))\n")
+    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": os.path.join(ROOT, "drivers"),
+           "MLG_RHO_DEG": "20", "MLG_MU_DEG": "5", "MLG_EOM": "2"}
+    proc = subprocess.run(["/usr/bin/python3", "-c", code], env=env, cwd=ROOT,
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert float(proc.stdout.split()[-1]) == 0.19

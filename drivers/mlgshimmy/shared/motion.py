@@ -75,6 +75,20 @@ def start_state(V: float, Fstar: float, freeplay: Mapping[str, float],
     return dict(zip(mlgmodel.UNAMES, map(float, found[-1]))), psi0, straight
 
 
+YAWED_LOADS = numpy.round(numpy.arange(0.02, 3.5 + 1e-9, 0.01), 2)   # where yawed_load looks
+
+
+def yawed_load(Fstar: float, freeplay: Mapping[str, float]) -> Optional[float]:
+    """The load of YAWED_LOADS nearest Fstar at which this gear has a yawed
+    stationary state (shared.yawed.states; Fstar itself if it has one),
+    None if it has none at any (about 2 s at the most)."""
+    values = gear.parameters()
+    for load in [Fstar] + sorted(YAWED_LOADS, key=lambda F: (abs(F - Fstar), F)):
+        if yawed.states("figures", float(load), dict(freeplay), **values)["yawed"]:
+            return float(load)
+    return None
+
+
 def settle(V: float, Fstar: float, freeplay: Mapping[str, float], start: str, t_end: float,
            rundir: str) -> Dict[str, object]:
     """Simulate from the start (start_state) and keep the frames of what it

@@ -169,6 +169,9 @@ def main(argv: Optional[Sequence[str]] = None) -> None:
                              "(shimmy), or the yawed stationary state (yawed)")
     parser.add_argument("--yfp", type=float, default=freeplay.NOMINAL["yfp"],
                         help="torque-link freeplay [mm] (eps = 0.1 y_fp)")
+    parser.add_argument("--near", action="store_true",
+                        help="with --start yawed: at the load nearest FSTAR that has a yawed "
+                             "state (make gear: a gear has them at its own loads)")
     parser.error = lambda message: sys.exit(f"animate: {message}")     # one line
     args, rest = parser.parse_known_args(argv)
     if args.fig11:
@@ -185,6 +188,17 @@ def main(argv: Optional[Sequence[str]] = None) -> None:
     if args.start not in motion.STARTS:
         sys.exit(f"animate: START={args.start!r} is not one of {', '.join(motion.STARTS)}"
                  f"{did_you_mean(args.start, motion.STARTS)}")
+    if args.near and args.start == "yawed":
+        load = motion.yawed_load(args.Fstar, {**freeplay.NOMINAL, "yfp": args.yfp})
+        if load is None:
+            print(f"animate: this gear has no yawed stationary state at any load "
+                  f"{motion.YAWED_LOADS[0]:g}-{motion.YAWED_LOADS[-1]:g}: no yawed motion to "
+                  "animate", flush=True)
+            return
+        if load != args.Fstar:
+            print(f"animate: no yawed state at F* = {args.Fstar:g}; the nearest load with one "
+                  f"is {load:g}", flush=True)
+        args.Fstar = load
     name = case(args.V, args.Fstar, args.start, args.yfp)
     jobs.run_figure(name, lambda: compute(args.V, args.Fstar, args.start, args.yfp),
                     lambda result: plot(result, name), argv=rest,
