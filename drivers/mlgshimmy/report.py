@@ -441,8 +441,8 @@ def _sidebar(info, at_gear=False):
                       for f in info["figures"])
     studies = "".join(f'<a href="#study-{s["name"]}">{s["name"]}</a>' for s in info["studies"])
     return ('<nav class="side"><a href="#top"><b>mlg-shimmy report</b></a>'
-            + ('<a href="#gear">Your gear</a>' if at_gear else "")
-            + '<a href="#scorecard">Scorecard</a><a href="#provenance">Provenance</a>'
+            + ('<a href="#gear">Your gear</a>' if at_gear else '<a href="#scorecard">Scorecard</a>')
+            + '<a href="#provenance">Provenance</a>'
             f'<div class="group">Figures</div>{figures}'
             f'<div class="group">Studies</div>{studies}</nav>')
 
@@ -450,8 +450,16 @@ def _sidebar(info, at_gear=False):
 def page(info: Mapping[str, Any], images: Mapping[str, str],
          docs: str = os.path.join("..", "..", checks.DOCS), lead: str = "") -> str:
     """The HTML page; docs: the link to docs/reproduction.md from it; lead:
-    HTML shown first (the design answers at a changed gear)."""
-    score = _scorecard(info["score"])
+    HTML shown first (the design answers at a changed gear).  At a changed
+    gear the page shows what was made there and no scorecard: the paper's
+    numbers are its own gear's, and the answers give the paper's gear beside
+    each of the changed gear's."""
+    if lead:
+        info = {**info, "figures": [f for f in info["figures"] if f["png"]],
+                "studies": [st for st in info["studies"] if st["texts"] or st["pngs"]]}
+    score = "" if lead else (
+        '<h2 id="scorecard">Scorecard: every number the paper prints</h2>\n'
+        + _scorecard(info["score"]))
     tools = "".join(f"<tr><th>{html.escape(k)}</th><td>{html.escape(str(v))}</td></tr>"
                     for k, v in info["tools"])
     commits = sorted({f["provenance"].get("git_commit") or "unknown"
@@ -465,16 +473,16 @@ def page(info: Mapping[str, Any], images: Mapping[str, str],
 <body>
 {_sidebar(info, bool(lead))}
 <main>
-<h1 id="top">mlg-shimmy: reproduction report</h1>
+<h1 id="top">mlg-shimmy: {"your gear" if lead else "reproduction report"}</h1>
 {lead}
 <p>Howcroft, Lowenberg, Neild and Krauskopf, <i>Effects of freeplay on the dynamic stability
-of an aircraft main landing gear</i>: every figure beside the numbers the paper prints.
+of an aircraft main landing gear</i>: {"the figures made at your gear" if lead else
+"every figure beside the numbers the paper prints"}.
 Generated {html.escape(info["written"])} by <code>make report</code> from the cached results;
 nothing here is copied by hand. All figures use our calibrated parameter set: Table 1's,
 except the torsional damping c_psi = 724.0034 N m s/rad (instead of 410), calibrated so that
 the zero-freeplay Hopf point at F* = 1 lies at the paper's 346.1 m/s
 (docs/model.md, section 5; <code>make calibrate</code> recomputes it).</p>
-<h2 id="scorecard">Scorecard: every number the paper prints</h2>
 {score}
 <h2 id="provenance">Provenance</h2>
 <details><summary>the tools that made and drew the results, and the commits of the cached

@@ -206,3 +206,19 @@ def test_chromium_renders_the_page(run_root, tmp_path):
     # the sidebar's background (#f5f6f8) down the left edge, the page's white right of it
     assert image[1900, 20, :3] == pytest.approx([0xf5 / 255, 0xf6 / 255, 0xf8 / 255], abs=0.01)
     assert image[1900, 1270, :3] == pytest.approx([1.0, 1.0, 1.0], abs=0.01)
+
+
+def test_a_changed_gears_page_shows_what_was_made_and_no_scorecard(run_root):
+    """At a changed gear (a lead: the design answers) the page has no
+    scorecard (the paper's numbers are its own gear's) and lists only the
+    figures and studies made there."""
+    info = report.collect(str(run_root))
+    images = {f["figure"]: f"figures/{f['figure']}.png" for f in info["figures"] if f["png"]}
+    text = report.page(info, images, lead='<h2 id="gear">Your gear: ...</h2>')
+    page = Page()
+    page.feed(text)
+    assert "Scorecard" not in text and "#scorecard" not in page.sidebar
+    assert page.sidebar[:3] == ["#top", "#gear", "#provenance"]
+    assert [h for h in page.sidebar if h.startswith("#fig")] == [f"#{f}" for f in sorted(OURS)]
+    assert "No figure yet" not in text and "Not run:" not in text
+    assert "mlg-shimmy: your gear" in text
