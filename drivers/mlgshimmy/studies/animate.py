@@ -76,8 +76,10 @@ def title(result: dict) -> str:
     hz = result["frequency_hz"]
     what = result["about"] + (f", {hz:.3g} Hz" if hz and result["kind"] not in
                               ("straight", "yaw") else "")
-    return (f"{what}: V = {result['V']:g} m/s, F* = {result['Fstar']:g}, "
-            f"y_fp = {1e3 * result['yfp_m']:g} mm (start: {result['start']})" + gear.suffix())
+    at = gear.suffix().strip()   # the gear on a line of its own: a frame of the contact
+    return (f"{what}\nV = {result['V']:g} m/s, F* = {result['Fstar']:g}, "   # sheet is narrow
+            f"y_fp = {1e3 * result['yfp_m']:g} mm (start: {result['start']})"
+            + (f"\n{at}" if at else ""))
 
 
 def plot(result: dict, name: str) -> None:
@@ -89,7 +91,9 @@ def plot(result: dict, name: str) -> None:
     count = len(result["frames"]["t"])
     span = result["frames"]["t"][-1] - result["frames"]["t"][0]
     slowed = (count / FPS) / span if span > 0 else None
-    head = title(result) + (f"\nslowed ×{slowed:.3g}" if slowed else "")
+    lines = title(result).split("\n")
+    lines[1] += f", slowed ×{slowed:.3g}" if slowed else ""
+    head = "\n".join(lines)
     out = paths.figures_dir()
     os.makedirs(out, exist_ok=True)
     fig, show = gear_motion.figure(result, scale, head)
