@@ -70,6 +70,7 @@ def draw_fig11(tmp_path, monkeypatch, mark=None, result=None):
     def keep(fig, name):
         kept["legends"] = [[t.get_text() for t in legend.get_texts()]
                            for legend in fig.legends]
+        kept["titles"] = [legend.get_title().get_text() for legend in fig.legends]
         kept["overlaps"] = draw.overlap.overlaps(fig)
         save(fig, name)
     monkeypatch.setattr(draw, "save", keep)
@@ -118,27 +119,33 @@ def test_the_caption_says_where_each_curve_ends_and_why(drawn):
         assert reference in drawn["caption"], reference
 
 
-def test_a_special_point_marked_gets_its_entry(tmp_path, monkeypatch):
+def test_a_special_point_marked_is_named_in_the_caption(tmp_path, monkeypatch):
     """Points marked through draw.mark (codimension-two points on the
-    curves) join the curves' legend under their own names."""
-    drawn = draw_fig11(tmp_path, monkeypatch, lambda ax: draw.mark(ax, 100.0, 1.0, "GH"))
-    assert [t for t in drawn["legends"][0] if t.startswith("GH: ")] == \
-        ["GH: generalised Hopf point (l1 = 0)"]
+    curves) are named on the plot, and the caption says what each name
+    means; the legends stay within MAX_ENTRIES however many kinds there are."""
+    def marks(ax):
+        for kind in ("GH", "ZH", "HH", "BT"):
+            draw.mark(ax, 100.0, 1.0, kind)
+    drawn = draw_fig11(tmp_path, monkeypatch, marks)
+    assert "- Special points, named on the plot: " in drawn["caption"]
+    assert "GH: generalised Hopf point (l1 = 0)" in drawn["caption"]
+    assert not [t for legend in drawn["legends"] for t in legend if t.startswith("GH")]
+    assert sum(len(legend) for legend in drawn["legends"]) <= MAX_ENTRIES
 
 
 def test_the_region_with_no_shimmy_gets_its_entry_within_the_limit(tmp_path, monkeypatch):
     """Where no shimmy is stable the map is left white (dotted: straight
-    rolling there; hatched: yawed rolling): its entry comes first among the
-    regions, and with every other kind present the legends still hold at
-    most MAX_ENTRIES, none over other text."""
+    rolling there; hatched: yawed rolling): the regions' title says so, and
+    with every other kind present the legends still hold at most
+    MAX_ENTRIES, none over other text."""
     result = made_up()
     code = numpy.array(result["region_map"]["code"])
     code[:, V_GRID < 10] = ATTRACTORS["straight"]
     code[(F_GRID > 0.2) & (F_GRID < 0.4), :] |= ATTRACTORS["yaw"]
     result["region_map"]["code"] = code.tolist()
     drawn = draw_fig11(tmp_path, monkeypatch, result=result)
-    assert drawn["legends"][1] == ["white: no shimmy", "low-frequency shimmy",
-                                   "high-frequency shimmy", "dotted: straight rolling too",
-                                   "hatched: yawed rolling too"]
+    assert drawn["titles"][1] == "the gear settles on\n(white: no shimmy)"
+    assert drawn["legends"][1] == ["low-frequency shimmy", "high-frequency shimmy",
+                                   "dotted: straight rolling too", "hatched: yawed rolling too"]
     assert sum(len(legend) for legend in drawn["legends"]) <= MAX_ENTRIES
     assert drawn["overlaps"] == []

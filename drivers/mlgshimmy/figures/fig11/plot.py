@@ -53,8 +53,10 @@ def ends_found(result: Dict[str, Any]) -> List[Tuple[float, float, str]]:
     return out
 
 
-def caption(result: Dict[str, Any], ends: Sequence[Tuple[float, float, str]]) -> str:
-    """The caption: what the figure holds beyond its legend."""
+def caption(result: Dict[str, Any], ends: Sequence[Tuple[float, float, str]],
+            marked: Sequence[str] = ()) -> str:
+    """The caption: what the figure holds beyond its legend (marked: the
+    legend texts of the special points named on the plot, draw.point_handles)."""
     lines = ["Fig. 11: the (V, F*) plane with ±1 mm of torque-link freeplay (y_fp = 1 mm, "
              "eps = 0.1 mm). Each region is labelled by what the gear settles on there, "
              f"found on diagrams in V at the loads F* = {SLICES[0]:g}, {SLICES[1]:g}, ..., "
@@ -76,6 +78,8 @@ def caption(result: Dict[str, Any], ends: Sequence[Tuple[float, float, str]]) ->
     if result.get("stage_switch_ends"):
         lines.append(f"- Thin grey lines: the oleo's stage switch, where straight rolling's "
                      f"strut compression is within {SWITCH_WIDTHS:g}/k_stage of the switch.")
+    if marked:
+        lines.append("- Special points, named on the plot: " + "; ".join(marked) + ".")
     if ends:
         lines += ["", "Where a curve ends inside the plane (the open diamonds), and why:"]
         lines += [f"- V = {V:.4g} m/s, F* = {F:.4g}: {why}" for V, F, why in ends]
@@ -136,29 +140,30 @@ def plot(result: Dict[str, Any]) -> None:
     for V, F, _ in ends:
         ax.plot(V, F, "D", mfc=palette.OPEN, mec=palette.NEUTRAL, ms=4.5, zorder=6)
     # special points marked with draw.mark (e.g. codimension-two points on
-    # the curves) follow under their own names
+    # the curves) are named on the plot, and what the names mean in the caption
     for point in result["codim2"]:
         draw.mark(ax, point["V"], point["Fstar"], point["type"])
-    points = draw.point_handles(draw.marked_kinds(ax))
+    marked = [h.get_label() for h in draw.point_handles(draw.marked_kinds(ax))]
     ax.set_xlim(0, V_MAX)
     ax.set_ylim(0, F_MAX)
     ax.set_xlabel("V [m/s]")
     ax.set_ylabel(r"$F_z^*$")
-    # the unfilled region (no shimmy: straight or yawed rolling, by its pattern) too
+    # the unfilled region (no shimmy: straight or yawed rolling, by its
+    # pattern) is said in the regions' title, which keeps the legends to 10
     regions = [(Patch(facecolor=colour, edgecolor=palette.GUIDE, alpha=REGION_ALPHA),
-                fill_words(kinds) if kinds else f"white: {fill_words(kinds)}")
-               for kinds, colour in fills.items()]
+                fill_words(kinds)) for kinds, colour in fills.items() if kinds]
+    settles = "the gear settles on" + (f"\n(white: {fill_words(())})" if () in fills else "")
     regions += [(Patch(facecolor="none", edgecolor=palette.NEUTRAL, hatch=PATTERNS[kind]),
                  f"{'dotted' if kind == 'straight' else 'hatched'}: {WORDS[kind]} too")
                 for kind in patterned]
     # figure legends, which the saved figure's bounds take in, beside the axes
     for items, title, corner, y in (
-            (entries + [(h, h.get_label()) for h in points], "curves", "upper left", 1.0),
-            (regions, "the gear settles on", "lower left", 0.0)):
+            (entries, "curves", "upper left", 1.0),
+            (regions, settles, "lower left", 0.0)):
         fig.legend(*zip(*items), title=title, loc=corner, bbox_to_anchor=(1.02, y),
                    bbox_transform=ax.transAxes, handler_map={tuple: HandlerTuple(ndivide=1)})
     draw.figure_title(ax, r"Fig. 11: $y_{fp}$ = 1 mm, $\epsilon$ = 0.1 mm: what the gear "
                           "settles on, and the curves that bound it")
-    write_text(os.path.join(paths.figures_dir(), CAPTION), caption(result, ends))
+    write_text(os.path.join(paths.figures_dir(), CAPTION), caption(result, ends, marked))
     draw.save(fig, "fig11")
     paper.report("fig11", result["numbers"], notes=result["codim2_notes"])
