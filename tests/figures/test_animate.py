@@ -96,6 +96,17 @@ def test_motion_scale_is_stated_on_the_frame(shimmy):
     matplotlib.pyplot.close(fig)
 
 
+def at_rho20_mu5(code):
+    """The last line printed by the Python `code` run at rho = 20, mu = 5 deg
+    (the gear is read from the environment when the model is built)."""
+    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": os.path.join(ROOT, "drivers"),
+           "MLG_RHO_DEG": "20", "MLG_MU_DEG": "5", "MLG_EOM": "2"}
+    proc = subprocess.run(["/usr/bin/python3", "-c", code], env=env, cwd=ROOT,
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    return proc.stdout.splitlines()[-1]
+
+
 def test_a_wheel_lifting_off_early_is_drawn_as_such():
     """At rho = 20, mu = 5 deg, V = 450 m/s, F* = 0.3 (make gear's third
     animation) the shimmy start lifts a wheel off at t = 3.0 s, before the
@@ -106,12 +117,7 @@ def test_a_wheel_lifting_off_early_is_drawn_as_such():
             "m = motion.settle(450.0, 0.3, freeplay.NOMINAL, 'shimmy', 40.0, tempfile.mkdtemp())\n"
             "print(json.dumps(dict({k: m[k] for k in ('kind', 'frequency_hz', 'amplitude_rad')},"
             " t_end=m['start']['t_end'], frames=len(m['frames']['t']))))\n")
-    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": os.path.join(ROOT, "drivers"),
-           "MLG_RHO_DEG": "20", "MLG_MU_DEG": "5", "MLG_EOM": "2"}
-    proc = subprocess.run(["/usr/bin/python3", "-c", code], env=env, cwd=ROOT,
-                          capture_output=True, text=True)
-    assert proc.returncode == 0, proc.stderr[-2000:]
-    found = json.loads(proc.stdout.splitlines()[-1])
+    found = json.loads(at_rho20_mu5(code))
     assert found["kind"] == "domain"
     assert 2.0 < found["t_end"] < 2 * motion.WINDOW
     assert 20.0 < found["frequency_hz"] < 60.0           # the high-frequency mode
@@ -128,9 +134,4 @@ def test_the_yawed_load_is_the_nearest_that_has_a_yawed_state():
     assert 0.36 <= motion.yawed_load(1.5, freeplay.NOMINAL) <= 0.45
     code = ("from mlgshimmy.shared import freeplay, motion\n"
             "print(motion.yawed_load(0.2, freeplay.NOMINAL))\n")
-    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": os.path.join(ROOT, "drivers"),
-           "MLG_RHO_DEG": "20", "MLG_MU_DEG": "5", "MLG_EOM": "2"}
-    proc = subprocess.run(["/usr/bin/python3", "-c", code], env=env, cwd=ROOT,
-                          capture_output=True, text=True)
-    assert proc.returncode == 0, proc.stderr[-2000:]
-    assert float(proc.stdout.split()[-1]) == 0.19
+    assert float(at_rho20_mu5(code)) == 0.19
