@@ -77,6 +77,9 @@ def library() -> ctypes.CDLL:
     lib.mlg_torque_link_force.argtypes = [ctypes.c_int] + [ctypes.c_double] * 4
     lib.mlg_freeplay_law_name.restype = ctypes.c_char_p
     lib.mlg_energy.argtypes = [P, D, ctypes.c_double, ctypes.POINTER(_Energy)]
+    lib.mlg_switching.argtypes = [P, ctypes.POINTER(ctypes.c_int), D, D, D]
+    lib.mlg_switching_name.restype = ctypes.c_char_p
+    lib.mlg_switching_mode_after.argtypes = [ctypes.c_int, ctypes.c_int]
     _lib = lib
     return lib
 
@@ -108,7 +111,11 @@ def _table(key: str):
             # mlg_diagnostics, in order: (field, its doubles: 1, or 2 for a tyre pair)
             DIAGNOSTICS=[(name, lib.mlg_diagnostic_size(k))
                          for k, name in enumerate(_names(lib.mlg_diagnostic_name))],
-            C_PSI_FIGURES=ctypes.c_double.in_dll(lib, "MLG_C_PSI_FIGURES").value)
+            C_PSI_FIGURES=ctypes.c_double.in_dll(lib, "MLG_C_PSI_FIGURES").value,
+            # the switching functions (c/mlg_model.h): name -> (mode below, mode above)
+            SWITCHING={name: (lib.mlg_switching_mode_after(k, -1),
+                             lib.mlg_switching_mode_after(k, 1))
+                      for k, name in enumerate(_names(lib.mlg_switching_name))})
         _tables["NX"] = len(_tables["UNAMES"])
         _tables["TAYLOR_ORDER"] = lib.mlg_taylor_order()   # the highest derivative of taylor()
     return _tables[key]
@@ -116,10 +123,10 @@ def _table(key: str):
 
 def __getattr__(name: str):
     """PARNAMES, MEASURES, FIELDS, UNAMES, LAWS, DIAGNOSTICS, NX, C_PSI_FIGURES,
-    TAYLOR_ORDER: read from the library when first asked for, so importing
-    this module needs no build."""
+    TAYLOR_ORDER, SWITCHING: read from the library when first asked for, so
+    importing this module needs no build."""
     if name in ("PARNAMES", "MEASURES", "FIELDS", "UNAMES", "LAWS", "DIAGNOSTICS", "NX",
-                "C_PSI_FIGURES", "TAYLOR_ORDER"):
+                "C_PSI_FIGURES", "TAYLOR_ORDER", "SWITCHING"):
         return _table(name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
@@ -289,18 +296,46 @@ class Model:
         """(f, df/du) of eq. (14) held in the freeplay mode `mode` (0 gap, 1
         contact+, 2 contact-: c/mlg_model.h), each mode's field continued
         beyond its switching surfaces; needs freeplay_law nonsmooth."""
-        nx = _table("NX")
+        return self._in_mode(u, mode, None)[:2]
+
+    def derivatives_in_mode(self, u: State, mode: int,
+                            parameter: str) -> Tuple[numpy.ndarray, numpy.ndarray, numpy.ndarray]:
+        """(f, df/du, df/d parameter) in the freeplay mode `mode`, as
+        jacobian_in_mode, with the derivative in a continuation parameter
+        (a name of PARNAMES: V, Fstar, ...), exact."""
+        return self._in_mode(u, mode, parameter)
+
+    def _in_mode(self, u, mode, parameter):
+        nx, names = _table("NX"), _table("PARNAMES")
+        if parameter is not None and parameter not in names:
+            raise KeyError(f"derivatives_in_mode: no continuation parameter {parameter!r}"
+                           f"{did_you_mean(parameter, [n for n in names if n])}")
         x = _state(u)
         f = (ctypes.c_double * nx)()
         J = (ctypes.c_double * (nx * nx))()   # column-major
+        P = (ctypes.c_double * (nx * len(names)))() if parameter is not None else None
         # enum mlg_discrete (c/mlg_model.h): the freeplay held, the friction by
         # state (MLG_MODE_BY_STATE = -1)
         modes = (ctypes.c_int * 2)(mode, -1)
-        status = library().mlg_rhs_jacobian_in_modes(ctypes.byref(self._p), modes, x, f, J,
-                                                     None)
+        status = library().mlg_rhs_jacobian_in_modes(ctypes.byref(self._p), modes, x, f, J, P)
         if status != 0:
             raise RuntimeError(f"jacobian_in_mode: {library().mlg_status_text(status).decode()}")
-        return numpy.array(f, dtype=float), numpy.array(J, dtype=float).reshape(nx, nx).T
+        out = (numpy.array(f, dtype=float), numpy.array(J, dtype=float).reshape(nx, nx).T)
+        if parameter is None:
+            return out
+        k = names.index(parameter)    # df/dPAR(k+1) is the k-th column of nx
+        return out + (numpy.array(P[k * nx:(k + 1) * nx], dtype=float),)
+
+    def switching(self, u: State) -> Dict[str, Tuple[float, numpy.ndarray]]:
+        """{name: (h, dh/du)} of every switching function (SWITCHING; h+- =
+        r_tlk(eta) psi_s -+ y_fp for the freeplay), exact (forward mode),
+        the discrete variables by state."""
+        nx, names = _table("NX"), list(_table("SWITCHING"))
+        h = (ctypes.c_double * len(names))()
+        dh = (ctypes.c_double * (len(names) * nx))()
+        self._call(library().mlg_switching, None, _state(u), h, dh)
+        return {name: (h[k], numpy.array(dh[k * nx:(k + 1) * nx], dtype=float))
+                for k, name in enumerate(names)}
 
     def taylor(self, u: Sequence[float], d: Sequence[float]) -> numpy.ndarray:
         """[f, D f[d], D^2 f[d, d], ..., D^K f[d, ..., d]] at the state u along
