@@ -72,3 +72,33 @@ def test_a_grazing_is_a_contact_of_zero_duration():
     assert segmented.grazing({"T1": short, "T2": 0.0127, "T3": short, "T4": 0.0127}, modes) == []
     assert segmented.grazing({"T1": 0.02, "T2": 2 * segmented.GRAZED, "T3": 0.02,
                               "T4": short}, modes) == [4]
+
+
+def test_gap_orbits_from_h3_are_unstable_and_return_under_the_simulation(tmp_path):
+    """segmented.gap_orbits: the orbits of eq. (14)'s gap mode from H3
+    (straight rolling's Hopf point in the gap) to 0.5 mm/s below it (short
+    of their grazing, 0.9 mm/s below: amplitude about 0.75 of the freeplay
+    angle); the one labelled midway is unstable, its largest multiplier 1 +
+    8e-6 (the gap mode's monodromy; H3 is subcritical), and one period
+    simulated from its first point with every switch located
+    (segmented.one_period) crosses none, returns within 1e-4 of the
+    amplitude and has AUTO's amplitude within 1e-4 (studies.segmented's
+    TOLERANCE)."""
+    with pytest.MonkeyPatch.context() as mp:
+        mp.delenv(rundirs.CLAIMED_ENV, raising=False)
+        mp.setenv("MLG_RUN_ROOT", str(tmp_path))
+        law = segmented.law14(CASE)
+        H3 = study.naming.scanned("figures", "V", study.ct.SPEED_SCAN, **law)["H3"]
+        model = segmented.mlgmodel.Model("figures", **law)
+        psi_fp = 1e-3 * CASE["yfp"] / model.r_tlk(model.equilibrium()["eta"])
+        bd = segmented.gap_orbits(str(tmp_path / "runs"), "gap", CASE, H3, H3 - 5e-4,
+                                  UZR={"V": [H3 - 2.5e-4]}, **study.PAST_STEPS)
+        end = bd[-1][-1]
+        assert abs(end["V"] - (H3 - 5e-4)) < 1e-9 and end["psi_amp"] < 0.8 * psi_fp
+        point = min(bd("UZ"), key=lambda p: abs(p["V"] - (H3 - 2.5e-4)))
+        verdict = segmented.stability(model.set(V=point["V"]), point)
+        got = segmented.one_period(CASE, point)
+    assert 1e-6 < verdict["largest"] - 1.0 < 1e-4, verdict["multipliers"]
+    assert got["switches"] == 0
+    assert got["closes"] < study.TOLERANCE
+    assert abs(got["psi_amplitude_rad"] / segmented.amplitude(point) - 1.0) < study.TOLERANCE

@@ -30,6 +30,8 @@ def width(scaling: str, model: Mapping[str, Any]) -> Tuple[Dict[str, float], Dic
 NOMINAL = {"yfp": 1.0, "eps_abs": 0.0, "eps_rel": 0.1}
 FIG13_FREEPLAYS = (0.2, 0.5, 1.0, 2.0)                 # y_fp [mm], "ratio"
 FIG14_FREEPLAYS = (0.05, 0.098, 0.11, 0.15, 0.35, 1.0)  # y_fp [mm], "fixed"
+# eps / y_fp of the smoothing error's table against eq. (14) (docs/model.md 9.3)
+TABLE_RATIOS = (1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01)
 
 
 def epsilon(case: Mapping[str, float]) -> float:

@@ -7,6 +7,7 @@ glued by continuity and h = 0 at the switches.
     runs = follow(rundir, "up", values, orbit, 100.0, stop={"V": 600}, DS=0.5)
     stability(model, runs[0](2))            # the monodromy's multipliers
     grazing(runs[-1]("LP")[-1], orbit["modes"])   # the contacts that graze there
+    past = gap_orbits(rundir, "gap", values, 144.545, 144.5441)   # beyond the grazing
 
 The start is an event-located simulation: its last full period gives the
 sequence of modes and their durations, and its samples the segments'
@@ -16,7 +17,7 @@ from __future__ import annotations
 
 import os
 import tempfile
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy
 
@@ -140,16 +141,10 @@ def follow(rundir: str, name: str, values: Dict[str, float], orbit: dict, V: flo
     anywhere with a contact of duration 0 solve it too), and AUTO may flag
     it as a fold instead: a fold with a contact shorter than GRAZED is a
     grazing too, and ends the branch."""
-    n = len(orbit["modes"])
     rundir = rundirs.claim(rundir)
     dat = os.path.join(rundir, f"{name}.dat")
     numpy.savetxt(dat, start_data(orbit), fmt="%.17e")
-    parnames = {**dict(autoglue.read_constants(ct.CONSTANTS)["parnames"]), **duration_names(n)}
-    T_pars = durations(n)
-    common = dict(NDIM=mlgmodel.NX * n, NBC=(mlgmodel.NX + 1) * n, parnames=parnames,
-                  ICP=[parameter] + T_pars + mlgmodel.MEASURES, UZR={parameter: list(at)},
-                  UZSTOP={**(stop or {}), **{p: 0.0 for p, m in zip(T_pars, orbit["modes"])
-                                             if m != GAP}}, STOP=["LP1"])
+    common = _constants(orbit["modes"], parameter, stop, at)
     runs = [ct.run(rundir, name, "segmented", model=MODEL, dat=dat,
                    PAR=parameters(values, orbit, V), **common, **kw)]
     while True:
@@ -161,10 +156,73 @@ def follow(rundir: str, name: str, values: Dict[str, float], orbit: dict, V: flo
                            data=folds[-1], **common, **kw))   # DS's sign: on, not back
 
 
+def resampled(rundir: str, name: str, solution: Any, parameter: str, stop: dict,
+              at: Sequence[float], **kw: Any) -> Any:
+    """One run (<name>) from the segmented orbit `solution` (an AUTO
+    solution; on in its run's direction: kw DS with that run's sign) to
+    `stop`, labelled (UZ) at the values `at` of `parameter`: the orbits
+    between two saved ones, sampled as finely as `at`."""
+    return ct.run(rundir, name, "segmented", model=MODEL, data=solution,
+                  **_constants(modes_of(solution), parameter, stop, at), **kw)
+
+
+def _constants(modes: Sequence[int], parameter: str, stop: Optional[dict],
+               at: Sequence[float]) -> dict:
+    """The AUTO constants of a segmented run: its dimensions, the durations
+    free, UZ at `at`, and its stops (`stop`, a contact's duration at zero,
+    the first fold)."""
+    n = len(modes)
+    parnames = {**dict(autoglue.read_constants(ct.CONSTANTS)["parnames"]), **duration_names(n)}
+    T_pars = durations(n)
+    return dict(NDIM=mlgmodel.NX * n, NBC=(mlgmodel.NX + 1) * n, parnames=parnames,
+                ICP=[parameter] + T_pars + mlgmodel.MEASURES, UZR={parameter: list(at)},
+                UZSTOP={**(stop or {}), **{p: 0.0 for p, m in zip(T_pars, modes) if m != GAP}},
+                STOP=["LP1"])
+
+
 def grazing(solution: Any, modes: Sequence[int]) -> List[int]:
     """The (1-based) contact segments of a solution whose duration is zero
     (below GRAZED): both, at the grazing of a symmetric orbit."""
     return [k + 1 for k, m in enumerate(modes) if m != GAP and solution[f"T{k + 1}"] < GRAZED]
+
+
+def gap_orbits(rundir: str, name: str, values: Dict[str, float], hopf: float,
+               stop: float, **kw: Any) -> Any:
+    """Past a grazing where every contact segment's duration reaches zero:
+    the orbits of the sequence without them, the gap mode alone.  Eq. (14)
+    is smooth in the gap and the library's field by state is the gap
+    mode's there, so they are the standard model's periodic orbits (IPS =
+    2), born at straight rolling's Hopf point near `hopf` [m/s] and
+    continued to the speed `stop`, short of the grazing (where they meet
+    the segmented branch; beyond it the library's field by state has
+    contact): run <name> (the Hopf point's <name>_hb), labelled (UZ) at
+    kw's UZR.  Their stability is the gap mode's monodromy (stability: one
+    segment)."""
+    law = law14(values)
+    point = ct.hopf_point(rundir, f"{name}_hb", "figures", "V", hopf, **law)
+    return ct.periodic_from(rundir, name, point, "V", stop={"V": stop}, **kw)
+
+
+def one_period(values: Dict[str, float], solution: Any) -> dict:
+    """An orbit of the standard model (an AUTO solution, IPS = 2) by the
+    event-located simulation over one period T from its first point:
+    {"switches": the switches crossed, "psi_amplitude_rad": half the
+    peak-to-peak of psi over [0, T], "closes": |psi(T) - psi(0)| over that
+    amplitude}: an orbit of eq. (14) returns, whether stable or not."""
+    u = numpy.array(solution.coordarray)
+    start = dict(zip(mlgmodel.UNAMES, u[:, 0]))
+    T = float(solution.PAR[10])                    # PAR(11), the period; PAR is 0-based here
+    with tempfile.TemporaryDirectory() as tmp:
+        csv, events = os.path.join(tmp, "orbit.csv"), os.path.join(tmp, "events.csv")
+        simulator.simulate(csv, "--set", "figures", "--V", solution["V"],
+                           *simulator.state_args(start), "--t-end", T, "--dt-out", T / 20000,
+                           *TOLERANCES, "--events", events, params=law14(values))
+        psi = numpy.loadtxt(csv, delimiter=",", skiprows=1)[:, 1]
+        crossed = numpy.genfromtxt(events, delimiter=",", skip_header=1, dtype=None,
+                                   encoding=None)
+    half = 0.5 * float(psi.max() - psi.min())
+    return {"switches": int(crossed.size), "psi_amplitude_rad": half,
+            "closes": abs(psi[-1] - psi[0]) / half}
 
 
 def amplitude(solution: Any, state: str = "psi") -> float:
@@ -177,13 +235,13 @@ def amplitude(solution: Any, state: str = "psi") -> float:
     fine = numpy.linspace(0.0, 1.0, 50 * len(t))
     i = mlgmodel.UNAMES.index(state)
     values = numpy.concatenate([CubicSpline(t, u[mlgmodel.NX * k + i])(fine)
-                                for k in range(len(modes_of(solution)))])
+                                for k in range(solution["NDIM"] // mlgmodel.NX)])
     return 0.5 * float(values.max() - values.min())
 
 
 def period(solution: Any) -> float:
     """The sum of a segmented orbit's durations [s]."""
-    return float(sum(solution[f"T{k + 1}"] for k in range(len(modes_of(solution)))))
+    return float(sum(T for _, T in segments_of(solution)))
 
 
 def modes_of(solution: Any) -> List[int]:
@@ -192,8 +250,18 @@ def modes_of(solution: Any) -> List[int]:
     return [int(solution.PAR[MODE + k]) for k in range(n)]    # PAR is 0-based here
 
 
+def segments_of(solution: Any) -> List[Tuple[int, float]]:
+    """[(mode, duration)] of an AUTO solution's segments: a segmented orbit's
+    (NDIM = 10 n, n >= 2), or a gap orbit of the standard model (NDIM = 10,
+    gap_orbits) as one segment in the gap for its period PAR(11)."""
+    if solution["NDIM"] == mlgmodel.NX:
+        return [(GAP, float(solution.PAR[10]))]
+    return [(m, float(solution[f"T{k + 1}"])) for k, m in enumerate(modes_of(solution))]
+
+
 def monodromy(model: "mlgmodel.Model", solution: Any) -> numpy.ndarray:
-    """The monodromy matrix of a segmented orbit (an AUTO solution): the
+    """The monodromy matrix of a segmented orbit (an AUTO solution; or a gap
+    orbit, segments_of): the
     product of its segments' (eq. (14) is continuous across h = 0, so the
     saltation matrices are the identity), each the variational equation
     Phi' = T_k J_k(u_k(s)) Phi integrated by RK4 on the collocation points
@@ -204,8 +272,7 @@ def monodromy(model: "mlgmodel.Model", solution: Any) -> numpy.ndarray:
     if ncol % 2:
         raise ValueError(f"monodromy: NCOL = {ncol} must be even (RK4 on its points)")
     total = numpy.eye(mlgmodel.NX)
-    for k, mode in enumerate(modes_of(solution)):
-        T = solution[f"T{k + 1}"]
+    for k, (mode, T) in enumerate(segments_of(solution)):
         rows = u[mlgmodel.NX * k:mlgmodel.NX * (k + 1)]
         J = [T * model.jacobian_in_mode(rows[:, j], mode)[1] for j in range(len(t))]
         phi = numpy.eye(mlgmodel.NX)

@@ -65,7 +65,7 @@ DECLARED = {
     },
 }
 FIGURE = "smoothing"
-RATIOS = (1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01)      # eps / y_fp
+RATIOS = freeplay.TABLE_RATIOS                        # eps / y_fp
 ASYMPTOTIC = 0.2                                       # the fit uses eps / y_fp <= this
 CASE = {"Fstar": 1.0, "yfp": freeplay.NOMINAL["yfp"], "eps_abs": 0.0}
 SPEEDS = (60.0, 100.0, 140.0)      # m/s, between S and H3: the stable high-frequency orbit
