@@ -160,6 +160,9 @@ $(eval $(call cached_study,smoothing_fig14))
 # $(RUN_ROOT)/tables/segmented.txt.
 $(eval $(call cached_study,segmented))
 $(call result,segmented): $(MLG_SEGMENTED).exe
+# under regression: tests/reference/segmented holds its segmented runs and its
+# named points with their tolerances (docs/regression.md)
+REGRESS_FIGURES += segmented
 # tests/continuation/test_segmented.py runs its orbits
 TEST_DEPS += $(MLG_SEGMENTED).exe
 
