@@ -33,7 +33,7 @@ F* = 1, y_fp = 1 mm.
   how close its yawed state comes to each BEP at APPROACH.
 - The named points (numbers(): the reference set tests/reference/segmented).
 
-    make segmented          # compute (about 7 min), the table and the figure
+    make segmented          # compute (about 5 min), the table and the figure
     make segmented-plot     # redraw from the cache
 """
 from __future__ import annotations
@@ -49,14 +49,16 @@ from mlgshimmy.shared import simulator, spectrum
 
 DECLARED = {
     "segmented": {
-        "help": "Fig. 10 under eq. (14): segmented AUTO orbits, grazing, checked by simulation",
-        "time": "7 min",
+        "help": "Fig. 10 under eq. (14): segmented AUTO orbits, grazing, checked by simulation; Fig. 12's BEPs",
+        "time": "5 min",
         "report": {
             "command": "make segmented",
             "text": ("Fig. 10's diagram in the non-smooth limit (eq. 14): periodic orbits as "
                      "segmented boundary-value problems (one segment per mode, durations "
-                     "unknown), their fold and grazing, checked against the event-located "
-                     "simulation, beside eq. (15) at eps = 0.1 y_fp."),
+                     "unknown), their fold, grazings and the gap orbits past them, the "
+                     "pitchfork P, checked against the event-located simulation, beside eq. "
+                     "(15) at eps = 0.1 y_fp; Fig. 12's boundary-equilibrium points against "
+                     "the smoothed pitchforks."),
             "tables": ["tables/segmented.txt"],
             "figures": ["figures/segmented.png"],
         },
