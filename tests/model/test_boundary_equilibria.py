@@ -33,18 +33,6 @@ def model_at(Fstar, **changed):
     return mlgmodel.Model("figures", **{**VALUES, "Fstar": Fstar, **changed})
 
 
-def equilibrium_in_mode(model, mode, u):
-    """Newton on f_mode(u) = 0 at fixed parameters, from u."""
-    u = np.array(u, dtype=float)
-    for _ in range(30):
-        f, J = model.jacobian_in_mode(u, mode)
-        du = -np.linalg.solve(J, f)
-        u += du
-        if np.max(np.abs(du)) < 1e-12:
-            return u
-    raise AssertionError(f"no equilibrium of mode {mode} from {u}")
-
-
 def test_two_pitchforks_give_four_beps_mirrored_in_psi(points):
     """Two pitchforks of straight rolling in the gap (F* 0.025 and 0.44),
     each yawed pair reaching h+ = 0 and h- = 0 at one load, psi mirrored."""
@@ -116,7 +104,7 @@ def test_persistence_each_mode_admissible_on_the_side_it_is_said_to_be(points):
         for mode, name, admissible in ((GAP, "gap", -1), (CONTACT_POS, "contact+", 1)):
             for side in (1, -1):
                 model = model_at(p["Fstar"] + side * step)
-                u = equilibrium_in_mode(model, mode, p["u"])
+                u = be.equilibrium_in_mode(model, mode, p["u"])
                 h, _ = model.switching(u)["freeplay_upper"]
                 expected = admissible if side == p["sides"][name] else -admissible
                 assert np.sign(h) == expected, (p["Fstar"], name, side, h)
@@ -158,3 +146,16 @@ def test_a_parameter_that_h_contains_is_refused_naming_it(points):
     p = points[0]
     with pytest.raises(ValueError, match="'yfp'"):
         be.system(model_at(p["Fstar"]), GAP, p["surface"], p["u"], "yfp")
+
+
+def test_the_gap_branch_from_the_bep_is_the_pitchfork_s_parabola(points):
+    """branch_in_psi: the gap's yawed states with psi held, F* free, from
+    the BEP towards its pitchfork: F*_P - F* ~ c psi^2, so at half the
+    BEP's psi a quarter of F*_P - F*_BEP (measured 4e-4 and 9e-4 off,
+    relative: the psi^4 term), and y_tlk / y_fp half of the BEP's 1 (1.5e-4,
+    5e-6: r_tlk moves with eta)."""
+    for p in upper(points):
+        model = model_at(p["Fstar"])
+        (F, y), = be.branch_in_psi(model, p, "Fstar", [0.5 * p["psi"]])
+        assert_close((p["pitchfork"] - F) / (p["pitchfork"] - p["Fstar"]), 0.25, rel=2e-3)
+        assert_close(y, 0.5, rel=1e-3)

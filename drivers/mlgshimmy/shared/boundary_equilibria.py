@@ -29,7 +29,7 @@ BEPs (from_pitchforks).
 """
 from __future__ import annotations
 
-from typing import Any, Dict, List, Mapping, Sequence
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
@@ -47,29 +47,34 @@ FREE_OF_H = ("V", "Fstar", "c_psi", "k_tlk", "M_fric")
 
 
 def system(model: mlgmodel.Model, mode: int, surface: str, u: Sequence[float],
-           parameter: str) -> tuple:
+           parameter: str, psi: Optional[float] = None) -> tuple:
     """(G, DG) of the BEP's equations at (u, p = model's parameter):
     G = (f_mode(u; p), h_surface(u)), DG its exact Jacobian in (u, p), p
-    one of FREE_OF_H."""
+    one of FREE_OF_H; with `psi` given, psi held there instead of h = 0
+    (the mode's branch through the BEP, branch_in_psi)."""
     if parameter not in FREE_OF_H:
         raise ValueError(f"boundary_equilibria: parameter {parameter!r} is not free: h "
                          f"contains it; free are {', '.join(FREE_OF_H)}")
     f, J, fp = model.derivatives_in_mode(u, mode, parameter)
-    h, dh = model.switching(u)[surface]
+    if psi is None:
+        h, dh = model.switching(u)[surface]
+    else:
+        h, dh = u[PSI] - psi, numpy.eye(len(u))[PSI]
     G = numpy.r_[f, h]
     DG = numpy.vstack([numpy.c_[J, fp], numpy.r_[dh, 0.0]])
     return G, DG
 
 
 def solve(model: mlgmodel.Model, mode: int, surface: str, u: Sequence[float],
-          parameter: str) -> Dict[str, Any]:
-    """The BEP on `surface` reached by Newton from the state u at the
-    model's value of `parameter`, solved in `mode`: {"u", parameter,
-    "surface", "mode", "steps"}; RuntimeError if Newton does not converge."""
+          parameter: str, psi: Optional[float] = None) -> Dict[str, Any]:
+    """The BEP on `surface` (with `psi`: the equilibrium of `mode` with psi
+    held there) reached by Newton from the state u at the model's value of
+    `parameter`, solved in `mode`: {"u", parameter, "surface", "mode",
+    "steps"}; RuntimeError if Newton does not converge."""
     x = numpy.r_[numpy.asarray(u, dtype=float), model[parameter]]
     nx = len(x) - 1
     for step in range(1, NEWTON_STEPS + 1):
-        G, DG = system(model.set(**{parameter: x[nx]}), mode, surface, x[:nx], parameter)
+        G, DG = system(model.set(**{parameter: x[nx]}), mode, surface, x[:nx], parameter, psi)
         dx = -numpy.linalg.solve(DG, G)
         x = x + dx
         if numpy.max(numpy.abs(dx)) < CONVERGED:
@@ -161,3 +166,39 @@ def smoothed_approach(values: Mapping[str, float], point: Mapping[str, Any], par
         h, _ = model.switching(u)[point["surface"]]
         out.append({"ratio": ratio, "gap": abs(h) / (1e-3 * values["yfp"])})
     return out
+
+
+def equilibrium_in_mode(model: mlgmodel.Model, mode: int, u: Sequence[float]) -> numpy.ndarray:
+    """The equilibrium of `mode` by Newton from u at the model's parameters
+    (corrections below CONVERGED); RuntimeError if it does not converge."""
+    x = numpy.array(u, dtype=float)
+    for _ in range(NEWTON_STEPS):
+        f, J = model.jacobian_in_mode(x, mode)
+        dx = -numpy.linalg.solve(J, f)
+        x += dx
+        if numpy.max(numpy.abs(dx)) < CONVERGED:
+            return x
+    raise RuntimeError(f"boundary_equilibria: no equilibrium of the {MODE_NAMES[mode]} mode "
+                       f"by Newton from psi = {u[PSI]:.6g}")
+
+
+def branch_in_psi(model: mlgmodel.Model, point: Mapping[str, Any], parameter: str,
+                  psis: Sequence[float], mode: int = 0) -> List[Tuple[float, float]]:
+    """The equilibria of `mode` (the gap's) through the BEP `point` at the
+    held values `psis` of psi, each by Newton from the one before (p
+    free): [(p, y_tlk / y_fp)]: the gap's yawed branch from the BEP back
+    towards its pitchfork."""
+    out, u = [], numpy.array(point["u"], dtype=float)
+    model.set(**{parameter: point[parameter]})
+    for psi in psis:
+        found = solve(model, mode, point["surface"], u, parameter, psi)
+        u = found["u"]
+        out.append((found[parameter], tlk_ratio(model, u, point["surface"])))
+    return out
+
+
+def tlk_ratio(model: mlgmodel.Model, u: Sequence[float], surface: str) -> float:
+    """y_tlk / y_fp at the state u, from h+- = y_tlk -+ y_fp."""
+    h, _ = model.switching(u)[surface]
+    yfp = 1e-3 * model["yfp"]
+    return (h + yfp) / yfp if surface == "freeplay_upper" else (h - yfp) / yfp

@@ -20,8 +20,9 @@ F* = 1, y_fp = 1 mm.
   real multiplier passes +1; TR): the orbits between the two saved ones
   whose verdicts differ are run again, sampled REFINE times
   (segmented.resampled), and again between the two samples whose verdicts
-  differ (PASSES): located to 1/REFINE^PASSES of the first bracket.  At P, the orbits the simulation settles
-  on SIDE below and above it, symmetric or not (symmetry).
+  differ (PASSES): located to 1/REFINE^PASSES of the first bracket.  At
+  P, the orbits the simulation settles on SIDE below and above it,
+  symmetric or not (symmetry).
 - Past each grazing, the orbits of the gap mode alone, from the Hopf point
   of straight rolling nearest it to the grazing orbit (segmented.gap_orbits),
   one of them checked by simulating one period from it.
@@ -43,13 +44,14 @@ from typing import Any, Dict, List, Mapping, Sequence, Tuple
 import numpy
 
 from mlgshimmy.shared import boundary_equilibria, branches, convergence, freeplay, gear, jobs
-from mlgshimmy.shared import mlgmodel, naming, paths, runerror, segmented
+from mlgshimmy.shared import mlgmodel, naming, paths, runerror, segmented, yawed
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import simulator, spectrum
 
 DECLARED = {
     "segmented": {
-        "help": "Fig. 10 under eq. (14): segmented AUTO orbits, grazing, checked by simulation; Fig. 12's BEPs",
+        "help": ("Fig. 10 under eq. (14): segmented AUTO orbits, grazing, checked by "
+                 "simulation; Fig. 12's BEPs"),
         "time": "5 min",
         "report": {
             "command": "make segmented",
@@ -60,7 +62,7 @@ DECLARED = {
                      "(15) at eps = 0.1 y_fp; Fig. 12's boundary-equilibrium points against "
                      "the smoothed pitchforks."),
             "tables": ["tables/segmented.txt"],
-            "figures": ["figures/segmented.png"],
+            "figures": ["figures/segmented.png", "figures/segmented_fig12.png"],
         },
     },
 }
@@ -92,6 +94,10 @@ FIG12_CASE = {"V": 50.0, "yfp": 1.0, "eps_abs": 0.0, "eps_rel": 0.0}   # Fig. 12
 FIG12_LOADS = numpy.linspace(0.02, 3.5, 175)     # F*: Fig. 12's range
 APPROACH = (0.0005, 0.001, 0.002)  # eps / y_fp: the smoothed yawed state at a BEP's load
 ROUNDING = 1e-10                # relative: a pitchfork's difference below this is rounding
+# the figure of Fig. 12's yawed states: points per branch, eq. (15)'s widths, its loads
+BRANCH_POINTS, OVERLAY_RATIOS = 40, (0.1, 0.02, 0.005, 0.001)
+YAW_LOADS = numpy.linspace(0.022, 0.46, 60)
+ZOOM_SPAN = 1e-4                # F*: panel (b) from 2 ZOOM_SPAN below BEP2 to ZOOM_SPAN above P2
 
 
 def stability_mask(bd: Any, branch: Any,
@@ -314,16 +320,51 @@ def boundary(at: Mapping[str, float]) -> Dict[str, Any]:
                       if near else None)
     approach = [boundary_equilibria.smoothed_approach({**at, **FIG12_CASE}, p, "Fstar", APPROACH)
                 for p in found]
+    branches_ = yawed_branches(at, found)
     for p in found:
         print(f"segmented: Fig. 12 under eq. (14): pitchfork at F* = {p['pitchfork']:.10f}, "
               f"BEP at F* = {p['Fstar']:.10f}, psi = {p['psi']:.8e} rad ({p['kind']})", flush=True)
     return {"points": [{k: p[k] for k in ("pitchfork", "Fstar", "psi", "kind", "sides", "stable")}
                        for p in found],
             "smoothed": {f"{r:g}": forks for r, forks in smoothed.items()}, "orders": orders,
-            "approach": approach,
+            "approach": approach, "branches": branches_,
             "approach_orders": [convergence.fitted_order([a["ratio"] for a in ap],
                                                          [a["gap"] for a in ap], 0.0)
                                 for ap in approach]}
+
+
+def yawed_branches(at: Mapping[str, float], found: Sequence[Mapping[str, Any]]) -> Dict[str, Any]:
+    """Fig. 12's yawed states in (F*, y_tlk / y_fp), for the figure: eq.
+    (14)'s gap branches from each BEP back to its pitchfork
+    (boundary_equilibria.branch_in_psi), its contact+ states between the
+    BEPs (on BRANCH_POINTS loads), and the smoothed law's largest yawed state
+    (shared.yawed) at each of OVERLAY_RATIOS on YAW_LOADS and, near P2, on
+    ZOOM_LOADS."""
+    model = mlgmodel.Model("figures", **segmented.law14({**at, **FIG12_CASE}))
+    held = [numpy.linspace(p["psi"], 0.0, BRANCH_POINTS + 1)[1:-1] for p in found]
+    gap = [[(p["Fstar"], 1.0)] + boundary_equilibria.branch_in_psi(model, p, "Fstar", psis)
+           + [(p["pitchfork"], 0.0)] for p, psis in zip(found, held)]
+    contact, u = [], found[0]["u"]
+    for F in numpy.linspace(found[0]["Fstar"], found[-1]["Fstar"], BRANCH_POINTS):
+        u = boundary_equilibria.equilibrium_in_mode(model.set(Fstar=F), segmented.CONTACT_POS, u)
+        contact.append((float(F), boundary_equilibria.tlk_ratio(model, u, "freeplay_upper")))
+    zoom = numpy.linspace(found[-1]["Fstar"] - 2 * ZOOM_SPAN, found[-1]["pitchfork"] + ZOOM_SPAN,
+                          BRANCH_POINTS)
+    smoothed = {}
+    for ratio in OVERLAY_RATIOS:
+        freeplay_case = {"yfp": FIG12_CASE["yfp"], "eps_abs": 0.0, "eps_rel": ratio}
+        points = []
+        for F in numpy.r_[YAW_LOADS, zoom]:
+            states = yawed.states("figures", float(F), freeplay_case, **at)["yawed"]
+            m = yawed.model("figures", float(F), freeplay_case, **at)
+            ratios = [boundary_equilibria.tlk_ratio(m, v, "freeplay_upper") for v in states]
+            if ratios:
+                points.append((float(F), max(ratios)))
+        smoothed[f"{ratio:g}"] = points
+    law = segmented.law14({**at, **FIG12_CASE})
+    forks = [p["pitchfork"] for p in found]
+    stable = spectrum.stable_intervals("figures", "Fstar", forks, 0.0, YAW_LOADS[-1], **law)
+    return {"gap": gap, "contact": contact, "smoothed": smoothed, "rolling_stable": stable}
 
 
 def numbers(result: Mapping[str, Any]) -> Dict[str, float]:
@@ -409,31 +450,34 @@ def text(result: Mapping[str, Any]) -> str:
         lines.append(f"  {r['family']:<14}  {r['V']:<7g}  {r['amp_auto']:.10e}    "
                      f"{r['amp_sim']:.10e}    {r['amp_rel']:+.2e} {r['freq_auto']:.8f}     "
                      f"{r['freq_sim']:.8f}     {r['freq_rel']:+.2e}")
-    lines += ["", "  past each grazing, the orbits of the gap mode alone (the standard model) from "
-              "the Hopf point nearest it, to the grazing orbit's amplitude:"]
+    lines += ["", "  past each grazing, the orbits of the gap mode alone (the standard model) "
+              "from the Hopf point nearest it, to the grazing orbit's amplitude:"]
     for p in result["past"]:
         c = p["check"]
-        lines += [f"  {p['family']}: from {p['hopf']} towards the grazing at {p['grazing']:.8f} m/s: "
-                  f"they reach the grazing orbit's psi amplitude at {p['meets']:.8f} m/s;",
+        lines += [f"  {p['family']}: from {p['hopf']} towards the grazing at "
+                  f"{p['grazing']:.8f} m/s: they reach the grazing orbit's psi amplitude at "
+                  f"{p['meets']:.8f} m/s;",
                   f"    at V = {c['V']:.6f} m/s {'stable' if p['largest'] < 1 else 'unstable'} "
-                  f"(|mu| = 1 {p['largest'] - 1:+.1e}); one period simulated from AUTO's orbit: psi "
-                  f"amplitude {c['amp_rel']:+.2e} relative, returns within {c['closes']:.2e}, "
+                  f"(|mu| = 1 {p['largest'] - 1:+.1e}); one period simulated from AUTO's orbit: "
+                  f"psi amplitude {c['amp_rel']:+.2e} relative, returns within {c['closes']:.2e}, "
                   f"{c['switches']} switches crossed"]
     return "\n".join(lines + boundary_text(result["boundary"])) + "\n"
 
 
 def boundary_text(found: Mapping[str, Any]) -> List[str]:
     """The table's lines on Fig. 12's BEPs and the smoothed pitchforks."""
-    lines = ["", "  Fig. 12 under eq. (14) (V = 50 m/s, y_fp = 1 mm): straight rolling's pitchforks "
-             "P in the gap, and the", "  boundary-equilibrium points (BEP) where their yawed "
-             "states reach y_tlk = y_fp (psi -> -psi: -y_fp):",
+    lines = ["", "  Fig. 12 under eq. (14) (V = 50 m/s, y_fp = 1 mm): straight rolling's "
+             "pitchforks P in the gap, and the",
+             "  boundary-equilibrium points (BEP) where their yawed states reach y_tlk = y_fp "
+             "(psi -> -psi: -y_fp):",
              "  P [F*]        BEP [F*]      P - BEP     psi at BEP [rad]  kind         gap "
              "admissible  stable there"]
     for p in found["points"]:
         side = "above" if p["sides"]["gap"] > 0 else "below"
         stable = ", ".join(m for m, ok in p["stable"].items() if ok) or "neither"
-        lines.append(f"  {p['pitchfork']:.10f}  {p['Fstar']:.10f}  {p['pitchfork'] - p['Fstar']:+.3e}"
-                     f"  {p['psi']:.8e}    {p['kind']:<11}  {side} the BEP     {stable}")
+        lines.append(f"  {p['pitchfork']:.10f}  {p['Fstar']:.10f}  "
+                     f"{p['pitchfork'] - p['Fstar']:+.3e}  {p['psi']:.8e}    {p['kind']:<11}  "
+                     f"{side} the BEP     {stable}")
     ratios = list(found["smoothed"])
     lines += ["", "  the smoothed law's pitchforks, P(eps) - P(0) at eps / y_fp = "
               + ", ".join(ratios) + " (-: none), fitted order:"]
@@ -442,8 +486,8 @@ def boundary_text(found: Mapping[str, Any]) -> List[str]:
                  for forks in found["smoothed"].values()]
         lines.append(f"  P{k + 1}: " + "  ".join(cells)
                      + (f"   p = {fit['p']:.2f}" if fit else ""))
-    lines += ["", "  the smoothed law's yawed state at each BEP's load: 1 - |y_tlk| / y_fp at eps / "
-              "y_fp = " + ", ".join(f"{r:g}" for r in APPROACH) + ", fitted order:"]
+    lines += ["", "  the smoothed law's yawed state at each BEP's load: 1 - |y_tlk| / y_fp at "
+              "eps / y_fp = " + ", ".join(f"{r:g}" for r in APPROACH) + ", fitted order:"]
     for k, (ap, fit) in enumerate(zip(found["approach"], found["approach_orders"])):
         lines.append(f"  BEP{k + 1}: " + "  ".join(f"{a['gap']:.4e}" for a in ap)
                      + (f"   p = {fit['p']:.2f}" if fit else ""))
@@ -519,6 +563,60 @@ def plot(result: Mapping[str, Any]) -> None:
     fig.tight_layout()
     draw.legend(fig, extra=extra, axes=(amp, zoom, freq, graze))   # below the panels
     draw.save(fig, FIGURE)
+    fig12_plot(result["boundary"])
+
+
+def fig12_plot(found: Mapping[str, Any]) -> None:
+    """segmented_fig12.png: Fig. 12's yawed states in (F*, y_tlk / y_fp) at
+    V = 50 m/s under eq. (14) (its gap and contact branches, the
+    pitchforks P and the BEPs B) and under eq. (15) at OVERLAY_RATIOS; (a)
+    Fig. 12's yawed range, (b) near P2."""
+    import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
+    from matplotlib.ticker import MaxNLocator
+    from mlgshimmy.shared import draw
+
+    branches_ = found["branches"]
+    fig, (full, zoom) = plt.subplots(1, 2, figsize=(10, 4.8))
+    colours = dict(zip(branches_["smoothed"], draw.sequence(len(branches_["smoothed"]))))
+    forks = [p["pitchfork"] for p in found["points"]]
+    last = found["points"][-1]
+    for ax, (lo, hi) in ((full, (0.0, YAW_LOADS[-1])),
+                         (zoom, (last["Fstar"] - 2 * ZOOM_SPAN, last["pitchfork"] + ZOOM_SPAN))):
+        ax.axhline(1.0, color=draw.palette.GUIDE, lw=3, zorder=0)
+        for ratio, points in branches_["smoothed"].items():
+            inside = sorted(p for p in points if lo <= p[0] <= hi)
+            if inside:
+                ax.plot(*numpy.array(inside).T, color=colours[ratio], lw=1.2)
+        for branch in branches_["gap"] + [branches_["contact"]]:
+            F, y = numpy.array(branch).T
+            ax.plot(F, y, **{**draw.style_of(True), "lw": 2.0})
+        edges = sorted({lo, hi, *[f for f in forks if lo < f < hi]})
+        for a, b in zip(edges, edges[1:]):
+            ok = any(s <= 0.5 * (a + b) <= e for s, e in branches_["rolling_stable"])
+            ax.plot([a, b], [0.0, 0.0], **{**draw.style_of(ok), "lw": 2.0})
+        for k, p in enumerate(found["points"]):
+            draw.mark(ax, p["pitchfork"], 0.0, "BP", name=f"P{k + 1}")
+            draw.mark(ax, p["Fstar"], 1.0, "BEP", name=f"B{k + 1}")
+        ax.set_xlim(lo, hi)
+        ax.set_xlabel(r"$F_z^*$")
+    full.set_ylim(-0.05, 1.12)
+    zoom.set_ylim(-0.05, 1.12)
+    zoom.ticklabel_format(axis="x", useOffset=False)
+    zoom.xaxis.set_major_locator(MaxNLocator(5))
+    full.set_ylabel(r"$y_{tlk} / y_{fp}$ of the yawed state ($\psi > 0$)")
+    full.set_title("(a) the yawed states between the pitchforks")
+    zoom.set_title("(b) zoom near P2")
+    extra = [Line2D([], [], **{**draw.style_of(True), "lw": 2.0},
+                    label="eq. (14): gap, then contact"),
+             Line2D([], [], color=draw.palette.GUIDE, lw=3,
+                    label=r"contact edge $y_{tlk} = y_{fp}$")]
+    extra += [Line2D([], [], color=c, lw=1.2, label=rf"eq. (15), $\epsilon$ = {r} $y_{{fp}}$")
+              for r, c in colours.items()]
+    draw.figure_title(fig, r"Fig. 12's yawed states under eq. (14): V = 50 m/s, $y_{fp}$ = 1 mm")
+    fig.tight_layout()
+    draw.legend(fig, extra=extra, stability=False)
+    draw.save(fig, f"{FIGURE}_fig12")
 
 
 def grazing_panel(ax: Any, result: Mapping[str, Any], ours: Sequence[Any]) -> None:

@@ -74,6 +74,8 @@ POINTS = {
            "legend": "period doubling"},
     "GR": {"name": "G", "marker": "p", "mfc": palette.OPEN, "ms": 5.5,
            "legend": "grazing (a contact segment's duration reaches zero)"},
+    "BEP": {"name": "B", "marker": "8", "mfc": palette.OPEN, "ms": 5.5,
+            "legend": "boundary-equilibrium point (an equilibrium on a switching surface)"},
     "change": {"name": "", "marker": "o", "mfc": palette.OPEN, "ms": 4.5,
                "legend": "stability change AUTO did not label"},
     # codimension-two points on curves of Hopf points (shared.codim2)
