@@ -36,3 +36,27 @@ def test_a_complex_pair_leaving_the_unit_circle_is_a_torus_point():
                                          ("1.5E-03", 1.5e-3), ("42.0", 42.0), ("-3", -3.0)])
 def test_fortran_numbers(text, value):
     assert floquet.fortran_number(text) == value
+
+
+D_FILE_BLOCK = """\
+   2   129   7        5.14441E+01   2.04749E+02
+   2   129         Multiplier  1    1.01367E+00   0.00000E+00  Abs. Val.   1.01367E+00
+   2   129         Multiplier  2   -9.71553E-01   2.42974E-01  Abs. Val.   1.00147E+00
+   2   129         Multiplier  3   -9.71553E-01  -2.42974E-01  Abs. Val.   1.00147E+00
+   2   129         Multiplier  4    1.79769+308   1.79769+308  Abs. Val.   1.79769+308
+"""
+
+
+def test_an_infinite_multiplier_is_read_as_a_real_infinity(tmp_path):
+    """AUTO prints the multiplier it cannot compute (an MX point's, FLOWKM)
+    as CMPLX(HUGE, HUGE) with a three-digit exponent and no E (at rho = 5,
+    mu = -15 deg, slice 1.5625 of Fig. 11, this stopped the torus part): it
+    is a real infinity, so the complex pair in the block stays the critical one."""
+    path = tmp_path / "d.po"
+    path.write_text(D_FILE_BLOCK)
+    (value, mults), = floquet.read(str(path))
+    assert value == pytest.approx(51.4441)
+    assert mults[3] == complex(numpy.inf, 0.0)
+    rate, angle = floquet.critical(mults)
+    assert rate == pytest.approx(abs(complex(-0.971553, 0.242974)) - 1.0, rel=1e-9)
+    assert angle == pytest.approx(numpy.pi - numpy.arctan(0.242974 / 0.971553), rel=1e-9)

@@ -9,6 +9,7 @@ through |z| = 1 by only ~1e-5 per m/s, so most crossings go unlabelled (at
 F* = 0.2 the count changes 1.2 m/s after the sign).  The crossings are
 therefore found here, from the multipliers of every step.
 """
+import math
 import re
 from typing import Dict, List, Sequence, Tuple
 
@@ -18,6 +19,7 @@ _ITERATION = re.compile(r"^\s*-?\d+\s+-?\d+\s+\d+\s+(\S+)\s+\S+\s*$")
 _MULTIPLIER = re.compile(r"^\s*-?\d+\s+(-?\d+)\s+Multiplier\s+\d+\s+(\S+)\s+(\S+)\s+Abs")
 
 COMPLEX = 3e-3    # |Im mu| above this: a complex pair (AUTO: sqrt(EPSS))
+HUGE = 1.79769e308  # Fortran's HUGE(1.0D0) as AUTO prints it (6 digits)
 
 
 def fortran_number(text: str) -> float:
@@ -25,6 +27,16 @@ def fortran_number(text: str) -> float:
     three-digit exponent leaves no room for the E."""
     return float(re.sub(r"(?<=[0-9.])([+-]\d+)$", r"E\1", text.replace("D", "E"))
                  if "E" not in text.upper().replace("D", "E") else text.replace("D", "E"))
+
+
+def multiplier(re_text: str, im_text: str) -> complex:
+    """A multiplier of a d-file; AUTO writes an infinite one (where the
+    monodromy's solve breaks down, FLOWKM) as CMPLX(HUGE, HUGE),
+    1.79769+308 twice: it is read as a real infinity, not a complex pair."""
+    re_part, im_part = fortran_number(re_text), fortran_number(im_text)
+    if abs(re_part) >= HUGE and abs(im_part) >= HUGE:
+        return complex(math.inf, 0.0)
+    return complex(re_part, im_part)
 
 
 def read(path: str) -> List[Tuple[float, numpy.ndarray]]:
@@ -45,7 +57,7 @@ def read_points(path: str) -> Dict[int, Tuple[float, numpy.ndarray]]:
             m = _MULTIPLIER.match(line)
             if m:
                 point = abs(int(m.group(1)))
-                current.append(complex(float(m.group(2)), float(m.group(3))))
+                current.append(multiplier(m.group(2), m.group(3)))
                 continue
             m = _ITERATION.match(line)
             if m:
