@@ -220,7 +220,7 @@ gear:
 	MLG_RHO_DEG= MLG_MU_DEG= MLG_EOM= MLG_SET= MLG_BASE_RUN_ROOT= $(MAKE) --no-print-directory \
 	    MLG_RUN_ROOT=$(call shell_quote,$(BASE_RUN_ROOT)) RHO= MU= EOM= SET= $(GEAR_FIGURES)
 	$(MAKE) --no-print-directory $(GEAR_FIGURES)
-	failed=; $(foreach m,$(GEAR_MOTION),$(MAKE) --no-print-directory animate \
+	set -e; failed=; $(foreach m,$(GEAR_MOTION),$(MAKE) --no-print-directory animate \
 	    V=$(word 1,$(subst :, ,$(m))) FSTAR=$(word 2,$(subst :, ,$(m))) \
 	    START=$(word 3,$(subst :, ,$(m))) NEAR=1 || failed="$$failed $(m)";) \
 	$(MAKE) --no-print-directory report || exit 1; \
