@@ -523,14 +523,17 @@ def build(out: Optional[str] = None, root: Optional[str] = None) -> str:
             shutil.copyfile(path, os.path.join(out, "figures", name))
             images[path] = f"figures/{name}"
     target = os.path.join(out, "index.html")
+    lead = gear_answers.section()
     write_text(target, page(info, images, os.path.relpath(os.path.join(paths.ROOT, checks.DOCS),
-                                                          out), gear_answers.section()))
+                                                          out), lead))
     write_text(os.path.join(out, "report.json"),
                json.dumps({k: v for k, v in info.items()}, indent=1, default=str) + "\n")
     missing = [f["figure"] for f in info["figures"] if not f["png"]]
-    print(f"report: wrote {os.path.relpath(target, paths.ROOT)} ({len(info['score'])} scorecard "
-          f"rows, {len(images)} figures" + (f"; missing: {' '.join(missing)}" if missing else "")
-          + ")")
+    made = sum(1 for f in info["figures"] if f["png"])
+    print(f"report: wrote {os.path.relpath(target, paths.ROOT)} " + (
+        f"(your gear: {made} figures made there)" if lead else
+        f"({len(info['score'])} scorecard rows, {len(images)} figures"
+        + (f"; missing: {' '.join(missing)}" if missing else "") + ")"))
     return target
 
 
