@@ -222,7 +222,7 @@ gear:
 	$(MAKE) --no-print-directory $(GEAR_FIGURES)
 	set -e; failed=; $(foreach m,$(GEAR_MOTION),$(MAKE) --no-print-directory animate \
 	    V=$(word 1,$(subst :, ,$(m))) FSTAR=$(word 2,$(subst :, ,$(m))) \
-	    START=$(word 3,$(subst :, ,$(m))) NEAR=1 || failed="$$failed $(m)";) \
+	    START=$(word 3,$(subst :, ,$(m))) NEAR=1 || failed="$$failed "$(call shell_quote,$(m));) \
 	$(MAKE) --no-print-directory report || exit 1; \
 	if [ -n "$$failed" ]; then echo "gear: the page is written without the animations" \
 	    "that failed (V:F*:start, reasons above):$$failed"; exit 1; fi
