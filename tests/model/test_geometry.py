@@ -209,9 +209,15 @@ def test_a_figure_at_a_geometry_says_so(monkeypatch):
     gear.stamp(fig)
     assert fig._suptitle.get_text() == ("Fig. 10 [side stay rho = 10 deg, mu = -20 deg, "
                                         "the complete equations of motion]")
-    bare, _ = plt.subplots()
+    bare, _ = plt.subplots(1, 2)
     gear.stamp(bare)
     assert "rho = 10 deg" in bare._suptitle.get_text()
+    one, ax = plt.subplots()          # one titled axes (Fig. 11): the gear under its title
+    ax.set_title("Fig. 11")
+    gear.stamp(one)
+    assert one._suptitle is None
+    assert ax.get_title() == ("Fig. 11\nside stay rho = 10 deg, mu = -20 deg, "
+                              "the complete equations of motion")
     plt.close("all")
     monkeypatch.setattr(gear, "current", lambda: gear.Gear())
     fig, _ = plt.subplots()

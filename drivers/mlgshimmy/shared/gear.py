@@ -182,13 +182,18 @@ def baseline_numbers(figure: str) -> Optional[dict]:
 
 def stamp(fig: Any) -> None:
     """Name the gear in a figure's title (shared.draw.save calls it):
-    appended to its suptitle, or a suptitle of its own; nothing at the
-    baseline."""
+    appended to its suptitle; else, where one axes alone has a title (the
+    figure's, as Fig. 11's), on a line under it; else a suptitle of its
+    own (a figure-level one above a single axes' title leaves a blank
+    band between the two); nothing at the baseline."""
     if current().baseline:
         return
     title = getattr(fig, "_suptitle", None)
+    titled = [ax for ax in fig.axes if ax.get_title()]
     if title is not None and title.get_text():
         title.set_text(title.get_text() + suffix())
+    elif len(titled) == 1:
+        titled[0].set_title(f"{titled[0].get_title()}\n{describe()}")
     else:
         fig.suptitle(describe(), y=1.0, va="bottom", fontsize="medium")
 
