@@ -51,3 +51,13 @@ def segments(branch: Any, x: str, y: str) -> List[Tuple[numpy.ndarray, numpy.nda
     xs, ys = numpy.asarray(branch[x]), numpy.asarray(branch[y])
     stable = stable_mask(branch)
     return [(xs[s], ys[s], bool(stable[s.start])) for s in runs_of(stable)]
+
+
+def chord_distances(x: numpy.ndarray, p: numpy.ndarray) -> numpy.ndarray:
+    """[len(x) - 1] distances from the point p to each chord x[k] -> x[k + 1]
+    of a polyline x ([n, 2], scaled as the caller wants): to the chord's
+    nearest point, its ends included."""
+    a, chord = x[:-1], numpy.diff(x, axis=0)
+    t = numpy.clip(numpy.einsum("ij,ij->i", p - a, chord)
+                   / numpy.maximum(numpy.einsum("ij,ij->i", chord, chord), 1e-300), 0.0, 1.0)
+    return numpy.hypot(*(a + t[:, None] * chord - p).T)

@@ -24,6 +24,7 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 import numpy
 
 from mlgshimmy.shared import attractor
+from mlgshimmy.shared import branches
 from mlgshimmy.shared import runerror
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import floquet
@@ -272,16 +273,18 @@ def closes(V: Sequence[float], Fstar: Sequence[float]) -> bool:
     V/V_MAX and F*/F* span): a closed curve, which the other direction
     would only trace again."""
     x = numpy.c_[numpy.asarray(V) / V_MAX, numpy.asarray(Fstar) / (CURVE_FSTAR[1] - CURVE_FSTAR[0])]
+    if len(x) < 4:
+        return False
+    lengths = numpy.linalg.norm(numpy.diff(x, axis=0), axis=1)
+    to_first, to_second = (branches.chord_distances(x, x[i]) for i in (0, 1))
 
-    def near(point, k):   # point within CLOSE_TOL chords of the chord k -> k + 1
-        chord = x[k + 1] - x[k]
-        length = numpy.linalg.norm(chord)
-        t = numpy.clip(numpy.dot(point - x[k], chord) / max(length ** 2, 1e-300), 0.0, 1.0)
-        return numpy.linalg.norm(x[k] + t * chord - point) <= CLOSE_TOL * length
+    def near(to, k):   # within CLOSE_TOL chords of the chord k -> k + 1
+        return to[k] <= CLOSE_TOL * lengths[k]
     away = False
     for k in range(2, len(x) - 1):
-        away = away or numpy.linalg.norm(x[k] - x[0]) > 5 * numpy.linalg.norm(x[k + 1] - x[k])
-        if away and near(x[0], k) and any(near(x[1], j) for j in range(k, min(k + 3, len(x) - 1))):
+        away = away or numpy.linalg.norm(x[k] - x[0]) > 5 * lengths[k]
+        if away and near(to_first, k) and any(near(to_second, j)
+                                              for j in range(k, min(k + 3, len(x) - 1))):
             return True
     return False
 

@@ -6,6 +6,7 @@ from typing import Any, Mapping, Sequence
 
 import numpy
 
+from mlgshimmy.shared import branches
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import freeplay
 from mlgshimmy.shared import gear
@@ -43,10 +44,7 @@ def distance(point: Mapping[str, float], branch: Mapping[str, Any]) -> float:
     p = numpy.array([point["V"] / V_MAX, point["Fstar"] / F_MAX])
     if len(x) == 1:
         return float(numpy.hypot(*(x[0] - p)))
-    a, chord = x[:-1], numpy.diff(x, axis=0)
-    t = numpy.clip(numpy.einsum("ij,ij->i", p - a, chord)
-                   / numpy.maximum(numpy.einsum("ij,ij->i", chord, chord), 1e-300), 0.0, 1.0)
-    return float(numpy.min(numpy.hypot(*(a + t[:, None] * chord - p).T)))
+    return float(numpy.min(branches.chord_distances(x, p)))
 
 
 def on_curves(point: Mapping[str, float], curves: Sequence[Sequence[Mapping[str, Any]]],
