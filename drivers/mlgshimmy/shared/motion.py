@@ -83,7 +83,8 @@ def yawed_load(Fstar: float, freeplay: Mapping[str, float]) -> Optional[float]:
     stationary state (shared.yawed.states; Fstar itself if it has one),
     None if it has none at any (about 2 s at the most)."""
     values = gear.parameters()
-    for load in [Fstar] + sorted(YAWED_LOADS, key=lambda F: (abs(F - Fstar), F)):
+    for load in sorted({float(Fstar), *map(float, YAWED_LOADS)},
+                       key=lambda F: (abs(F - Fstar), F)):   # Fstar first, once
         if yawed.states("figures", float(load), dict(freeplay), **values)["yawed"]:
             return float(load)
     return None
