@@ -169,3 +169,21 @@ def test_a_package_added_to_the_list_reinstalls(clone):
     stamp.write_text(" ".join(packages))
     os.utime(installed, (stamp.stat().st_mtime + 10,) * 2)
     assert "mk/install-packages.sh" not in make(clone, "-n", "packages").stdout
+
+
+def test_make_gear_makes_every_figure_unless_asked_for_the_answers(clone):
+    """make gear's first step makes GEAR_FIGURES at the paper's gear: every
+    figure by default, the three the design answers read with
+    GEAR_FIGURES=answers; a name that is no figure stops it, named."""
+    def figures_made(*args):
+        proc = make(clone, "-n", "gear", "RHO=20", "MU=5", *args)
+        assert proc.returncode == 0, proc.stderr[-2000:]
+        line = next(line for line in proc.stdout.splitlines() if "RHO= MU= EOM= SET=" in line)
+        return line.split("SET= ", 1)[1].split()
+    every = figures_made()
+    assert {"fig06", "fig10", "fig11", "fig19", "criterion"} <= set(every) and len(every) == 17, \
+        every
+    assert figures_made("GEAR_FIGURES=answers") == ["fig07", "fig10", "fig18"]
+    proc = make(clone, "-n", "gear", "RHO=20", "MU=5", "GEAR_FIGURES=fig07 fig99;true")
+    assert proc.returncode != 0 and "GEAR_FIGURES: not a figure: fig99;true" in proc.stderr, \
+        proc.stderr[-2000:]
