@@ -46,7 +46,7 @@ def parts() -> Dict[str, Any]:
     make -jN are short); the torus curve and the tongue edges after the
     large part (from its diagrams in V), the fold curves from the slices'
     folds (upper_folds) after the slices, those from the slices' Hopf
-    points (slice_hopf) after the curves and the lift-off edge's ends
+    points (slice_hopf) after the fold curves and the lift-off edge's ends
     after the speeds."""
     slice_parts = [f"slice_{Fstar:.4f}" for Fstar in SLICES]
     # with side-stay angles the torus part starts curves from the slices too
@@ -64,7 +64,7 @@ def parts() -> Dict[str, Any]:
     work.update({part: lambda Fstar=Fstar: slice_diagram(Fstar)
                  for part, Fstar in zip(slice_parts, SLICES)})
     work["upper_folds"] = jobs.Needs(["curves"] + slice_parts, upper_fold_curves)
-    work["slice_hopf"] = jobs.Needs(["curves"], slice_hopf_curves)
+    work["slice_hopf"] = jobs.Needs(["curves", "upper_folds"], slice_hopf_curves)
     work.update({part: jobs.Needs(liftoff_parts, lambda p, part=part: liftoff_end(p, part))
                  for part in LIFTOFF_ENDS})
     return work
@@ -85,14 +85,15 @@ def compute(parts: Mapping[str, Any]) -> Dict[str, Any]:
     drawn["torus"] = parts["torus"]["curves"]
     drawn["tongue"] = [curve for part in tongue_parts() for curve in parts[part]["curves"]] \
         + parts["torus"].get("tongue", [])
+    switch = stage_switch()
+    special = located.points(drawn)
+    drawn["fold"] = located.past_gh(drawn["fold"], special, FOLD_TOL, switch)
     pitchforks = stored["pitchfork"][1] + stored.get("stationary_folds", [])
     lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS],
                         [parts[part]["Fstar"] for part in LIFTOFF_ENDS])
     edges = curve_list(drawn, pitchforks, lift)
     joins, stops = mx_ends(drawn)
-    switch = stage_switch()
     joins = joins_outside(joins, switch)
-    special = located.points(drawn)
     ends = explained(stops, switch, lift, [jobs.loaded(d) for d in drawn["fold"]],
                      at_gh=located.at_gh(special, FOLD_TOL))
     located.l2_signs(special, drawn["fold"], ends["generalised_hopf"])

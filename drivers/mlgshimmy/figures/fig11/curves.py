@@ -11,8 +11,8 @@ import numpy
 from mlgshimmy.figures.fig11 import ends
 from mlgshimmy.figures.fig11.ends import SWITCH_WIDTHS, explained
 from mlgshimmy.figures.fig11.orbits import ROLLING, slice_rundir
-from mlgshimmy.figures.fig11.plane import (GEOMETRY, MODEL, F_MAX, F_MIN, SLICES, STOP, V_SCAN,
-                                           on_curves)
+from mlgshimmy.figures.fig11.plane import (GEOMETRY, MODEL, F_MAX, F_MIN, ON_CURVE_TOL, SLICES,
+                                           STOP, V_SCAN, on_curves)
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
@@ -21,6 +21,7 @@ from mlgshimmy.shared import stationary
 from mlgshimmy.shared.stage_switch import stage_switch_window
 
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
+MAX_TURNS = 10         # slices back inside the Hopf curves' turns (slice_hopf)
 
 
 def hopf_curve(rundir: str, name: str, point: Any, sign: float) -> Any:
@@ -141,23 +142,30 @@ def upper_folds(rundir: str, first: Mapping[str, Any],
     return out
 
 
-def slice_hopf(rundir: str, first: Mapping[str, Any], parameter_set: str = "figures") -> List[Any]:
+def slice_hopf(rundir: str, first: Mapping[str, Any], folds: Sequence[Any] = (),
+               parameter_set: str = "figures") -> List[Any]:
     """Hopf curves of straight rolling that the curves from F* = 1 (`first`,
     stored) do not pass: continued both ways from each Hopf point of a
     slice (an eigenvalue scan in V at the slice load, lightest first) that
     no curve computed so far passes through.  At the paper's gear every one
     lies on them (56 of 56, so no run is made); with side-stay angles the
     H3 curve stops inside the oleo stage switch, and the curves below the
-    switch and of other modes start here.  A start or direction that fails
-    is reported and left out."""
+    switch and of other modes start here.  Then a short slice at each end of
+    the fold curves `folds` (stored) on the Hopf locus (ends.on_locus), and
+    while a Hopf curve stops where it turns in F* (ends.turns), one back
+    inside the turn, start the curves found there (at most MAX_TURNS such
+    slices).  A start or direction that fails is reported and left out."""
     first = [jobs.loaded(diagram) for diagram in first]
-    out, k = [], 0
-    for Fstar in SLICES:
+    out: List[Any] = []
+    k = 0
+
+    def start(Fstar, window, tol):
+        nonlocal k
         state = ROLLING and (lambda V, F=Fstar: ROLLING(F, parameter_set))
-        for V, _ in spectrum.hopf_scan(parameter_set, "V", V_SCAN, state=state, Fstar=Fstar,
+        for V, _ in spectrum.hopf_scan(parameter_set, "V", window, state=state, Fstar=Fstar,
                                        **MODEL):
             at = {"V": V, "Fstar": Fstar}
-            if on_curves(at, first) or on_curves(at, out):
+            if on_curves(at, first, tol) or on_curves(at, out, tol):
                 continue
             k += 1
             point = ct.reported(f"fig11 Hopf point at V = {V:.4g}, F* = {Fstar:.4g}",
@@ -167,15 +175,33 @@ def slice_hopf(rundir: str, first: Mapping[str, Any], parameter_set: str = "figu
             for sign in (1, -1) if point is not None else ():
                 name = f"hopf_slice{k}{'+-'[sign < 0]}"
                 curve = ct.reported(name, lambda: hopf_curve(rundir, name, point, sign))
-                out += [] if curve is None else [curve]
+                out.extend([] if curve is None else [curve])
+
+    for Fstar in SLICES:
+        start(Fstar, V_SCAN, ON_CURVE_TOL)
     print(f"fig11: {k} Hopf curves started from the slices' Hopf points")
+    scanned: List[Tuple[float, float]] = []
+    while len(scanned) < MAX_TURNS:
+        new = [(F, V) for F, V in (ends.on_locus(folds, stage_switch())
+                                   + ends.turns(first + out, stage_switch()))
+               if not any(abs(F - f) < 0.5 * ends.TURN_DF and abs(V - v) < ends.TURN_WINDOW
+                          for f, v in scanned)]
+        if not new:
+            break
+        Fstar, V = new[0]
+        scanned.append((Fstar, V))
+        before = k
+        start(Fstar, V_SCAN[abs(V_SCAN - V) < ends.TURN_WINDOW], ends.TURN_TOL)
+        print(f"fig11: a slice at F* = {Fstar:.5g} near V = {V:.4g} (a fold curve's end on "
+              f"the Hopf locus, or a Hopf curve's turn): {k - before} Hopf point(s) started")
     return out
 
 
 def slice_hopf_curves(parts: Mapping[str, Any]) -> Dict[str, Any]:
     """A part: the Hopf curves from the slices' Hopf points (slice_hopf),
     stored: {"curves": [stored diagrams]}."""
-    found = slice_hopf(paths.rundir("fig11/slice_hopf"), parts["curves"]["hopf"])
+    folds = [jobs.loaded(d) for d in parts["curves"]["fold"] + parts["upper_folds"]["curves"]]
+    found = slice_hopf(paths.rundir("fig11/slice_hopf"), parts["curves"]["hopf"], folds)
     return {"curves": [jobs.stored(d, ("V", "Fstar")) for d in found]}
 
 

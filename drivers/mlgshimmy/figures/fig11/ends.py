@@ -23,8 +23,8 @@ from mlgshimmy.shared import kappa_criterion
 JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
 JOIN_LABELS = {"hopf": "two Hopf curves meet inside the oleo's stage switch (at the "
                        "paper's gear those from H1 and H2)",
-               "hopf_elsewhere": "two Hopf curves meet outside the stage switch, where "
-                                 "AUTO stops both (not resolved)",
+               "hopf_elsewhere": "two Hopf curves meet where they turn in F*, outside the "
+                                 "stage switch (AUTO stops both there: TURN_DF)",
                "tongue": "the two edges of a tongue meet: its tip"}
 
 
@@ -86,6 +86,8 @@ GH_RATE = 1e-3
 # multiplier +1 (at the plane's lower edge both geometries run: 0.0005 and
 # 0.00004 from the fold curve, the pair's angle 0.19 and 0.008 rad there)
 FOLD_TOL = 0.002
+# the point this many steps back from a curve's end tells the side it came from
+BACK = 3
 
 
 def on_hopf_locus(stop: Mapping[str, float]) -> bool:
@@ -94,6 +96,60 @@ def on_hopf_locus(stop: Mapping[str, float]) -> bool:
     rates = kappa_criterion.growth(stop["Fstar"], FREEPLAY["yfp"], stop["V"], scaling="ratio",
                              **GEOMETRY)
     return min(abs(rates["low"]), abs(rates["high"])) < GH_RATE
+
+
+# A Hopf curve of straight rolling that turns in F* (F* extremal along it)
+# runs along V alone there.  Straight rolling does not depend on V, so only
+# the eigenvalue problem moves, and AUTO's Hopf continuation, with V out of
+# its arclength (constants/runs/c.hopf_curve), cannot step on: it stops (MX).
+# The curve goes on past the turn: a slice this far back inside the turn
+# crosses it twice, within TURN_WINDOW of the end (rho = 5, mu = -15 deg: a
+# turn at F* = 2.8452, V = 11.96 m/s, crossed at 11.96 +- 3.1 m/s), and the
+# crossing on no curve so far (closer than TURN_TOL in V/V_MAX, F*/F_MAX:
+# the curves' steps shrink to millimetres per second at the turn) starts
+# the curve past it (curves.slice_hopf).
+TURN_DF = 1e-3
+TURN_WINDOW = 30.0   # m/s
+TURN_TOL = 1e-3
+
+
+def turns(curves: Sequence[Sequence[Any]],
+          switch: Optional[Tuple[float, float]]) -> List[Tuple[float, float]]:
+    """[(F*, V)]: a load TURN_DF back inside each MX end of the Hopf curves
+    `curves` (lists of branches) that lies in the plane and outside the
+    stage-switch window `switch` (the side the curve came from: its point
+    BACK steps before the end), and the end's V."""
+    out = []
+    for end, branch, i in _mx_ends(curves, switch):
+        if i >= BACK:
+            side = numpy.sign(branch["Fstar"][i - BACK] - end["Fstar"])
+            load = end["Fstar"] + side * TURN_DF
+            if side and F_MIN <= load <= F_MAX:
+                out.append((load, end["V"]))
+    return out
+
+
+def on_locus(folds: Sequence[Sequence[Any]],
+             switch: Optional[Tuple[float, float]]) -> List[Tuple[float, float]]:
+    """[(F*, V)] of the MX ends of the fold curves `folds` (lists of
+    branches) in the plane, outside the stage-switch window `switch`, on
+    the Hopf locus (on_hopf_locus): a fold curve of orbits ends at a GH
+    point of a Hopf curve, which a slice at that load finds where no slice
+    of the grid did (rho = 20, mu = 5 deg: a Hopf curve of 17.7 Hz within
+    F* 1.3315-1.3475 and V < 0.812 m/s)."""
+    return [(end["Fstar"], end["V"]) for end, _, _ in _mx_ends(folds, switch)
+            if on_hopf_locus(end)]
+
+
+def _mx_ends(curves, switch):
+    """(end {"V", "Fstar"}, branch, index) of each MX end of the curves in
+    the plane and outside the stage-switch window."""
+    for curve in curves:
+        for branch in curve:
+            for i, _, _ in branches.labelled_points(branch, "MX"):
+                end = {"V": float(branch["V"][i]), "Fstar": float(branch["Fstar"][i])}
+                if in_plane(end) and not inside(switch, end["Fstar"]):
+                    yield end, branch, i
 
 
 def inside(switch: Optional[Tuple[float, float]], Fstar: float) -> bool:

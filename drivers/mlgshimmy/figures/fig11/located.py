@@ -7,7 +7,7 @@ from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
-from mlgshimmy.figures.fig11.ends import in_plane, inside
+from mlgshimmy.figures.fig11.ends import BACK, in_plane, inside, on_hopf_locus
 from mlgshimmy.figures.fig11.orbits import ROLLING
 from mlgshimmy.figures.fig11.plane import F_MAX, GEOMETRY, MODEL, V_MAX
 from mlgshimmy.shared import codim2
@@ -88,9 +88,41 @@ def at_gh(located: Sequence[Mapping[str, Any]], tol: float) -> Callable[[Mapping
     return lambda stop: any(p["type"] == "GH" and distance(p, stop) < tol for p in located)
 
 
-# the fold curve's point this many steps back from its end at a GH point
-# tells the side it leaves on (l2_signs)
-BACK = 3
+def past_gh(folds: Sequence[Any], located: Sequence[Mapping[str, Any]], tol: float,
+            switch: Optional[Tuple[float, float]]) -> List[Any]:
+    """The fold curves (stored diagrams), each branch that stops (MX) on the
+    Hopf locus (ends.on_hopf_locus), outside the stage-switch window
+    `switch` and not within `tol` of a located GH point, while an earlier
+    point of it is, cut there: past the GH point the
+    run follows the Hopf curve itself, its orbits shrunk to nothing (rho =
+    5, mu = -15 deg: psi amplitude 4e-5 rad near the GH point, 4e-7 rad
+    along 8 m/s of the Hopf curve after it), until it stops.  Its MX label
+    moves to the cut, where ends.explained finds the GH point."""
+    gh = [p for p in located if p["type"] == "GH"]
+    out = []
+    for n, diagram in enumerate(folds):
+        kept = []
+        for record in diagram:
+            V, F = record["columns"]["V"], record["columns"]["Fstar"]
+            mx = [i for i, _, kind in record["labels"] if kind == "MX"]
+            end = mx and {"V": float(V[mx[-1]]), "Fstar": float(F[mx[-1]])}
+            near = [(distance({"V": float(v), "Fstar": float(f)}, p), i)
+                    for p in gh for i, (v, f) in enumerate(zip(V, F))]
+            d, cut = min(near, default=(numpy.inf, 0))
+            if not end or d >= tol or inside(switch, end["Fstar"]) or at_gh(gh, tol)(end) \
+                    or not on_hopf_locus(end):
+                kept.append(record)
+                continue
+            print(f"fig11 fold{n + 1} runs on along the Hopf locus past the GH point at "
+                  f"V = {V[cut]:.5g}, F* = {F[cut]:.5g} to V = {end['V']:.5g}, "
+                  f"F* = {end['Fstar']:.5g}: cut at the GH point")
+            label = next(lab for i, lab, kind in record["labels"] if i == mx[-1])
+            kept.append({"columns": {c: v[:cut + 1] for c, v in record["columns"].items()},
+                         "stable": record["stable"][:cut + 1],
+                         "labels": [x for x in record["labels"] if x[0] < cut]
+                         + [[cut, label, "MX"]]})
+        out.append(kept)
+    return out
 
 
 def l2_signs(located: Sequence[Dict[str, Any]], folds: Sequence[Any],

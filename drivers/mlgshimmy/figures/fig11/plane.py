@@ -47,8 +47,11 @@ def distance(point: Mapping[str, float], branch: Mapping[str, Any]) -> float:
     return float(numpy.min(branches.chord_distances(x, p)))
 
 
+ON_CURVE_TOL = 0.01   # in V/V_MAX, F*/F_MAX: a point this close to a curve lies on it
+
+
 def on_curves(point: Mapping[str, float], curves: Sequence[Sequence[Mapping[str, Any]]],
-              tol: float = 0.01) -> bool:
+              tol: float = ON_CURVE_TOL) -> bool:
     """Whether `point` ({"V", "Fstar"}) lies on one of the curves (lists of
     branches; distance below tol)."""
     return any(distance(point, branch) < tol for curve in curves for branch in curve)
