@@ -151,7 +151,8 @@ def slice_hopf(rundir: str, first: Mapping[str, Any], folds: Sequence[Any] = (),
     lies on them (56 of 56, so no run is made); with side-stay angles the
     H3 curve stops inside the oleo stage switch, and the curves below the
     switch and of other modes start here.  Then a short slice at each end of
-    the fold curves `folds` (stored) on the Hopf locus (ends.on_locus), and
+    the fold curves `folds` (stored) on the Hopf locus (ends.on_locus) that
+    no Hopf curve passes, and
     while a Hopf curve stops where it turns in F* (ends.turns), one back
     inside the turn, start the curves found there (at most MAX_TURNS such
     slices).  A start or direction that fails is reported and left out."""
@@ -182,8 +183,9 @@ def slice_hopf(rundir: str, first: Mapping[str, Any], folds: Sequence[Any] = (),
     print(f"fig11: {k} Hopf curves started from the slices' Hopf points")
     scanned: List[Tuple[float, float]] = []
     while len(scanned) < MAX_TURNS:
-        new = [(F, V) for F, V in (ends.on_locus(folds, stage_switch())
-                                   + ends.turns(first + out, stage_switch()))
+        lone = [(F, V) for F, V in ends.on_locus(folds, stage_switch())
+                if not on_curves({"V": V, "Fstar": F}, first + out, ends.TURN_TOL)]
+        new = [(F, V) for F, V in lone + ends.turns(first + out, stage_switch())
                if not any(abs(F - f) < 0.5 * ends.TURN_DF and abs(V - v) < ends.TURN_WINDOW
                           for f, v in scanned)]
         if not new:
