@@ -23,8 +23,9 @@ from mlgshimmy.shared import kappa_criterion
 JOIN_TOL = {"hopf": 1e-3, "tongue": 5e-3}
 JOIN_LABELS = {"hopf": "two Hopf curves meet inside the oleo's stage switch (at the "
                        "paper's gear those from H1 and H2)",
-               "hopf_elsewhere": "two Hopf curves meet where they turn in F*, outside the "
-                                 "stage switch (AUTO stops both there: TURN_DF)",
+               "hopf_elsewhere": "one Hopf curve turns in F* here, outside the stage "
+                                 "switch; AUTO's continuation cannot pass such a turn, so it "
+                                 "is drawn as two curves meeting",
                "tongue": "the two edges of a tongue meet: its tip"}
 
 
