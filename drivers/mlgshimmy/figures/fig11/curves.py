@@ -176,14 +176,16 @@ def slice_hopf(rundir: str, first: Mapping[str, Any], folds: Sequence[Any] = (),
             for sign in (1, -1) if point is not None else ():
                 name = f"hopf_slice{k}{'+-'[sign < 0]}"
                 curve = ct.reported(name, lambda: hopf_curve(rundir, name, point, sign))
-                out.extend([] if curve is None else [curve])
+                if curve is not None:
+                    out.append(curve)
 
     for Fstar in SLICES:
         start(Fstar, V_SCAN, ON_CURVE_TOL)
     print(f"fig11: {k} Hopf curves started from the slices' Hopf points")
     scanned: List[Tuple[float, float]] = []
+    fold_ends = ends.on_locus(folds, stage_switch())
     while len(scanned) < MAX_TURNS:
-        lone = [(F, V) for F, V in ends.on_locus(folds, stage_switch())
+        lone = [(F, V) for F, V in fold_ends
                 if not on_curves({"V": V, "Fstar": F}, first + out, ends.TURN_TOL)]
         new = [(F, V) for F, V in lone + ends.turns(first + out, stage_switch())
                if not any(abs(F - f) < 0.5 * ends.TURN_DF and abs(V - v) < ends.TURN_WINDOW

@@ -168,10 +168,11 @@ def joins_outside(joins: Sequence[Mapping[str, Any]],
             if j["kind"] == "hopf" and not inside(switch, j["Fstar"]) else j for j in joins]
 
 
-def nearest_on_edge(stop: Mapping[str, float], lift: Mapping[str, Any]) -> Tuple[float, int]:
-    """(distance in V/V_MAX, F*/F_MAX, index) of the lift-off edge's point
-    nearest an MX end."""
-    V, F = numpy.asarray(lift["V"]), numpy.asarray(lift["Fstar"])
+def nearest_point(stop: Mapping[str, float], points: Mapping[str, Any]) -> Tuple[float, int]:
+    """(distance in V/V_MAX, F*/F_MAX, index) of the point of `points`
+    ({"V": [...], "Fstar": [...]}: the lift-off edge, a curve's columns)
+    nearest `stop`."""
+    V, F = numpy.asarray(points["V"]), numpy.asarray(points["Fstar"])
     d = numpy.hypot((V - stop["V"]) / V_MAX, (F - stop["Fstar"]) / F_MAX)
     k = int(numpy.argmin(d))
     return float(d[k]), k
@@ -198,7 +199,7 @@ def explained(stops: Sequence[Mapping[str, Any]], switch: Optional[Tuple[float, 
             out["generalised_hopf"].append(stop)
         elif stop["curve"].startswith(("torus", "tongue")) and on_curves(stop, folds, FOLD_TOL):
             out["on_fold"].append(stop)
-        elif lift and nearest_on_edge(stop, lift)[0] < CLOSE_TOL:
+        elif lift and nearest_point(stop, lift)[0] < CLOSE_TOL:
             out["liftoff"].append(stop)
         else:
             out["open"].append(stop)
@@ -213,7 +214,7 @@ def closing_segments(ends: Mapping[str, Sequence[Mapping[str, Any]]],
     out = []
     for stop in ends:
         if stop["curve"].startswith("torus"):
-            _, k = nearest_on_edge(stop, lift)
+            _, k = nearest_point(stop, lift)
             out.append({"name": f"{stop['curve']}-liftoff", "kind": "torus",
                         "V": [stop["V"], float(lift["V"][k])],
                         "Fstar": [stop["Fstar"], float(lift["Fstar"][k])]})

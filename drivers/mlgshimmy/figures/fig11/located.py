@@ -7,7 +7,7 @@ from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
-from mlgshimmy.figures.fig11.ends import BACK, in_plane, inside, on_hopf_locus
+from mlgshimmy.figures.fig11.ends import BACK, in_plane, inside, nearest_point, on_hopf_locus
 from mlgshimmy.figures.fig11.orbits import ROLLING
 from mlgshimmy.figures.fig11.plane import F_MAX, GEOMETRY, MODEL, V_MAX
 from mlgshimmy.shared import codim2
@@ -103,24 +103,22 @@ def past_gh(folds: Sequence[Any], located: Sequence[Mapping[str, Any]], tol: flo
     for n, diagram in enumerate(folds):
         kept = []
         for record in diagram:
-            V, F = record["columns"]["V"], record["columns"]["Fstar"]
-            mx = [i for i, _, kind in record["labels"] if kind == "MX"]
-            end = mx and {"V": float(V[mx[-1]]), "Fstar": float(F[mx[-1]])}
-            near = [(distance({"V": float(v), "Fstar": float(f)}, p), i)
-                    for p in gh for i, (v, f) in enumerate(zip(V, F))]
-            d, cut = min(near, default=(numpy.inf, 0))
+            columns = record["columns"]
+            mx = [(i, lab) for i, lab, kind in record["labels"] if kind == "MX"]
+            end = mx and {"V": float(columns["V"][mx[-1][0]]),
+                          "Fstar": float(columns["Fstar"][mx[-1][0]])}
+            d, cut = min((nearest_point(p, columns) for p in gh), default=(numpy.inf, 0))
             if not end or d >= tol or inside(switch, end["Fstar"]) or at_gh(gh, tol)(end) \
                     or not on_hopf_locus(end):
                 kept.append(record)
                 continue
             print(f"fig11 fold{n + 1} runs on along the Hopf locus past the GH point at "
-                  f"V = {V[cut]:.5g}, F* = {F[cut]:.5g} to V = {end['V']:.5g}, "
-                  f"F* = {end['Fstar']:.5g}: cut at the GH point")
-            label = next(lab for i, lab, kind in record["labels"] if i == mx[-1])
-            kept.append({"columns": {c: v[:cut + 1] for c, v in record["columns"].items()},
+                  f"V = {columns['V'][cut]:.5g}, F* = {columns['Fstar'][cut]:.5g} to "
+                  f"V = {end['V']:.5g}, F* = {end['Fstar']:.5g}: cut at the GH point")
+            kept.append({"columns": {c: v[:cut + 1] for c, v in columns.items()},
                          "stable": record["stable"][:cut + 1],
                          "labels": [x for x in record["labels"] if x[0] < cut]
-                         + [[cut, label, "MX"]]})
+                         + [[cut, mx[-1][1], "MX"]]})
         out.append(kept)
     return out
 
