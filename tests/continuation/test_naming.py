@@ -154,3 +154,15 @@ def test_no_kink_at_the_symmetric_gear():
     m = naming.mode("figures", "V", 144.26969033434705, **FREEPLAY)
     assert abs(m["a2"]) < 1e-15 and m["kink_psi"] < naming.KINK_NOISE
     assert "a2" not in naming.describe(m, "subcritical")
+
+
+def test_a_diagram_names_its_hopf_points_once_and_only_when_read():
+    calls = []
+
+    def naming_of_points():
+        calls.append(1)
+        return [{"name": "H3"}]
+    diagram = continuation.Diagram("V", [(144.27, 13.0)], [], [], [], naming_of_points)
+    assert calls == []        # Fig. 11's slices never read them: no simulations made
+    assert [p["name"] for p in diagram.named] == ["H3"]
+    assert diagram.named is diagram.named and calls == [1]

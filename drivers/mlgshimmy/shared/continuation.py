@@ -10,6 +10,7 @@ curves of Hopf points and folds of cycles.
 """
 from __future__ import annotations
 
+import functools
 import os
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
@@ -481,13 +482,20 @@ class Diagram:
     [(value, frequency in Hz)] and real-eigenvalue crossings bp (spectrum
     scan), parts = [(AUTO's HB point, periodic run)] of the branches born
     there, names = the names of those runs (for load()) and named = the
-    Hopf points named by their mode (naming.named_points).  Keywords (e.g.
-    yfp, scaling) are kept as attributes."""
+    Hopf points named by their mode (naming(), called on first use: its
+    criticality checks simulate, up to minutes at a weak Hopf point, and
+    Fig. 11's slices never read them).  Keywords (e.g. yfp, scaling) are
+    kept as attributes."""
 
-    def __init__(self, parameter, hopf, bp, parts, names, named=(), **about):
+    def __init__(self, parameter, hopf, bp, parts, names,
+                 naming: Callable[[], List[Dict[str, object]]] = list, **about):
         self.parameter, self.hopf, self.bp, self.parts = parameter, hopf, bp, parts
-        self.names, self.named = names, list(named)
+        self.names, self._naming = names, naming
         self.__dict__.update(about)
+
+    @functools.cached_property
+    def named(self) -> List[Dict[str, object]]:
+        return list(self._naming())
 
     def name_of(self, run: Any) -> Optional[str]:
         """The name of one of the diagram's runs."""
@@ -564,9 +572,10 @@ def speed_diagram(rundir: str, parameter_set: str, values: Mapping[str, float],
         reached |= {h for h, collapsed in ends.items() if collapsed}
         parts += [(point, orbits) for orbits in runs]
         names += [name(n) for n in range(len(runs))]
-    named = naming.named_points(hopf, [run for _, run in parts], parameter_set, parameter,
-                                state=state, **values)
-    return Diagram(parameter, hopf, bp, parts, names, named, **(about or {}))
+    return Diagram(parameter, hopf, bp, parts, names,
+                   lambda: naming.named_points(hopf, [run for _, run in parts], parameter_set,
+                                               parameter, state=state, **values),
+                   **(about or {}))
 
 
 def diagram_from_rest(rundir: str, parameter_set: str, allow_failed: Any = False,

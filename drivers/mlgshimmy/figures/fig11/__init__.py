@@ -42,12 +42,14 @@ from mlgshimmy.shared import liftoff
 def parts() -> Dict[str, Any]:
     """The large-amplitude family, the curves from F* = 1, the lift-off
     speeds, the eigenvalue grid and one diagram in V per slice load:
-    independent jobs, about the longest first (so that the last jobs under
-    make -jN are short); the torus curve and the tongue edges after the
+    independent jobs; the torus curve and the tongue edges after the
     large part (from its diagrams in V), the fold curves from the slices'
     folds (upper_folds) after the slices, those from the slices' Hopf
     points (slice_hopf) after the fold curves and the lift-off edge's ends
-    after the speeds."""
+    after the speeds.  Listed as make -jN should start them: the longest
+    chains of parts first (large then torus, curves then upper_folds:
+    make starts a listed part as soon as what it needs is done, so the
+    short independent parts fill the cores around them, not after them)."""
     slice_parts = [f"slice_{Fstar:.4f}" for Fstar in SLICES]
     # with side-stay angles the torus part starts curves from the slices too
     work = {"large": large_family,
@@ -56,17 +58,17 @@ def parts() -> Dict[str, Any]:
     work.update({part: jobs.Needs(["large"], lambda _, part=part: tongue_curve(part))
                  for part in tongue_parts()})
     work["curves"] = stored_curves
+    work["upper_folds"] = jobs.Needs(["curves"] + slice_parts, upper_fold_curves)
+    work["slice_hopf"] = jobs.Needs(["curves", "upper_folds"], slice_hopf_curves)
     liftoff_parts = [f"liftoff_{Fstar:.2f}" for Fstar in LIFTOFF_LOADS]
     work.update({part: lambda Fstar=Fstar: liftoff_speed(Fstar)
                  for part, Fstar in zip(liftoff_parts, LIFTOFF_LOADS)})
+    work.update({part: jobs.Needs(liftoff_parts, lambda p, part=part: liftoff_end(p, part))
+                 for part in LIFTOFF_ENDS})
     work["grid"] = straight_rolling_stable
     work["yaw"] = yaw_stable
     work.update({part: lambda Fstar=Fstar: slice_diagram(Fstar)
                  for part, Fstar in zip(slice_parts, SLICES)})
-    work["upper_folds"] = jobs.Needs(["curves"] + slice_parts, upper_fold_curves)
-    work["slice_hopf"] = jobs.Needs(["curves", "upper_folds"], slice_hopf_curves)
-    work.update({part: jobs.Needs(liftoff_parts, lambda p, part=part: liftoff_end(p, part))
-                 for part in LIFTOFF_ENDS})
     return work
 
 
