@@ -44,6 +44,7 @@ COLLAPSING = 0.01     # a least amplitude below this part of the branch's larges
 # x0.9, at 29.03 m/s for H2 at 27.97 m/s)
 JOIN_WINDOW = 0.05
 FIRST_STEP_FLOOR = 1e-5   # follow_orbits retries a jumping first step down to this DS
+FIRST_STEP_TRIAL = 2      # steps of the run that tries a first step (first_step)
 VERTICAL = 0.1   # of DSMAX: a branch that has moved less along its parameter leaves it vertically
 CORNER, CORNER_STEPS = 0.01, 300   # the steps (of DS, DSMAX) and their number at such a corner
 
@@ -240,13 +241,14 @@ def follow_orbits(rundir: str, names: Callable[[int], str], start: Any, paramete
     fails is reported and the branch ends; with allow_failed=EDGE only an
     MX that ends the branch (run's EDGE) is kept; else RunError.  A step longer
     than 2 DSMAX in the parameter raises RunError (AUTO switched to another
-    branch), except on the first step from `start` alone: the run is made
-    again with a tenth of DS (down to FIRST_STEP_FLOOR).
-    Returns (runs, {h: True if the branch collapsed there})."""
+    branch), except on the first step from `start` alone: DS is cut first
+    (first_step).  Returns (runs, {h: True if the branch collapsed there})."""
     runs, left, ends, origin = [], dict(hopf), {}, start
     while origin is not None:
         name = names(len(runs))
         stops = list(bounds) + [h + s * gap(h) for h in left for s in (-1, 1)]
+        if not runs:
+            kw = first_step(rundir, name, start, parameter, stops, figure, kw)
         try:
             orbits = periodic_from(rundir, name, origin, parameter, stop={parameter: stops},
                                    allow_mx=allow_failed, **kw)
@@ -257,14 +259,6 @@ def follow_orbits(rundir: str, names: Callable[[int], str], start: Any, paramete
             break
         values = numpy.asarray(orbits[0][parameter])
         jump = _leaving_jump(values, kw) if not runs else None
-        if jump == 0 and abs(kw.get("DS", 0.0)) > FIRST_STEP_FLOOR:
-            # the first step alone jumped: the Hopf point is nearly
-            # degenerate (the orbits grow slowly in amplitude along V)
-            kw = {**kw, "DS": 0.1 * kw["DS"]}
-            print(f"{figure}: orbits {name}: the first step jumped by "
-                  f"{abs(values[1] - values[0]):.3g} in {parameter}: run again with "
-                  f"DS = {kw['DS']:.3g}", flush=True)
-            continue
         corner = jump is not None and jump > 0
         if corner:
             # a later step jumped: the orbits leave the Hopf point vertically
@@ -422,6 +416,31 @@ def _jumps(values, kw):
     if "DSMAX" not in kw or len(values) < 2:
         return numpy.zeros(0, dtype=bool)
     return numpy.abs(numpy.diff(values)) > 2 * kw["DSMAX"]
+
+
+def first_step(rundir: str, name: str, start: Any, parameter: str, stops: Sequence[float],
+               figure: str, kw: Dict[str, Any]) -> Dict[str, Any]:
+    """The orbit run's constants kw with DS cut to a tenth (down to
+    FIRST_STEP_FLOOR) while the first step from `start` alone jumps
+    (_leaving_jump): the Hopf point is nearly degenerate, the orbits grow
+    slowly in amplitude along the parameter.  Each DS is tried on a run of
+    FIRST_STEP_TRIAL steps, not on the whole branch (at a side-stay geometry a
+    slice's branch of 14-50 s was run twice).  A trial that fails leaves
+    kw as it is: the run itself then fails the same way, and says so."""
+    while abs(kw.get("DS", 0.0)) > FIRST_STEP_FLOOR:
+        try:
+            trial = periodic_from(rundir, name, start, parameter, stop={parameter: stops},
+                                  allow_mx=True, **{**kw, "NMX": FIRST_STEP_TRIAL})
+        except runerror.RunError:
+            break
+        values = numpy.asarray(trial[0][parameter])
+        if _leaving_jump(values, kw) != 0:
+            break
+        kw = {**kw, "DS": 0.1 * kw["DS"]}
+        print(f"{figure}: orbits {name}: the first step jumped by "
+              f"{abs(values[1] - values[0]):.3g} in {parameter}: DS = {kw['DS']:.3g}",
+              flush=True)
+    return kw
 
 
 def _leaving_jump(values, kw):
