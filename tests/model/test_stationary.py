@@ -100,3 +100,22 @@ def test_mirror_gear_has_the_mirrored_states_with_their_stability(pair):
         for (psi, stable), (psi_m, stable_m) in zip(here, mirrored):
             assert psi_m == pytest.approx(psi, abs=1e-6)
             assert stable_m == stable
+
+
+def test_straight_rolling_past_a_fold_in_the_load_is_on_the_heavy_loads_sheet(rundir):
+    """The printed strut at rho = 20, mu = 5 deg: straight rolling from the
+    lightest load folds in F* at 0.7012, where eta crosses the stage
+    switch (AUTO's steps pass over the S).  Below the fold the state is the
+    one from the lightest load, above it the one continued down from the
+    heaviest, the same as AUTO's branch there (eta to 1e-4 m, 2e-4 of it)."""
+    angles = dict(rho=math.radians(20.0), mu=math.radians(5.0), eom_terms=2.0,
+                  strut_variant=1.0)
+    states = stationary.states(f"{rundir}/printed", "figures", (0.02, 3.5),
+                               {"overlay": "stage_switch"}, **VALUES, **angles)
+    branch = states.straight[0]
+    below, above = states.rolling_state(0.70), states.rolling_state(0.7013)
+    assert below["eta"] < 0.340 < 0.346 < above["eta"], (below["eta"], above["eta"])
+    for F in (0.72, 1.0, 3.5):
+        k = int(numpy.argmin(numpy.abs(numpy.asarray(branch["Fstar"]) - F)))
+        state = states.rolling_state(float(branch["Fstar"][k]))
+        assert state["eta"] == pytest.approx(branch["eta_mean"][k], abs=1e-4)

@@ -33,7 +33,12 @@ V_SOLVE = 50.0       # m/s: straight rolling does not depend on V > 0 (docs/mode
 
 class NoRollingState(RuntimeError):
     """The branch followed ends at a fold short of the value asked for (for
-    straight rolling from zero freeplay: of this y_fp)."""
+    straight rolling from zero freeplay: of this y_fp); .at: the parameter's
+    value there (None where not known)."""
+
+    def __init__(self, message: str, at: Optional[float] = None):
+        super().__init__(message)
+        self.at = at
 
 
 def _residual(model: mlgmodel.Model, x: numpy.ndarray, par: Optional[str] = None):
@@ -119,7 +124,8 @@ def follow(model_at: Callable[[float], mlgmodel.Model], par: str, s0: float,
             continue
         h *= 0.5
         if s + h == s:
-            raise NoRollingState(f"rolling: {branch} ends at {par} = {s:.9g} (a fold in {par})")
+            raise NoRollingState(f"rolling: {branch} ends at {par} = {s:.9g} (a fold in {par})",
+                                 at=s)
     return found
 
 

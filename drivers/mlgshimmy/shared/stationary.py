@@ -67,7 +67,10 @@ class States:
     def __init__(self, straight, yawed, pitchforks, values, parameter_set):
         self.straight, self.yawed, self.pitchforks = straight, yawed, pitchforks
         self.values, self.parameter_set = dict(values), parameter_set
-        self._path: List[Tuple[float, numpy.ndarray]] = []
+        # the states solved from the lowest and from the highest load
+        self._paths: Dict[str, List[Tuple[float, numpy.ndarray]]] = {"lowest": [],
+                                                                       "highest": []}
+        self._fold: Optional[rolling.NoRollingState] = None   # where "lowest" ends
 
     def folds(self) -> List[Tuple[float, float, object]]:
         """[(F*, psi_mean, diagram)] of every fold (LP) of the stationary
@@ -95,19 +98,38 @@ class States:
         nearest state solved before.  Newton from psi = 0 (mlg_equilibrium)
         is no substitute with side-stay angles: near the fold of the other
         branch its iterates stall (F* = 0.042-0.082 at rho = mu = 10 deg)
-        and beyond it they land on that branch."""
-        if not self._path:
-            F0 = float(self.straight[0]["Fstar"][0])
-            u = self._model(F0).equilibrium()
-            self._path.append((F0, numpy.array([u[n] for n in mlgmodel.UNAMES])))
-        F0, u = min(self._path, key=lambda p: abs(p[0] - Fstar))
-        if F0 != Fstar:
+        and beyond it they land on that branch.  Above a fold in F* of the
+        branch (an S where eta crosses the printed strut's stage switch:
+        F* = 0.7012 at rho = 20, mu = 5 deg, which AUTO's steps pass over)
+        it has come back on the sheet of the highest load: the state there,
+        continued down from the highest load."""
+        if self._fold is None or self._fold.at is None or Fstar <= self._fold.at:
             try:
-                found = rolling.follow(self._model, "Fstar", F0, u, float(Fstar),
-                                       "straight rolling from the lowest load")
+                return self._continued("lowest", Fstar)
             except rolling.NoRollingState as e:
-                raise StationaryError(f"stationary: {e}") from None
-            self._path.extend(found)
+                self._fold = e
+                if e.at is None or Fstar <= e.at:
+                    raise StationaryError(f"stationary: {e}") from None
+        try:
+            return self._continued("highest", Fstar)
+        except rolling.NoRollingState as above:
+            raise StationaryError(f"stationary: {self._fold}; {above}") from None
+
+    def _continued(self, end: str, Fstar: float) -> Dict[str, float]:
+        """The state at F* continued from the lowest or highest load (`end`)
+        of the straight branch, from the nearest state solved before on
+        that side."""
+        path = self._paths[end]
+        if not path:
+            loads = self.straight[0]["Fstar"]
+            F0 = float(loads[0] if end == "lowest" else loads[-1])
+            u = self._model(F0).equilibrium()
+            path.append((F0, numpy.array([u[n] for n in mlgmodel.UNAMES])))
+        F0, u = min(path, key=lambda p: abs(p[0] - Fstar))
+        if F0 != Fstar:
+            found = rolling.follow(self._model, "Fstar", F0, u, float(Fstar),
+                                   f"straight rolling from the {end} load")
+            path.extend(found)
             u = found[-1][1]
         return dict(zip(mlgmodel.UNAMES, u))
 
