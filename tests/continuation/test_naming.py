@@ -9,7 +9,7 @@ import math
 import numpy
 import pytest
 
-from mlgshimmy.shared import continuation, naming, spectrum
+from mlgshimmy.shared import continuation, naming, spectrum, yfp_stored
 from mlgshimmy.shared.jobs import cache
 
 FREEPLAY = {"Fstar": 1.0, "yfp": 1.0, "eps_rel": 0.1}
@@ -166,3 +166,18 @@ def test_a_diagram_names_its_hopf_points_once_and_only_when_read():
     assert calls == []        # Fig. 11's slices never read them: no simulations made
     assert [p["name"] for p in diagram.named] == ["H3"]
     assert diagram.named is diagram.named and calls == [1]
+
+
+def test_folds_are_named_by_family_and_speed_not_by_order_found():
+    """At rho = 20, mu = 5 deg Fig. 13's y_fp = 1 diagram found the fold at
+    129.6 m/s first and printed it as S1 against the paper's 41.5; Fig. 10
+    named the same folds S1 = 42.47, S2 = 129.6.  Both now name them so."""
+    folds = [(129.601, 17.4), (42.472, 13.1), (20.0, 3.2), (10.0, 2.9)]
+    assert naming.fold_names(folds) == [("S1", 42.472), ("S2", 129.601),
+                                        ("low-frequency fold 1", 10.0),
+                                        ("low-frequency fold 2", 20.0)]
+    stored = {"yfp": 1.0, "hopf": [], "hopf_names": [], "folds": [(V, 1e-3) for V, _ in folds],
+              "fold_hz": [hz for _, hz in folds]}
+    assert yfp_stored.diagram_numbers([stored]) == {
+        "y_fp = 1: S1 [m/s]": 42.472, "y_fp = 1: S2 [m/s]": 129.601,
+        "y_fp = 1: low-frequency fold 1 [m/s]": 10.0, "y_fp = 1: low-frequency fold 2 [m/s]": 20.0}

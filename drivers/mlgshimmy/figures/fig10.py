@@ -53,10 +53,8 @@ def numbers(diagram: Any, points: Sequence[Mapping[str, Any]]) -> Dict[str, Opti
     a connection of saddles, or stopped with no convergence (an orbit branch that shrinks onto straight
     rolling at a Hopf point ends there: no row)."""
     out = {f"{p['name']} [m/s]": p["V"] for p in points}
-    high = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] >= HIGH_HZ)
-    low = sorted(V for run, lab, V, _ in diagram.folds() if run(lab)["freq"] < HIGH_HZ)
-    out.update({f"S{k + 1} [m/s]": v for k, v in enumerate(high)})
-    out.update({f"low-frequency fold {k + 1} [m/s]": v for k, v in enumerate(low)})
+    out.update({f"{name} [m/s]": V for name, V in naming.fold_names(
+        [(V, run(lab)["freq"]) for run, lab, V, _ in diagram.folds()])})
     for name, (_, run) in zip(diagram.names, diagram.parts):   # runs kept up to an MX
         stops = [p for p in run("MX") if p["psi_amp"] > ct.COLLAPSED]   # not a Hopf bubble
         for k, point in enumerate(stops):

@@ -82,7 +82,7 @@ def numbers(diagrams: Sequence[Mapping[str, Any]],
     the slope of psi_amp against y_fp (fit through 0), its largest relative
     residual, the intercept of a free linear fit, and the frequency range."""
     out = yfp_stored.diagram_numbers(diagrams)
-    for V, curve in orbits:
+    for (V, curve), name in zip(orbits, yfp_stored.orbit_names(orbits)):
         ys, amp, freq, stable = (numpy.asarray(curve[c]) for c in ("yfp", "psi_amp", "freq",
                                                                     "stable"))
         inside = (ys >= FIT_RANGE[0]) & (ys <= FIT_RANGE[1])
@@ -91,17 +91,17 @@ def numbers(diagrams: Sequence[Mapping[str, Any]],
             # offset does not scale): fit the stable orbits continued from the start
             piece = stable_piece(stable, int(numpy.argmin(numpy.abs(ys - ORBITS_FROM))))
             if not piece.any():
-                raise runerror.RunError(f"fig13: the orbit at V = {V:g} is unstable where it "
+                raise runerror.RunError(f"fig13: the orbit at {name} is unstable where it "
                                         f"starts, y_fp = {ORBITS_FROM:g} mm")
             inside &= piece
-            out[f"V = {V:g}: stable from y_fp [mm]"] = ys[piece].min()
-            out[f"V = {V:g}: stable up to y_fp [mm]"] = ys[piece].max()
+            out[f"{name}: stable from y_fp [mm]"] = ys[piece].min()
+            out[f"{name}: stable up to y_fp [mm]"] = ys[piece].max()
         s0, residual, _, c = yfp_runs.linear_fit(ys[inside], amp[inside])
-        out[f"V = {V:g}: psi_amp/y_fp [rad/mm]"] = s0
-        out[f"V = {V:g}: largest rel. residual"] = residual
-        out[f"V = {V:g}: intercept of free fit [rad]"] = c
-        out[f"V = {V:g}: freq min [Hz]"] = freq[inside].min()
-        out[f"V = {V:g}: freq max [Hz]"] = freq[inside].max()
+        out[f"{name}: psi_amp/y_fp [rad/mm]"] = s0
+        out[f"{name}: largest rel. residual"] = residual
+        out[f"{name}: intercept of free fit [rad]"] = c
+        out[f"{name}: freq min [Hz]"] = freq[inside].min()
+        out[f"{name}: freq max [Hz]"] = freq[inside].max()
     return out
 
 

@@ -83,9 +83,11 @@ def numbers(diagrams: Sequence[Mapping[str, Any]],
             if smallest < first - 0.5:
                 out[f"y_fp = {d['yfp']:g}: smallest V of the orbits from H at {first:.1f} "
                     "[m/s]"] = smallest
-    for V, curve in orbits:
+    for (V, curve), name in zip(orbits, yfp_stored.orbit_names(orbits)):
         y_min, kind = lowest_orbit(curve, V)
-        out[f"V = {V:g}: orbits down to y_fp [mm] ({kind})"] = y_min
+        out[f"{name}: orbits down to y_fp [mm] ({kind})"] = y_min
+        if name != f"V = {V:g}":
+            continue   # a second orbit at V: its Hopf points came with the first
         hopf = [y for y, k, _ in yfp_runs.yfp_thresholds("fixed", V, **gear.parameters())
                 if k == "HB"]
         for k, y in enumerate(hopf):

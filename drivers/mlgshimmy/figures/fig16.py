@@ -115,8 +115,10 @@ def numbers(family: Any, hopf_curves: Sequence[Mapping[str, Any]],
     out.update({f"V at {name} [m/s]": window["V_" + name] for name in "abc"})
     for k, y in enumerate(crossing(hopf_curves, yfp_runs.V_LIMIT)):
         out[f"check: AUTO Hopf curves at V = 120, y_fp {k + 1} [mm]"] = y
-    out["check: smallest y_fp of AUTO's low-frequency Hopf curve [mm]"] = min(
-        min(c["yfp"]) for c in hopf_curves if max(c["freq"]) < kappa_criterion.BANDS["low"][1])
+    low = [min(c["yfp"]) for c in hopf_curves
+           if max(c["freq"]) < kappa_criterion.BANDS["low"][1]]
+    if low:   # a changed gear may have no low-frequency Hopf curve (rho = 20, mu = 5 deg)
+        out["check: smallest y_fp of AUTO's low-frequency Hopf curve [mm]"] = min(low)
     for scaling, diagrams in family.items():
         out.update(yfp_stored.diagram_numbers(diagrams, f"{scaling} "))
     return out
@@ -192,10 +194,17 @@ def plot(result: Mapping[str, Any]) -> None:
         ax.set(xlim=(0, yfp_runs.V_MAX), ylim=(0, Y_MAX) if scaling == "fixed" else (0, max(ys)))
         orbit_surface(ax, diagrams, result["hopf_curves"] if scaling == "fixed" else [])
         if scaling == "ratio":
-            for k in range(3):   # the Hopf speeds do not move with y_fp
-                ax.plot([d["hopf"][k][0] for d in diagrams], ys, 0.0, zorder=3, **HOPF)
-            folds = [(d["folds"][0][0], d["yfp"], d["folds"][0][1] * DEG) for d in diagrams]
-            ax.plot(*zip(*folds), zorder=4, **FOLD)
+            # each Hopf point by name across the slices that have it (the
+            # speeds do not move with y_fp; a changed gear's H1, H2 may
+            # exist on some only) and the fold S1
+            for name in dict.fromkeys(n for d in diagrams for n in d["hopf_names"]):
+                at = [(V, d["yfp"]) for d in diagrams
+                      for n, (V, _) in zip(d["hopf_names"], d["hopf"]) if n == name]
+                ax.plot(*zip(*at), 0.0, zorder=3, **HOPF)
+            folds = [(V, d["yfp"], amp * DEG) for d in diagrams for V, amp in d["folds"]
+                     if V == dict(yfp_stored.named_folds(d)).get("S1")]
+            if folds:
+                ax.plot(*zip(*folds), zorder=4, **FOLD)
             ax.set_title(r"(a) $\epsilon$ = 0.1 $y_{fp}$", y=0.95)
         else:
             for curve in result["hopf_curves"]:

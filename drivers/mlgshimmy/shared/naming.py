@@ -129,6 +129,18 @@ def names(modes: Sequence[Dict[str, object]]) -> List[str]:
     return out
 
 
+def fold_names(folds: Sequence[Tuple[float, float]]) -> List[Tuple[str, float]]:
+    """[(name, value)] of folds of periodic orbits [(value, Hz)], named by
+    their family, not by the order found: those of the high-frequency
+    orbits (HIGH_HZ or more) S1, S2, ... in increasing value (S1 is the
+    paper's S), then the others "low-frequency fold 1", ... (Figs. 10, 13,
+    14 and 16 name their folds so)."""
+    high = sorted(v for v, hz in folds if hz >= HIGH_HZ)
+    low = sorted(v for v, hz in folds if hz < HIGH_HZ)
+    return ([(f"S{k + 1}", v) for k, v in enumerate(high)]
+            + [(f"low-frequency fold {k + 1}", v) for k, v in enumerate(low)])
+
+
 def weak(model: mlgmodel.Model, u: ArrayLike, hopf: lyapunov.Hopf) -> bool:
     """|l1| small: the normal form's orbit where the pair's real part is
     0.01 omega would reach beyond the angle over which the field is cubic

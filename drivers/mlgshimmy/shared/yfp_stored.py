@@ -6,20 +6,30 @@ from __future__ import annotations
 import os
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 
-from mlgshimmy.shared import jobs, paths
+from mlgshimmy.shared import jobs, naming, paths
 from mlgshimmy.shared.yfp_runs import V_ORBITS, curve_points, diagram_in_V, orbit_curve, orbits_in_yfp
 
 
-def stored_orbits(orbits: Mapping[float, Tuple[List[Any], List[Any]]]
+def stored_orbits(orbits: Sequence[Tuple[float, Tuple[List[Any], List[Any]]]]
                   ) -> List[Tuple[float, Dict[str, Any]]]:
     """The orbits of orbits_in_yfp for the cache: [(V, {"yfp", "psi_amp",
     "freq", "stable"})], each joined by orbit_curve."""
     out = []
-    for V, runs in orbits.items():
+    for V, runs in orbits:
         ys, amp, stable = orbit_curve(runs, "psi_amp")
         out.append((V, {"yfp": ys, "psi_amp": amp, "freq": orbit_curve(runs, "freq")[1],
                         "stable": stable}))
     return out
+
+
+def orbit_names(orbits: Sequence[Tuple[float, Any]]) -> List[str]:
+    """What a table calls each stored orbit: "V = 50", and "V = 50, orbit 2"
+    for a second stable orbit at the same speed (a changed gear's)."""
+    names, seen = [], {}
+    for V, _ in orbits:
+        seen[V] = seen.get(V, 0) + 1
+        names.append(f"V = {V:g}" + (f", orbit {seen[V]}" if seen[V] > 1 else ""))
+    return names
 
 
 COLUMNS = ("V", "psi_amp", "freq")
@@ -27,11 +37,13 @@ COLUMNS = ("V", "psi_amp", "freq")
 
 def stored_diagram(diagram: Any) -> Dict[str, Any]:
     """A Diagram in V for the cache: y_fp, scaling, Hopf points, folds
-    (V, psi_amp), the orbit branches (jobs.stored) and per orbit run its
-    first and smallest V (a turn AUTO may not label LP)."""
+    (V, psi_amp) and their orbits' frequencies [Hz], the orbit branches
+    (jobs.stored) and per orbit run its first and smallest V (a turn AUTO
+    may not label LP)."""
     return {"yfp": diagram.yfp, "scaling": diagram.scaling, "hopf": diagram.hopf,
             "hopf_names": [p["name"] for p in diagram.named],
             "folds": [(V, amp) for _, _, V, amp in diagram.folds()],
+            "fold_hz": [run(lab)["freq"] for run, lab, _, _ in diagram.folds()],
             "branches": [b for run in diagram.branches for b in jobs.stored(run, COLUMNS)],
             "turns": [(run[0]["V"][0], min(run[0]["V"])) for run in diagram.branches]}
 
@@ -70,14 +82,20 @@ def diagrams_of(done: Sequence[Mapping[str, Any]],
 def diagram_numbers(diagrams: Sequence[Mapping[str, Any]], prefix: str = "") -> Dict[str, float]:
     """{quantity: value}: the Hopf and fold speeds of stored diagrams, as
     "<prefix>y_fp = <y>: <name> [m/s]" (the Hopf points named by their mode,
-    shared.naming) and "...: S<k> [m/s]"."""
+    the folds by their family: shared.naming)."""
     out = {}
     for d in diagrams:
         for name, (V, _) in zip(d["hopf_names"], d["hopf"]):
             out[f"{prefix}y_fp = {d['yfp']:g}: {name} [m/s]"] = V
-        for k, (V, _) in enumerate(d["folds"]):
-            out[f"{prefix}y_fp = {d['yfp']:g}: S{k + 1} [m/s]"] = V
+        for name, V in named_folds(d):
+            out[f"{prefix}y_fp = {d['yfp']:g}: {name} [m/s]"] = V
     return out
+
+
+def named_folds(diagram: Mapping[str, Any]) -> List[Tuple[str, float]]:
+    """[(name, V)] of a stored diagram's folds (naming.fold_names)."""
+    return naming.fold_names([(V, hz) for (V, _), hz in zip(diagram["folds"],
+                                                           diagram["fold_hz"])])
 
 
 def stored_curves(curves: Sequence[Tuple[Any, Any]],

@@ -74,9 +74,8 @@ def numbers(result: Mapping[str, Any]) -> Dict[str, float]:
         at = f"M_fric = {lv['M_fric']:g} N m"
         out.update({f"{p['name']} ({p['criticality']}) [m/s], {at}": p["V"]
                     for p in lv["hopf"]})
-        kind = {True: "high-frequency", False: "low-frequency"}
-        for k, (V, hz, _) in enumerate(lv["folds"]):
-            out[f"fold {k + 1} of {kind[hz >= naming.HIGH_HZ]} orbits [m/s], {at}"] = V
+        for name, V in naming.fold_names([(V, hz) for V, hz, _ in lv["folds"]]):
+            out[f"{name} [m/s], {at}"] = V
     return out
 
 

@@ -29,7 +29,7 @@ def orbits_in_yfp(ax_amp: Any, ax_freq: Any,
     for ax in (ax_amp, ax_freq):
         ax.set_xlabel("$y_{fp}$ [mm]")
     speeds = [Line2D([], [], color=ORBIT_COLOURS[V], lw=1.5, label=f"V = {V:g} m/s")
-              for V, _ in orbits]
+              for V in sorted({V for V, _ in orbits})]
     draw.legend(ax_amp, extra=speeds, color=draw.NEUTRAL, axes=[])
 
 
