@@ -16,8 +16,9 @@ Start here
   test                      3 min  build and run all tests (C, Python, AUTO, quick regressions)
   report                     10 s  build/report/index.html: every figure beside the paper's numbers
   demo                       10 s  build/demo/ for AUTO's own commands: auto mlg.auto, @r mlg
-  gear RHO=20 MU=5 [SET=]  30 min  "my gear": every figure, design answers beside the paper's gear,
-                                   motion; one page (-j2; GEAR_FIGURES=answers: 5 min)
+  gear RHO=20 MU=5 [SET=]  30 min  "my gear": every figure, kappa* by freeplay law, design answers
+                                   beside the paper's gear, motion; one page (-j2;
+                                   GEAR_FIGURES=answers: 5 min; GEAR_STUDIES='laws atlas')
   fig11-motion              3 min  the gear's motion animated in each kind of region of Fig. 11
   venv VENV=v                 5 s  a Python virtual environment importing mlgshimmy (notebooks)
   help                        1 s  this list (also plain make)

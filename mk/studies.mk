@@ -210,20 +210,26 @@ point: $(MLG_SIMULATE) $(MLG_SHARED)
 # GEAR_FIGURES (every figure; GEAR_FIGURES=answers: only the three the design
 # answers read) at the gear and at the paper's gear (for the numbers beside;
 # the gear's exported MLG_* cleared, or the base tree would get the gear's),
-# the animations of GEAR_MOTION (V:F*:start), then the gear tree's report,
-# which opens with the design answers (shared.gear_answers).  An animation
-# that fails leaves the others and the page; make gear names it and fails.
+# the studies of GEAR_STUDIES at the gear (default laws: kappa* for every
+# freeplay law, a minute or two; atlas too takes ~9 min at -j2; none with
+# GEAR_STUDIES=), the animations of GEAR_MOTION (V:F*:start), then the gear
+# tree's report, which opens with the design answers (shared.gear_answers).
+# An animation that fails leaves the others and the page; make gear names
+# it and fails.
 GEAR_FIGURES ?= $(FIGURES)
 GEAR_ANSWERS := fig07 fig10 fig18
 override GEAR_FIGURES := $(if $(filter answers,$(GEAR_FIGURES)),$(GEAR_ANSWERS),$(GEAR_FIGURES))
+GEAR_STUDIES ?= laws
+GEAR_STUDY_CHOICES := laws atlas
 GEAR_MOTION ?= 15:1:rolling 300:1:shimmy 450:0.3:shimmy 50:0.2:yawed
 .PHONY: gear
 gear:
 	$(if $(GEAR_SUBDIR),,$(error make gear needs a changed gear: RHO=<deg> MU=<deg> and/or SET='name=value', e.g. make gear RHO=20 MU=5))
 	$(if $(filter-out $(FIGURES),$(GEAR_FIGURES)),$(error GEAR_FIGURES: not a figure: $(filter-out $(FIGURES),$(GEAR_FIGURES)) (the figures: $(FIGURES), or answers)))
+	$(if $(filter-out $(GEAR_STUDY_CHOICES),$(GEAR_STUDIES)),$(error GEAR_STUDIES: not a study made at a gear: $(filter-out $(GEAR_STUDY_CHOICES),$(GEAR_STUDIES)) (the choices: $(GEAR_STUDY_CHOICES), or none: GEAR_STUDIES=)))
 	MLG_RHO_DEG= MLG_MU_DEG= MLG_EOM= MLG_SET= MLG_BASE_RUN_ROOT= $(MAKE) --no-print-directory \
 	    MLG_RUN_ROOT=$(call shell_quote,$(BASE_RUN_ROOT)) RHO= MU= EOM= SET= $(GEAR_FIGURES)
-	$(MAKE) --no-print-directory $(GEAR_FIGURES)
+	$(MAKE) --no-print-directory $(GEAR_FIGURES) $(GEAR_STUDIES)
 	set -e; failed=; $(foreach m,$(GEAR_MOTION),$(MAKE) --no-print-directory animate \
 	    V=$(word 1,$(subst :, ,$(m))) FSTAR=$(word 2,$(subst :, ,$(m))) \
 	    START=$(word 3,$(subst :, ,$(m))) NEAR=1 || failed="$$failed "$(call shell_quote,$(m));) \

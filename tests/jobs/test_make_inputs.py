@@ -187,3 +187,19 @@ def test_make_gear_makes_every_figure_unless_asked_for_the_answers(clone):
     proc = make(clone, "-n", "gear", "RHO=20", "MU=5", "GEAR_FIGURES=fig07 fig99;true")
     assert proc.returncode != 0 and "GEAR_FIGURES: not a figure: fig99;true" in proc.stderr, \
         proc.stderr[-2000:]
+
+
+def test_make_gear_makes_the_laws_study_at_the_gear_unless_told_otherwise(clone):
+    """GEAR_STUDIES (default laws) is made at the gear after its figures;
+    GEAR_STUDIES= makes none; a study not made at a gear stops it, named."""
+    def at_gear(*args):
+        proc = make(clone, "-n", "gear", "RHO=20", "MU=5", "GEAR_FIGURES=fig07", *args)
+        assert proc.returncode == 0, proc.stderr[-2000:]
+        return next(line for line in proc.stdout.splitlines()
+                    if line.startswith("make --no-print-directory fig07")).split()[2:]
+    assert at_gear() == ["fig07", "laws"]
+    assert at_gear("GEAR_STUDIES=") == ["fig07"]
+    assert at_gear("GEAR_STUDIES=laws atlas") == ["fig07", "laws", "atlas"]
+    proc = make(clone, "-n", "gear", "RHO=20", "MU=5", "GEAR_STUDIES=atlass;true")
+    assert proc.returncode != 0 and \
+        "GEAR_STUDIES: not a study made at a gear: atlass;true" in proc.stderr, proc.stderr[-2000:]
