@@ -3,8 +3,11 @@ changed gear the report opens with the design answers read from the
 cached Figs. 10 and 18, the paper's gear beside each; a vanished Hopf
 point and a figure not made say so."""
 
+import re
+
 import pytest
 
+from mlgshimmy import report
 from mlgshimmy.shared import gear, gear_answers, geometry, jobs
 
 FIG10 = {"numbers": {"V_crit (zero freeplay) [m/s]": 346.1, "S1 [m/s]": 41.49},
@@ -13,7 +16,7 @@ FIG10 = {"numbers": {"V_crit (zero freeplay) [m/s]": 346.1, "S1 [m/s]": 41.49},
               "loses": True, "criticality": "supercritical"},
              {"name": "H3", "V": 144.27, "freq_hz": 13.09, "band": "high", "dof": "lateral",
               "loses": True, "criticality": "subcritical"}]}
-FIG18 = {"kappa_star": 0.365}
+FIG18 = {"kappa_star": 0.365, "numbers": {"kappa*: at F*": 0.1, "kappa*: at V [m/s]": 120.0}}
 
 
 def test_answers_from_the_two_figures():
@@ -53,9 +56,17 @@ def test_the_section_sets_the_gear_beside_the_papers(roots):
         in text
     assert "<td>330.5 m/s</td><td>346.1 m/s</td>" in text
     assert "<td>60 to 144.3 m/s</td><td>41.49 to 144.3 m/s</td>" in text
-    assert "<td>not made (make gear)</td><td>0.0365 mm</td>" in text
+    assert "<td>not made (make gear)</td><td>0.0365 mm (set at F* = 0.1, V = 120 m/s)</td>" \
+        in text
     assert "<th>Hopf point H1 (y_fp = 1 mm, F* = 1)</th><td>vanished</td>" in text
     assert "<b>subcritical</b>" in text
+
+
+def test_the_section_links_the_animations_where_the_report_puts_them(roots):
+    """The link to the gear's motion is the animate study's section
+    (report: id study-<name>); it pointed at #study-motion, which no page has."""
+    assert re.findall(r'href="#([^"]+)"', gear_answers.section()) == ["study-animate"]
+    assert "animate" in [name for name, *_ in report.STUDIES]
 
 
 def test_the_papers_gear_has_no_section(monkeypatch):

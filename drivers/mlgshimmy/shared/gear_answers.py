@@ -26,9 +26,11 @@ def cached(figure: str, root: Optional[str] = None) -> Optional[dict]:
 
 def answers(fig10: Optional[dict], fig18: Optional[dict]) -> Dict[str, object]:
     """{"made", "critical_V", "hopf": {name: point}, "S", "bistable" (S, H3),
-    "allowed_mm", "kappa"} (None where not known)."""
+    "allowed_mm", "kappa", "limit" (F*, V) where kappa* is set} (None where
+    not known)."""
     out: Dict[str, object] = {"made": fig10 is not None, "critical_V": None, "hopf": {},
-                              "S": None, "bistable": None, "allowed_mm": None, "kappa": None}
+                              "S": None, "bistable": None, "allowed_mm": None, "kappa": None,
+                              "limit": None}
     if fig10:
         numbers = fig10["numbers"]
         out["critical_V"] = numbers.get("V_crit (zero freeplay) [m/s]")
@@ -40,6 +42,9 @@ def answers(fig10: Optional[dict], fig18: Optional[dict]) -> Dict[str, object]:
     if fig18:
         out["kappa"] = fig18["kappa_star"]
         out["allowed_mm"] = fig18["kappa_star"] * freeplay.EPSILON
+        at = fig18.get("numbers", {})
+        if "kappa*: at F*" in at and "kappa*: at V [m/s]" in at:
+            out["limit"] = (at["kappa*: at F*"], at["kappa*: at V [m/s]"])
     return out
 
 
@@ -49,6 +54,9 @@ def _value(found: dict, key: str, unit: str) -> str:
         return "none" if found["made"] and key == "bistable" else NOT_MADE
     if isinstance(value, tuple):
         return f"{value[0]:.4g} to {value[1]:.4g} {unit}"
+    if key == "allowed_mm" and found["limit"]:
+        return (f"{value:.4g} {unit} (set at F* = {found['limit'][0]:.3g}, "
+                f"V = {found['limit'][1]:.4g} m/s)")
     return f"{value:.4g} {unit}"
 
 
@@ -79,6 +87,6 @@ def section(root: Optional[str] = None) -> str:
     body = "".join(f"<tr><th>{q}</th><td>{a}</td><td>{b}</td></tr>" for q, a, b in cells)
     return (f'<h2 id="gear">Your gear: {html.escape(gear.describe())}</h2>'
             '<p>The design answers, with the paper\'s gear beside them; the gear\'s motion is '
-            'in <a href="#study-motion">its animations</a>, every figure made at it below.</p>'
+            'in <a href="#study-animate">its animations</a>, every figure made at it below.</p>'
             '<table class="numbers"><thead><tr><th></th><th>your gear</th>'
             f"<th>the paper's gear</th></tr></thead><tbody>{body}</tbody></table>")
