@@ -3,6 +3,7 @@ changed gear the report opens with the design answers read from the
 cached Figs. 10 and 18, the paper's gear beside each; a vanished Hopf
 point and a figure not made say so."""
 
+import math
 import re
 
 import pytest
@@ -60,6 +61,22 @@ def test_the_section_sets_the_gear_beside_the_papers(roots):
         in text
     assert "<th>Hopf point H1 (y_fp = 1 mm, F* = 1)</th><td>vanished</td>" in text
     assert "<b>subcritical</b>" in text
+
+
+def test_an_allowed_freeplay_set_inside_the_stage_switch_says_so():
+    """At (20, 5) deg kappa* = 0 is set at F* = 0.66, inside the oleo's
+    stage switch (0.633-0.695), where straight rolling is unstable below
+    120 m/s without freeplay; the answer says where, and that it is there."""
+    fig18 = {"kappa_star": 0.0, "numbers": {"kappa*: at F*": 0.66, "kappa*: at V [m/s]": 100.08}}
+    inside = gear_answers.answers(FIG10, fig18, (0.6334, 0.6948))
+    assert gear_answers._value(inside, "allowed_mm", "mm") == \
+        "0 mm (set at F* = 0.66, V = 100.1 m/s; inside the oleo's stage switch, F* 0.633-0.695)"
+    outside = gear_answers.answers(FIG10, FIG18, (0.6334, 0.6948))
+    assert gear_answers._value(outside, "allowed_mm", "mm") == \
+        "0.0365 mm (set at F* = 0.1, V = 120 m/s)"
+    window = gear_answers.switch({"rho": math.radians(20.0), "mu": math.radians(5.0),
+                                  "eom_terms": 2.0})
+    assert window == pytest.approx((0.6334, 0.6948), abs=1e-4)
 
 
 def test_the_section_links_the_animations_where_the_report_puts_them(roots):
