@@ -31,6 +31,7 @@ from mlgshimmy.shared import yfp_runs
 from mlgshimmy.shared import paper
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import regions
+from mlgshimmy.shared.stage_switch import stage_switch_window
 
 # What make, make help, make submit and the report know of this figure
 # (shared.jobs.catalogue reads it as text: literals only).
@@ -200,7 +201,8 @@ def compute(name: str = "fig18", variant: int = 0) -> Dict[str, Any]:
             "auto": drawn,
             "auto_located": [{"yfp": y, "Fstar": F} for found in values.values()
                              for F, y, _ in found if not isinstance(y, runerror.RunError)],
-            "codim2": yfp_codim2.codim2_points(drawn, "fixed", "Fstar", {"V": yfp_runs.V_LIMIT}, **model)}
+            "codim2": yfp_codim2.codim2_points(drawn, "fixed", "Fstar", {"V": yfp_runs.V_LIMIT}, **model),
+            "stage_switch": stage_switch_window(float(FSTARS[0]), float(FSTARS[-1]), **model)}
 
 
 RASTER_KAPPA = numpy.geomspace(MAP_KAPPA[0], MAP_KAPPA[-1], 600)
@@ -271,6 +273,14 @@ def plot(result: Mapping[str, Any]) -> None:
                 label="AUTO, one run per load")
     for point in result["codim2"]:
         draw.mark(ax, point["yfp"] / freeplay.EPSILON, point["Fstar"], point["type"])
+    switch = result.get("stage_switch")
+    if switch and switch[0] <= result["kappa_star_Fstar"] <= switch[1]:
+        # kappa* is set inside the oleo's stage switch, narrower than the
+        # loads' grid (a dips there between two loads): its value hangs on
+        # how steep the model's switch is
+        for k, f in enumerate(switch):
+            ax.axhline(f, color=draw.palette.GUIDE, lw=0.6,
+                       label=None if k else r"the oleo's stage switch, where $\kappa^*$ is set")
     ax.add_patch(plt.Rectangle((MAP_KAPPA[0], FSTARS[0]), kappa - MAP_KAPPA[0],
                                FSTARS[-1] - FSTARS[0], fill=False, hatch="//", lw=1.2))
     shown = set(numpy.unique(painted)) | ({1} if 0 in painted else set())   # R1, R2: one entry
