@@ -43,7 +43,7 @@ COLLAPSING = 0.01     # a least amplitude below this part of the branch's larges
 # is the one they join (AUTO's branch point lies up to 1 m/s from it: I_psi
 # x0.9, at 29.03 m/s for H2 at 27.97 m/s)
 JOIN_WINDOW = 0.05
-FIRST_STEP_FLOOR = 1e-5   # follow_orbits retries a jumping first step down to this DS
+FIRST_STEP_FLOOR = 1e-5   # first_step cuts a jumping first step's DS down to this
 FIRST_STEP_TRIAL = 2      # steps of the run that tries a first step (first_step)
 VERTICAL = 0.1   # of DSMAX: a branch that has moved less along its parameter leaves it vertically
 CORNER, CORNER_STEPS = 0.01, 300   # the steps (of DS, DSMAX) and their number at such a corner
@@ -501,20 +501,20 @@ class Diagram:
     [(value, frequency in Hz)] and real-eigenvalue crossings bp (spectrum
     scan), parts = [(AUTO's HB point, periodic run)] of the branches born
     there, names = the names of those runs (for load()) and named = the
-    Hopf points named by their mode (naming(), called on first use: its
+    Hopf points named by their mode (name_points(), called on first use: its
     criticality checks simulate, up to minutes at a weak Hopf point, and
     Fig. 11's slices never read them).  Keywords (e.g. yfp, scaling) are
     kept as attributes."""
 
     def __init__(self, parameter, hopf, bp, parts, names,
-                 naming: Callable[[], List[Dict[str, object]]] = list, **about):
+                 name_points: Callable[[], List[Dict[str, object]]] = list, **about):
         self.parameter, self.hopf, self.bp, self.parts = parameter, hopf, bp, parts
-        self.names, self._naming = names, naming
+        self.names, self._name_points = names, name_points
         self.__dict__.update(about)
 
     @functools.cached_property
     def named(self) -> List[Dict[str, object]]:
-        return list(self._naming())
+        return list(self._name_points())
 
     def name_of(self, run: Any) -> Optional[str]:
         """The name of one of the diagram's runs."""
