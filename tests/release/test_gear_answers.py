@@ -10,6 +10,7 @@ import pytest
 
 from mlgshimmy import report
 from mlgshimmy.shared import gear, gear_answers, geometry, jobs
+from mlgshimmy.shared.stage_switch import stage_switch_window
 
 FIG10 = {"numbers": {"V_crit (zero freeplay) [m/s]": 346.1, "S1 [m/s]": 41.49},
          "hopf_points": [
@@ -67,16 +68,17 @@ def test_an_allowed_freeplay_set_inside_the_stage_switch_says_so():
     """At (20, 5) deg kappa* = 0 is set at F* = 0.66, inside the oleo's
     stage switch (0.633-0.695), where straight rolling is unstable below
     120 m/s without freeplay; the answer says where, and that it is there."""
-    fig18 = {"kappa_star": 0.0, "numbers": {"kappa*: at F*": 0.66, "kappa*: at V [m/s]": 100.08}}
-    inside = gear_answers.answers(FIG10, fig18, (0.6334, 0.6948))
+    window = stage_switch_window(0.1, 2.0, rho=math.radians(20.0), mu=math.radians(5.0),
+                                 eom_terms=2.0)
+    assert window == pytest.approx((0.6334, 0.6948), abs=1e-4)
+    fig18 = {"kappa_star": 0.0, "numbers": {"kappa*: at F*": 0.66, "kappa*: at V [m/s]": 100.08},
+             "stage_switch": list(window)}
+    inside = gear_answers.answers(FIG10, fig18)
     assert gear_answers._value(inside, "allowed_mm", "mm") == \
         "0 mm (set at F* = 0.66, V = 100.1 m/s; inside the oleo's stage switch, F* 0.633-0.695)"
-    outside = gear_answers.answers(FIG10, FIG18, (0.6334, 0.6948))
+    outside = gear_answers.answers(FIG10, {**FIG18, "stage_switch": list(window)})
     assert gear_answers._value(outside, "allowed_mm", "mm") == \
         "0.0365 mm (set at F* = 0.1, V = 120 m/s)"
-    window = gear_answers.switch({"rho": math.radians(20.0), "mu": math.radians(5.0),
-                                  "eom_terms": 2.0})
-    assert window == pytest.approx((0.6334, 0.6948), abs=1e-4)
 
 
 def test_the_section_links_the_animations_where_the_report_puts_them(roots):

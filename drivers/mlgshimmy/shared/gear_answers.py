@@ -7,10 +7,9 @@ zero-freeplay critical speed; Fig. 18's kappa* (the allowed freeplay is
 kappa* x eps, eps = 0.1 mm).  A figure not made shows as such.
 """
 import html
-from typing import Dict, Optional, Tuple
+from typing import Dict, Optional
 
-from mlgshimmy.shared import freeplay, gear, jobs, kappa_criterion
-from mlgshimmy.shared.stage_switch import stage_switch_window
+from mlgshimmy.shared import freeplay, gear, jobs
 
 FIGURES = ("fig10", "fig18")      # what the answers are read from
 NOT_MADE = "not made (make gear)"
@@ -25,12 +24,11 @@ def cached(figure: str, root: Optional[str] = None) -> Optional[dict]:
         return None
 
 
-def answers(fig10: Optional[dict], fig18: Optional[dict],
-            switch: Optional[Tuple[float, float]] = None) -> Dict[str, object]:
+def answers(fig10: Optional[dict], fig18: Optional[dict]) -> Dict[str, object]:
     """{"made", "critical_V", "hopf": {name: point}, "S", "bistable" (S, H3),
     "allowed_mm", "kappa", "limit" (F*, V) where kappa* is set, "switch" the
-    oleo's stage-switch window of loads (stage_switch_window) if the limit
-    lies in it} (None where not known)."""
+    oleo's stage-switch window of loads (Fig. 18's "stage_switch") if the
+    limit lies in it} (None where not known)."""
     out: Dict[str, object] = {"made": fig10 is not None, "critical_V": None, "hopf": {},
                               "S": None, "bistable": None, "allowed_mm": None, "kappa": None,
                               "limit": None, "switch": None}
@@ -48,16 +46,10 @@ def answers(fig10: Optional[dict], fig18: Optional[dict],
         at = fig18.get("numbers", {})
         if "kappa*: at F*" in at and "kappa*: at V [m/s]" in at:
             out["limit"] = (at["kappa*: at F*"], at["kappa*: at V [m/s]"])
+            switch = fig18.get("stage_switch")
             if switch and switch[0] <= out["limit"][0] <= switch[1]:
-                out["switch"] = switch
+                out["switch"] = tuple(switch)
     return out
-
-
-def switch(model: Dict[str, float]) -> Optional[Tuple[float, float]]:
-    """The oleo's stage-switch window over Fig. 18's loads for the gear
-    `model` (parameter overrides), or None."""
-    loads = kappa_criterion.ENVELOPE_LOADS
-    return stage_switch_window(float(loads[0]), float(loads[-1]), **model)
 
 
 def _value(found: dict, key: str, unit: str) -> str:
@@ -87,8 +79,8 @@ def section(root: Optional[str] = None) -> str:
     """The report's first section at a changed gear ("" at the paper's)."""
     if gear.current().baseline:
         return ""
-    ours = answers(*(cached(f) for f in FIGURES), switch(gear.parameters()))
-    theirs = answers(*(cached(f, gear.base_root()) for f in FIGURES), switch({}))
+    ours = answers(*(cached(f) for f in FIGURES))
+    theirs = answers(*(cached(f, gear.base_root()) for f in FIGURES))
     rows = [("critical speed without freeplay, F* = 1", "critical_V", "m/s"),
             ("bistable band [S, H3]: straight rolling and large shimmy both stable",
              "bistable", "m/s"),
