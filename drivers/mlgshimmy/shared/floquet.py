@@ -50,8 +50,16 @@ def read_points(path: str) -> Dict[int, Tuple[float, numpy.ndarray]]:
     """{point number: (parameter value, multipliers)} of the d-file at path,
     the point numbers as the b-file's PT.  AUTO writes a block for each
     Newton solve; while it locates a special point it solves several times
-    for one point number, and the last block is the point kept."""
+    for one point number, and the last block is the point kept.  A block
+    of placeholders (every multiplier exactly 1) is no point: AUTO writes
+    one for the MX point of a run whose last Newton solve diverged, with
+    that solve's iterate as the parameter value."""
     points, value, last_value, current, point = {}, None, None, [], None
+
+    def keep():
+        if current and any(mu != 1.0 for mu in current):
+            points[point] = (last_value, numpy.array(current))
+
     with open(path) as f:
         for line in f:
             m = _MULTIPLIER.match(line)
@@ -61,13 +69,11 @@ def read_points(path: str) -> Dict[int, Tuple[float, numpy.ndarray]]:
                 continue
             m = _ITERATION.match(line)
             if m:
-                if current:
-                    points[point] = (last_value, numpy.array(current))
-                    current = []
+                keep()
+                current = []
                 value = fortran_number(m.group(1))
             last_value = value
-    if current:
-        points[point] = (last_value, numpy.array(current))
+    keep()
     return points
 
 
