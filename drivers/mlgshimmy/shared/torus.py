@@ -142,16 +142,19 @@ def tr_point(rundir: str, name: str, bd: Any, v: float, slope: float,
     labelled = labelled_tr(bd, v, between)
     if labelled:
         return labelled
-    ends = [p for p in bd() if p["TY name"] in ("UZ", "EP")]      # V = V_MAX
-    # a branch stopped short (MX): its labelled orbit furthest above v instead
-    end = ends[-1] if ends else max((p for p in bd() if p["TY name"] != "MX"),
-                                    key=lambda p: p["V"])
+    # the branch's end, past every crossing on it: V = V_MAX (UZ, EP) or,
+    # where it stopped short, its MX point (AUTO's last converged orbit);
+    # a labelled orbit before the end can lie before the crossing, and the
+    # run back from it never reaches v
+    end = bd()[-1]
     for factor in (1, 2, 4):
         h = factor * max(2e-5 / abs(slope), 0.05)
+        # back along a branch already computed: a run that does not reach v
+        # started on the wrong side of a fold, and no retry rung changes that
         back = ct.run(rundir, f"{name}_back{factor}", "periodic", data=end,
                       ICP=["V", 11] + mlgmodel.MEASURES, DS=-1.0, DSMAX=5.0,
-                      UZSTOP={"V": v + 3 * h})
-        if not back("UZ"):   # a rung of the retry ladder that ran out of steps first
+                      UZSTOP={"V": v + 3 * h}, allow_mx=True)
+        if not back("UZ"):
             last = back()[-1]
             raise runerror.RunError(f"run {name}_back{factor}: ends ({last['TY name']}) at "
                                     f"V = {last['V']:.6g}, short of V = {v + 3 * h:.6g}")
