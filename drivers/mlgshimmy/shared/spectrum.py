@@ -26,13 +26,16 @@ def eigenvalues(model: mlgmodel.Model, u: Optional[dict] = None) -> numpy.ndarra
 
 
 def bisect(same_as_lo: Callable[[float], bool], lo: float, hi: float, tol: float = 0.0,
-           steps: int = 60) -> float:
-    """Midpoint of [lo, hi] after halving it `steps` times (or until it is no
-    wider than tol), keeping lo where same_as_lo() holds."""
+           steps: int = 60, split: float = 0.5) -> float:
+    """Midpoint of [lo, hi] after cutting it `steps` times (or until it is no
+    wider than tol), keeping lo where same_as_lo() holds; each cut at
+    `split` of the bracket from lo (0.5: halving)."""
+    if not 0.0 < split < 1.0:
+        raise ValueError(f"bisect: split = {split} must lie between 0 and 1")
     for _ in range(steps):
         if hi - lo <= tol:
             break
-        mid = 0.5 * (lo + hi)
+        mid = lo + split * (hi - lo)
         if same_as_lo(mid):
             lo = mid
         else:
