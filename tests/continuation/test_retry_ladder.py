@@ -71,6 +71,37 @@ def test_keep_last_keeps_the_last_rung_and_reports_it(capsys):
         in capsys.readouterr().out
 
 
+def test_rungs_that_stop_where_the_run_stopped_are_not_run_again(capsys):
+    """A rung is tried from the stop first (passes); the ones that stop
+    there too are skipped, and only the five times finer mesh, which gets
+    past it, runs the branch again from its start."""
+    stop = runerror.RunError("run fold_upper3- in x: no convergence (MX) at V = 501.2",
+                             kind=runerror.MX)
+    stop.diagram, stop.stop = "diagram up to the stop", {"V": 501.2, "Fstar": 1.05}
+    attempt, calls = attempts([stop, "the whole curve"])
+    probed = []
+
+    def passes(error, **constants):
+        probed.append((error.stop["V"], constants))
+        return constants == {"NTST": 400}
+    assert continuation.with_ladder(attempt, OWN, "run fold_upper3-", keep_last=True,
+                                    passes=passes) == "the whole curve"
+    assert [c for _, c in calls] == [{}, {"NTST": 400}], calls
+    assert [V for V, _ in probed] == [501.2] * len(continuation.LADDER), probed
+    assert capsys.readouterr().out.count("stops where the run stopped too") == 3
+
+
+def test_a_stop_without_its_point_is_not_probed():
+    """A non-finite stop has no converged point to try a rung from: the
+    rungs run from the start, as without passes."""
+    stop = runerror.RunError("run fold1- in x: non-finite solution (component 3)",
+                             kind=runerror.NON_FINITE)
+    attempt, calls = attempts([stop, "smaller steps"])
+    assert continuation.with_ladder(attempt, OWN, "fold1-",
+                                    passes=lambda error, **c: False) == "smaller steps"
+    assert len(calls) == 2
+
+
 def test_a_rung_costs_its_mesh_times_its_steps():
     assert continuation.rung_cost(OWN(), {"DS": 0.005}) == 1.0
     assert continuation.rung_cost(OWN(), {"NTST": 400}) == 5.0

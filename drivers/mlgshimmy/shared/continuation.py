@@ -128,7 +128,7 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
             error = runerror.RunError(
                 f"run {name} in {rundir}: no convergence (MX) at {kw['ICP'][0]} = "
                 f"{stops[0][kw['ICP'][0]]:.6g}, {ends.unexplained}", kind=runerror.MX)
-            error.diagram = bd
+            error.diagram, error.stop = bd, stops[0]
             raise error
         if ends:
             nmx = kw.get("NMX", autoglue.read_constants(files)["NMX"])
@@ -140,8 +140,22 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
                                                      if p in mlgmodel.PARNAMES)
                           + "; kept up to there", flush=True)
         return bd
+
+    def passes(error, **rung):
+        """Whether the rung's constants get past the stop of the run that
+        raised `error` (AUTO's last converged point there), PROBE_STEPS
+        steps from it (run <name>_probe)."""
+        options = {**kw, "allow_mx": True, **rung, "data": error.stop, "NMX": PROBE_STEPS}
+        if kw.get("time_limit"):
+            options["time_limit"] = kw["time_limit"] * rung_cost(own(), rung)
+        try:
+            bd = autoglue.run(rundir, f"{name}_probe", constants=files, e=model, **options)
+        except runerror.RunError:
+            return False
+        return not bd("MX")
+    probe = passes if ends is not None and ends.probe else None
     return with_ladder(attempt, own, f"run {name}", keep_mx=kw.get("allow_mx") is True,
-                       keep_last=ends is not None and ends.keep)
+                       keep_last=ends is not None and ends.keep, passes=probe)
 
 
 def reported(what: str, make: Callable[[], Any],
@@ -342,14 +356,25 @@ STEP_CONSTANTS = ("DS", "DSMIN", "DSMAX", "NTST")
 
 
 class Ends:
-    """run(allow_mx=Ends(explains, unexplained, keep)): an MX point p where
-    explains(p, parameter) holds is an end of the branch and kept; any other
-    sends the run up the LADDER.  If every rung stops where nothing
+    """run(allow_mx=Ends(explains, unexplained, keep, probe)): an MX point p
+    where explains(p, parameter) holds is an end of the branch and kept; any
+    other sends the run up the LADDER.  If every rung stops where nothing
     explains it, RunError, or with keep the last rung's run is kept and the
-    stop reported (a figure draws what it has and says so)."""
+    stop reported (a figure draws what it has and says so).  With probe,
+    each rung is first tried from the stop (PROBE_STEPS steps) and run
+    from the start only if it gets past it there."""
 
-    def __init__(self, explains, unexplained: str, keep: bool = False):
+    def __init__(self, explains, unexplained: str, keep: bool = False, probe: bool = False):
         self.explains, self.unexplained, self.keep = explains, unexplained, keep
+        self.probe = probe
+
+
+# A rung tried from a stop (Ends.probe) gets past it if it makes this many
+# steps from there without MX (or ends on the run's stops, UZ).  A rung that
+# stops where the run stopped costs a few steps instead of the whole branch
+# up to there (at rho = -20, mu = -10 deg a fold curve of Fig. 11 needs the
+# five times finer mesh: 81 s on the three rungs before it).
+PROBE_STEPS = 10
 
 
 # an MX kept only where it ends the branch (ends_branch)
@@ -374,14 +399,17 @@ def rung_cost(own: Mapping[str, float], rung: Mapping[str, float]) -> float:
 
 
 def with_ladder(attempt: Callable[..., Any], own: Callable[[], Mapping[str, float]], what: str,
-                keep_mx: bool = False, keep_last: bool = False) -> Any:
+                keep_mx: bool = False, keep_last: bool = False,
+                passes: Optional[Callable[..., bool]] = None) -> Any:
     """attempt(mx, **constants) -> diagram; own() -> the run's own
     STEP_CONSTANTS.  With keep_mx (the caller draws a branch up to an MX
     and reports where it stopped) the run as given, MX allowed.  Else the
     run as given, then up LADDER while it does not converge (RunError
     .unconverged); if every rung fails too, the first RunError, or with
     keep_last the last rung's diagram (the error's .diagram), reported.
-    Other errors are raised."""
+    passes(error, **constants): whether a rung gets past the stop of the
+    last run that failed (an error with .stop), tried from there; a rung
+    that does not is skipped.  Other errors are raised."""
     if keep_mx:
         return attempt(True)
     try:
@@ -394,6 +422,11 @@ def with_ladder(attempt: Callable[..., Any], own: Callable[[], Mapping[str, floa
     last = first
     for rung, factors in LADDER:
         constants = rung_constants(steps, factors)
+        if passes is not None and getattr(last, "stop", None) is not None \
+                and not passes(last, **constants):
+            print(f"{what}: {rung} stops where the run stopped too (tried from there): "
+                  "not run again", flush=True)
+            continue
         try:
             bd = attempt(False, **constants)
         except runerror.RunError as exc:

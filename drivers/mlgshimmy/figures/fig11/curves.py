@@ -36,8 +36,9 @@ def fold_curve(rundir: str, name: str, point: Any, sign: float, **kw: Any) -> An
     """A fold curve of Fig. 11 from the LP `point`, first step DS = 0.05
     sign.  An MX end that nothing explains (ends.explained: not inside the
     stage switch, not on the Hopf locus) sends it up the retry ladder
-    (continuation.LADDER); if every rung stops too, the last is kept and
-    the stop reported."""
+    (continuation.LADDER), each rung tried from the stop first
+    (continuation.PROBE_STEPS); if every rung stops too, the last run is
+    kept and the stop reported."""
     return ct.fold_curve(rundir, name, point, ("V", "Fstar"), stop=STOP, DS=0.05 * sign,
                          DSMAX=1.0, NMX=400, allow_mx=FOLD_ENDS, **kw)
 
@@ -50,7 +51,7 @@ def fold_end_explained(point: Any, _parameter: str) -> bool:
 
 
 FOLD_ENDS = ct.Ends(fold_end_explained, "neither inside the stage switch nor on the Hopf "
-                    "locus", keep=True)
+                    "locus", keep=True, probe=True)
 
 
 @functools.lru_cache(maxsize=None)
