@@ -98,6 +98,9 @@ def found_curves(large_loads: Collection[float]) -> Dict[str, Any]:
     rundir = paths.rundir("fig11/torus")
     out = {"torus": [], "tongue": []}
     points, k = [], 0
+
+    def drawn():
+        return [run for curves in out.values() for curve in curves for run in curve]
     for Fstar in SLICES:
         for found in diagrams_on(Fstar, large_loads):
             for index, (c, kind) in enumerate(zip(found[1], crossing_kinds(found[1]))):
@@ -105,16 +108,23 @@ def found_curves(large_loads: Collection[float]) -> Dict[str, Any]:
                          "direction": c["direction"]}
                 if not V_MIN <= c["value"] <= V_MAX:
                     continue   # interpolated across a step that left the plane
-                if on_curves(point, [run for curves in out.values() for curve in curves
-                                     for run in curve], TONGUE_TOL):
+                if on_curves(point, drawn(), TONGUE_TOL):
                     continue
                 if k < MAX_CURVES:
                     k += 1
                     steps = (SWITCH_CURVE_STEPS if kind == "tongue"
                              and ends.inside(stage_switch(), Fstar) else torus.CURVE_STEPS)
                     try:
-                        out[kind].append(first_torus_curve(rundir, f"{kind}{k}", found, index,
-                                                           tr_name=f"tr{k}", steps=steps))
+                        tr = torus.tr_point(rundir, f"tr{k}", found[0], c["value"],
+                                            c["slope_per_unit"], c.get("between"))
+                        if on_curves({"V": tr["V"], "Fstar": Fstar}, drawn(), TONGUE_TOL):
+                            # AUTO's TR lies on a curve already continued (two
+                            # crossings of one step, placed at one label)
+                            print(f"fig11: {kind} start tr{k} at V = {tr['V']:.4g}, F* = "
+                                  f"{Fstar:g} lies on a curve found already", flush=True)
+                            continue
+                        out[kind].append(torus.torus_curve(rundir, f"{kind}{k}", tr,
+                                                           steps=steps))
                         continue
                     except (runerror.RunError, ValueError) as exc:
                         print(f"REPORTED: fig11 {kind} curve from V = {c['value']:.4g}, "
