@@ -25,12 +25,14 @@ def run_starts(monkeypatch, tmp_path, found):
     monkeypatch.setattr(tori, "crossing_kinds", lambda cs: [c["kind"] for c in cs])
     started = []
 
-    def first_torus_curve(_rundir, name, diagram, index, tr_name, steps):
-        Fstar, crossings = diagram
-        started.append((name, Fstar, steps))
-        V = crossings[index]["value"]
-        return ([{"V": [V, V + 1e-3], "Fstar": [Fstar, Fstar]}],)   # one run, one branch
-    monkeypatch.setattr(tori, "first_torus_curve", first_torus_curve)
+    def tr_point(_rundir, _name, Fstar, V, _slope, _between):   # the diagram: its load
+        return {"V": V, "Fstar": Fstar}
+
+    def torus_curve(_rundir, name, tr, steps):
+        started.append((name, tr["Fstar"], steps))
+        return ([{"V": [tr["V"], tr["V"] + 1e-3], "Fstar": [tr["Fstar"]] * 2}],)   # one run
+    monkeypatch.setattr(tori.torus, "tr_point", tr_point)
+    monkeypatch.setattr(tori.torus, "torus_curve", torus_curve)
     monkeypatch.setattr(tori.jobs, "stored", lambda run, _columns: run)
     tori.found_curves(set())
     return started
