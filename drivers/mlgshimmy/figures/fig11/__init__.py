@@ -21,10 +21,11 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence
 
 import numpy
 
-from mlgshimmy.figures.fig11.curves import slice_hopf_curves, stored_curves, upper_fold_curves
+from mlgshimmy.figures.fig11.curves import (slice_hopf_curves, stage_switch, stored_curves,
+                                            upper_fold_curves)
 from mlgshimmy.figures.fig11 import located
 from mlgshimmy.figures.fig11.ends import (FOLD_TOL, closing_segments, explained, joins_outside,
-                                          mx_ends, on_hopf_locus, stage_switch)
+                                          mx_ends, on_hopf_locus)
 from mlgshimmy.figures.fig11.liftoff_edge import (LIFTOFF_ENDS, LIFTOFF_LOADS, liftoff_edge,
                                                   liftoff_end, liftoff_speed)
 from mlgshimmy.figures.fig11.orbits import (large_family, slice_diagram, stable_orbits,

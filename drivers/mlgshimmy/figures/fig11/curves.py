@@ -9,7 +9,7 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 import numpy
 
 from mlgshimmy.figures.fig11 import ends
-from mlgshimmy.figures.fig11.ends import explained, stage_switch
+from mlgshimmy.figures.fig11.ends import SWITCH_WIDTHS, explained
 from mlgshimmy.figures.fig11.orbits import ROLLING, slice_rundir
 from mlgshimmy.figures.fig11.plane import (GEOMETRY, MODEL, F_MAX, F_MIN, ON_CURVE_TOL, SLICES,
                                            STOP, V_SCAN, on_curves)
@@ -18,6 +18,7 @@ from mlgshimmy.shared import jobs
 from mlgshimmy.shared import paths
 from mlgshimmy.shared import spectrum
 from mlgshimmy.shared import stationary
+from mlgshimmy.shared.stage_switch import stage_switch_window
 
 FOLD_TIME_LIMIT = 120  # s of CPU, guard for a fold-curve run (they take 20-40 s)
 MAX_TURNS = 10         # slices back inside the Hopf curves' turns (slice_hopf)
@@ -51,6 +52,12 @@ def fold_end_explained(point: Any, _parameter: str) -> bool:
 
 FOLD_ENDS = ct.Ends(fold_end_explained, "neither inside the stage switch nor on the Hopf "
                     "locus", keep=True, probe=True)
+
+
+@functools.lru_cache(maxsize=None)
+def stage_switch() -> Optional[Tuple[float, float]]:
+    """The stage-switch window of the plane's loads (ends.inside)."""
+    return stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
 
 
 def curves(rundir: str, parameter_set: str = "figures") -> Dict[str, Any]:

@@ -5,7 +5,6 @@ torus curve's end on a fold curve, an end at the lift-off edge
 (explained), and the others, drawn as MX crosses."""
 from __future__ import annotations
 
-import functools
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
@@ -15,7 +14,6 @@ from mlgshimmy.figures.fig11.plane import (F_MAX, F_MIN, FREEPLAY, GEOMETRY, V_M
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import kappa_criterion
-from mlgshimmy.shared.stage_switch import stage_switch_window
 
 # MX ends of two curves of one kind closer than this (in V/V_MAX and
 # F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
@@ -153,12 +151,6 @@ def _mx_ends(curves, switch):
                 end = {"V": float(branch["V"][i]), "Fstar": float(branch["Fstar"][i])}
                 if in_plane(end) and not inside(switch, end["Fstar"]):
                     yield end, branch, i
-
-
-@functools.lru_cache(maxsize=None)
-def stage_switch() -> Optional[Tuple[float, float]]:
-    """The stage-switch window of the plane's loads (inside)."""
-    return stage_switch_window(F_MIN, F_MAX, SWITCH_WIDTHS, **GEOMETRY)
 
 
 def inside(switch: Optional[Tuple[float, float]], Fstar: float) -> bool:

@@ -7,7 +7,6 @@ from typing import Any, Dict, List, Mapping, Sequence, Tuple
 
 import numpy
 
-from mlgshimmy.figures.fig11 import ends
 from mlgshimmy.figures.fig11.plane import (FREEPLAY, GEOMETRY, MODEL, F_GRID, F_MAX, F_MIN, SLICES, V_GRID, V_MAX, V_MIN, V_SCAN)
 from mlgshimmy.shared import runerror
 from mlgshimmy.shared import branches
@@ -106,16 +105,6 @@ def straight_rolling_stable(parameter_set: str = "figures") -> numpy.ndarray:
 
 
 ORBIT_COLUMNS = ("V", "freq", "psi_amp")
-# The slices' largest orbit step: twice Fig. 10's (ct.SPEED_ORBIT_STEPS, made
-# for its plots; the large family's runs take 5).  Two thirds of a slice's
-# steps were at Fig. 10's 1.0; at 2.0 the slices cost 35-45 % less, with the
-# same folds and their torus crossings within 0.6 m/s (all 23 slices at
-# rho = 20, mu = 5 deg).  Inside the oleo's stage switch the orbits fold
-# within fractions of a m/s, and a branch at 2.0 turned back along itself
-# there: those slices keep Fig. 10's step.  So does the paper's gear, whose
-# reference set was made with it: its slices' folds start the upper fold
-# curves, and at 2.0 their start data moved by up to 2.9e-5 (relative).
-SLICE_DSMAX = 2.0
 
 
 def slice_rundir(Fstar: float) -> str:
@@ -127,14 +116,11 @@ def slice_diagram(Fstar: float, parameter_set: str = "figures") -> Dict[str, Any
     its folds of high-frequency orbits [(run name, label)] (to start fold
     curves from)."""
     print(f"fig11: slice F* = {Fstar:.4f}")
-    coarser = not (gear.current().geometry.baseline or ends.inside(ends.stage_switch(), Fstar))
-    steps = {"DSMAX": SLICE_DSMAX} if coarser else {}
     diagram = ct.speed_diagram(slice_rundir(Fstar), parameter_set, {"Fstar": Fstar, **MODEL},
                                V_SCAN, allow_failed=True, figure="fig11",
                                state=ROLLING and (lambda V: ROLLING(Fstar, parameter_set)),
                                **{**ct.SPEED_ORBIT_STEPS,
-                                  **ct.geometry_orbit_steps(gear.current().geometry.baseline),
-                                  **steps})
+                                  **ct.geometry_orbit_steps(gear.current().geometry.baseline)})
     return {"branches": [b for run in diagram.branches
                          for b in jobs.stored(run, ORBIT_COLUMNS)],
             "folds": [(diagram.name_of(run), lab) for run, lab, _, _ in diagram.folds()

@@ -9,7 +9,7 @@ from typing import Any, Collection, Dict, List, Mapping, Sequence, Tuple
 import numpy
 
 from mlgshimmy.figures.fig11 import ends
-from mlgshimmy.figures.fig11.ends import stage_switch
+from mlgshimmy.figures.fig11.curves import stage_switch
 from mlgshimmy.figures.fig11.orbits import large_upwards, slice_rundir
 from mlgshimmy.figures.fig11.plane import MODEL, SLICES, V_MAX, V_MIN, on_curves
 from mlgshimmy.shared import runerror
