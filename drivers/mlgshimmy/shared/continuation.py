@@ -152,7 +152,7 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
             bd = autoglue.run(rundir, f"{name}_probe", constants=files, e=model, **options)
         except runerror.RunError:
             return False
-        return not bd("MX")
+        return all(ends.explains(p, kw["ICP"][0]) for p in bd("MX"))   # an end it explains passes
     probe = passes if ends is not None and ends.probe else None
     return with_ladder(attempt, own, f"run {name}", keep_mx=kw.get("allow_mx") is True,
                        keep_last=ends is not None and ends.keep, passes=probe)
@@ -370,7 +370,8 @@ class Ends:
 
 
 # A rung tried from a stop (Ends.probe) gets past it if it makes this many
-# steps from there without MX (or ends on the run's stops, UZ).  A rung that
+# steps from there without an MX the Ends does not explain (or ends on the
+# run's stops, UZ).  A rung that
 # stops where the run stopped costs a few steps instead of the whole branch
 # up to there (at rho = -20, mu = -10 deg a fold curve of Fig. 11 needs the
 # five times finer mesh: 81 s on the three rungs before it).
