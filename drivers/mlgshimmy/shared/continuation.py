@@ -118,11 +118,17 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
         merged = autoglue.read_constants(files)
         return {key: kw.get(key, merged[key]) for key in STEP_CONSTANTS}
 
-    def attempt(mx, **rung):
-        options = {**kw, "allow_mx": mx or ends is not None, **rung}
+    def options(allow_mx, rung):
+        """The run's keywords with a rung's constants, its CPU guard scaled
+        by the rung's cost."""
+        out = {**kw, "allow_mx": allow_mx, **rung}
         if rung and kw.get("time_limit"):
-            options["time_limit"] = kw["time_limit"] * rung_cost(own(), rung)
-        bd = autoglue.run(rundir, name, constants=files, e=model, **options)
+            out["time_limit"] = kw["time_limit"] * rung_cost(own(), rung)
+        return out
+
+    def attempt(mx, **rung):
+        bd = autoglue.run(rundir, name, constants=files, e=model,
+                          **options(mx or ends is not None, rung))
         stops = [p for p in bd("MX") if not ends.explains(p, kw["ICP"][0])] if ends else []
         if stops and not mx:
             error = runerror.RunError(
@@ -145,11 +151,9 @@ def run(rundir: str, name: str, kind: Optional[str] = None, overlay: Optional[st
         """Whether the rung's constants get past the stop of the run that
         raised `error` (AUTO's last converged point there), PROBE_STEPS
         steps from it (run <name>_probe)."""
-        options = {**kw, "allow_mx": True, **rung, "data": error.stop, "NMX": PROBE_STEPS}
-        if kw.get("time_limit"):
-            options["time_limit"] = kw["time_limit"] * rung_cost(own(), rung)
         try:
-            bd = autoglue.run(rundir, f"{name}_probe", constants=files, e=model, **options)
+            bd = autoglue.run(rundir, f"{name}_probe", constants=files, e=model,
+                              **{**options(True, rung), "data": error.stop, "NMX": PROBE_STEPS})
         except runerror.RunError:
             return False
         return all(ends.explains(p, kw["ICP"][0]) for p in bd("MX"))   # an end it explains passes
@@ -371,10 +375,10 @@ class Ends:
 
 # A rung tried from a stop (Ends.probe) gets past it if it makes this many
 # steps from there without an MX the Ends does not explain (or ends on the
-# run's stops, UZ).  A rung that
-# stops where the run stopped costs a few steps instead of the whole branch
-# up to there (at rho = -20, mu = -10 deg a fold curve of Fig. 11 needs the
-# five times finer mesh: 81 s on the three rungs before it).
+# run's stops, UZ).  A rung that stops where the run stopped costs a few
+# steps instead of the whole branch up to there (at rho = -20, mu = -10 deg
+# a fold curve of Fig. 11 needs the five times finer mesh: 81 s on the
+# three rungs before it).
 PROBE_STEPS = 10
 
 

@@ -53,17 +53,22 @@ def tongue_parts() -> Dict[str, Any]:
 TONGUE_TOL = 0.002     # on_curves distance of a point on the tongue edge (~1 m/s in V)
 
 
+def placed_tr(rundir: str, found: Tuple[Any, Sequence[Any]], index: int = 0,
+              tr_name: str = "tr") -> Any:
+    """AUTO's TR label at a torus point of an orbit diagram in V (found:
+    (diagram, crossings); the first, or crossings[index]): torus.tr_point as
+    run tr_name."""
+    orbits, torus_points = found
+    return torus.tr_point(rundir, tr_name, orbits, torus_points[index]["value"],
+                          torus_points[index]["slope_per_unit"],
+                          torus_points[index].get("between"))
+
+
 def first_torus_curve(rundir: str, name: str, found: Tuple[Any, Sequence[Any]], index: int = 0,
                       tr_name: str = "tr", **options: Any) -> Any:
-    """A torus point of an orbit diagram in V (found: (diagram, crossings);
-    the first, or torus_points[index]) continued both ways by AUTO
-    (torus.tr_point as run tr_name, torus.torus_curve with its options:
-    steps, ntst)."""
-    orbits, torus_points = found
-    tr = torus.tr_point(rundir, tr_name, orbits, torus_points[index]["value"],
-                        torus_points[index]["slope_per_unit"],
-                        torus_points[index].get("between"))
-    return torus.torus_curve(rundir, name, tr, **options)
+    """A torus point of an orbit diagram in V (placed_tr) continued both
+    ways by AUTO (torus.torus_curve with its options: steps, ntst)."""
+    return torus.torus_curve(rundir, name, placed_tr(rundir, found, index, tr_name), **options)
 
 
 def crossing_kinds(crossings: Sequence[Any]) -> List[str]:
@@ -115,8 +120,7 @@ def found_curves(large_loads: Collection[float]) -> Dict[str, Any]:
                     steps = (SWITCH_CURVE_STEPS if kind == "tongue"
                              and ends.inside(stage_switch(), Fstar) else torus.CURVE_STEPS)
                     try:
-                        tr = torus.tr_point(rundir, f"tr{k}", found[0], c["value"],
-                                            c["slope_per_unit"], c.get("between"))
+                        tr = placed_tr(rundir, found, index, f"tr{k}")
                         if on_curves({"V": tr["V"], "Fstar": Fstar}, drawn(), TONGUE_TOL):
                             # AUTO's TR lies on a curve already continued (two
                             # crossings of one step, placed at one label)
