@@ -33,7 +33,7 @@ def run_starts(monkeypatch, tmp_path, found):
         return ([{"V": [tr["V"], tr["V"] + 1e-3], "Fstar": [tr["Fstar"]] * 2}],)   # one run
     monkeypatch.setattr(tori.torus, "tr_point", tr_point)
     monkeypatch.setattr(tori.torus, "torus_curve", torus_curve)
-    monkeypatch.setattr(tori.jobs, "stored", lambda run, _columns: run)
+    monkeypatch.setattr(tori.jobs, "stored", lambda run, _columns, _at_mx: run)
     tori.found_curves(set())
     return started
 

@@ -22,7 +22,7 @@ def test_two_crossings_placed_at_one_tr_label_start_one_curve(monkeypatch, capsy
                         {"V": 131.25, "Fstar": 0.6875, "name": name})
     monkeypatch.setattr(tori.torus, "torus_curve",
                         lambda rundir, name, tr, steps: continued.append(name) or (edge,))
-    monkeypatch.setattr(tori.jobs, "stored", lambda run, columns: list(run))
+    monkeypatch.setattr(tori.jobs, "stored", lambda run, columns, _at_mx: list(run))
     found = tori.found_curves(set())
     assert continued == ["tongue1"], continued
     assert len(found["tongue"]) == 1 and found["points"] == [], found

@@ -1,6 +1,7 @@
 """The oleo's stage switch seen from the loads: where straight rolling's
-static compression eta* crosses it, and the loads across it that the
-kappa* minimum must also evaluate (its stiffness is steepest there)."""
+static compression eta* crosses it, the loads across it that the kappa*
+minimum must also evaluate (its stiffness is steepest there), and how near
+an orbit's extremes of compression come to it."""
 from __future__ import annotations
 
 from typing import Any, List, Optional, Sequence, Tuple
@@ -65,3 +66,17 @@ def stage_switch_loads(loads: Sequence[float], parameter_set: str = "figures",
         # up jumps across it, and Newton lands on either side or fails there
         return []
     return loads
+
+
+def extremes_from_switch(solution: Any, parameter_set: str = "figures", **model: Any) -> float:
+    """How near an orbit (an AUTO solution: its first states those of the
+    model, in mlgmodel.UNAMES order) comes to the oleo's stage switch at its
+    largest or smallest strut compression: the lesser |k_stage (eta - eta_s)|
+    of the two, in switch widths 1 / k_stage.  Where an extreme lies within
+    a few widths, the spring's stiffness changes by orders of magnitude over
+    the part of the cycle near it, and a small change of the parameters
+    moves the orbit into or out of the switch (a grazing)."""
+    constants = mlgmodel.Model(parameter_set, **model)
+    eta = numpy.asarray(solution.coordarray[mlgmodel.UNAMES.index("eta")], dtype=float)
+    return float(min(abs(constants["k_stage"] * (x - constants["eta_stage"]))
+                     for x in (eta.max(), eta.min())))

@@ -111,6 +111,7 @@ def compute(parts: Mapping[str, Any]) -> Dict[str, Any]:
     print(f"fig11: {check['disagree']} of {check['samples']} slice samples disagree with "
           "their region's label")
     for kind, why in (("stage_switch", "inside the oleo stage switch"),
+                      ("orbit_switch", "where its orbit grazes the oleo stage switch"),
                       ("generalised_hopf", "at a located generalised Hopf point"),
                       ("on_fold", "on a fold curve"),
                       ("liftoff", "at the lift-off edge"), ("open", "")):
@@ -130,6 +131,7 @@ def compute(parts: Mapping[str, Any]) -> Dict[str, Any]:
             **({"stationary_folds": stored["stationary_folds"]}
                if "stationary_folds" in stored else {}),
             "mx_stops": ends["open"], "stage_switch_ends": ends["stage_switch"],
+            "orbit_switch_ends": ends["orbit_switch"],
             "liftoff_ends": ends["liftoff"], "stage_switch": switch,
             "generalised_hopf_ends": ends["generalised_hopf"], "on_fold_ends": ends["on_fold"],
             "edge_curves": edges, "region_check": check,
@@ -179,6 +181,7 @@ def numbers(pitchforks: Sequence[float], stored: Mapping[str, Any], drawn: Mappi
                 "slice samples off their region": check["disagree"],
                 "MX stops on drawn curves": len(ends["open"]),
                 "curve ends inside the stage switch": len(ends["stage_switch"]),
+                "curve ends where its orbit grazes the stage switch": len(ends["orbit_switch"]),
                 "fold curve ends at a generalised Hopf point": len(ends["generalised_hopf"]),
                 "torus curve ends on a fold curve": len(ends["on_fold"]),
                 "curve ends at the lift-off edge": len(ends["liftoff"])})

@@ -212,7 +212,8 @@ def slice_hopf_curves(parts: Mapping[str, Any]) -> Dict[str, Any]:
 
 def stored_curves() -> Dict[str, Any]:
     out = curves(paths.rundir("fig11/curves"))
-    return {**{kind: [jobs.stored(d, ("V", "Fstar")) for d in out[kind]]
+    return {**{kind: [jobs.stored(d, ("V", "Fstar"), ends.orbit_at_switch if kind == "fold"
+                                  else None) for d in out[kind]]
                for kind in ("hopf", "fold", "zero")},
             **{k: out[k] for k in ("pitchfork", "stationary_folds") if k in out}}
 
@@ -222,4 +223,4 @@ def upper_fold_curves(parts: Mapping[str, Any]) -> Dict[str, Any]:
     stored: {"curves": [stored diagrams]}."""
     upper = upper_folds(paths.rundir("fig11/upper_folds"), parts["curves"]["fold"],
                         {Fstar: parts[f"slice_{Fstar:.4f}"]["folds"] for Fstar in SLICES})
-    return {"curves": [jobs.stored(d, ("V", "Fstar")) for d in upper]}
+    return {"curves": [jobs.stored(d, ("V", "Fstar"), ends.orbit_at_switch) for d in upper]}

@@ -1,19 +1,21 @@
 """Where Fig. 11's drawn curves end inside the plane (AUTO's MX stops):
 two curves of one kind meeting at one point (mx_ends), an end inside the
-oleo's stage switch, a fold curve's end at a generalised Hopf point, a
-torus curve's end on a fold curve, an end at the lift-off edge
-(explained), and the others, drawn as MX crosses."""
+oleo's stage switch, an orbit curve's end where its orbit reaches the
+switch, a fold curve's end at a generalised Hopf point, a torus curve's
+end on a fold curve, an end at the lift-off edge (explained), and the
+others, drawn as MX crosses."""
 from __future__ import annotations
 
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
-from mlgshimmy.figures.fig11.plane import (F_MAX, F_MIN, FREEPLAY, GEOMETRY, V_MAX, V_MIN,
-                                           on_curves)
+from mlgshimmy.figures.fig11.plane import (F_MAX, F_MIN, FREEPLAY, GEOMETRY, MODEL, V_MAX,
+                                           V_MIN, on_curves)
 from mlgshimmy.shared import branches
 from mlgshimmy.shared import jobs
 from mlgshimmy.shared import kappa_criterion
+from mlgshimmy.shared import stage_switch
 
 # MX ends of two curves of one kind closer than this (in V/V_MAX and
 # F*/F_MAX) are one point where they meet: the Hopf curves from H1 and H2
@@ -42,7 +44,8 @@ def mx_ends(drawn: Mapping[str, Any]) -> Tuple[List[Dict[str, Any]], List[Dict[s
     [{"V", "Fstar", "kind", "curves"}], and the others [{"V", "Fstar",
     "curve"}]."""
     ends = [{"V": branch["V"][i], "Fstar": branch["Fstar"][i], "kind": kind,
-             "curve": f"{kind}{n + 1}"}
+             "curve": f"{kind}{n + 1}",
+             **({"switch": branch.at_mx[i]} if i in getattr(branch, "at_mx", {}) else {})}
             for kind in ("hopf", "fold", "torus", "tongue")
             for n, diagram in enumerate(drawn.get(kind, []))
             for branch in jobs.loaded(diagram)
@@ -58,7 +61,7 @@ def mx_ends(drawn: Mapping[str, Any]) -> Tuple[List[Dict[str, Any]], List[Dict[s
                 used |= {a, b}
                 joins.append({"V": 0.5 * (p["V"] + q["V"]), "Fstar": 0.5 * (p["Fstar"] + q["Fstar"]),
                               "kind": p["kind"], "curves": [p["curve"], q["curve"]]})
-    return joins, [{k: e[k] for k in ("V", "Fstar", "curve")}
+    return joins, [{k: e[k] for k in ("V", "Fstar", "curve", "switch") if k in e}
                    for n, e in enumerate(ends) if n not in used]
 
 
@@ -68,6 +71,19 @@ def mx_ends(drawn: Mapping[str, Any]) -> Tuple[List[Dict[str, Any]], List[Dict[s
 # geometries run).  AUTO's step falls below DSMIN there: the H3 Hopf curve
 # stops at F* = 0.6949 (rho = mu = 10 deg, |eta* - eta_s| = 3.0 / k_stage)
 SWITCH_WIDTHS = 10.0
+
+
+def orbit_at_switch(solution: Any) -> float:
+    """How near the orbit `solution` of the plane's model comes to the
+    stage switch with an extreme of its compression, in switch widths
+    (stage_switch.extremes_from_switch): stored with each MX end of an
+    orbit curve (jobs.stored's at_mx).  Within SWITCH_WIDTHS the orbit
+    grazes the switch there (rho = -20, mu = -10 deg: a tongue edge stops
+    at (462.86 m/s, F* = 0.9423) with its largest compression 0.6 widths
+    into the switch; along V from there the orbit leaves the switch within
+    0.17 m/s and its critical Floquet pair falls from |mu| = 1.000 to 0.944
+    within 0.12 m/s)."""
+    return stage_switch.extremes_from_switch(solution, **MODEL)
 # An MX end this close (in V/V_MAX, F*/F_MAX) to the lift-off edge is the
 # curve reaching it: at rho = mu = 10 deg the torus curve stops 5 m/s short
 # of the edge, its orbit's least tyre load 2.5 kN (beyond the edge the
@@ -184,17 +200,22 @@ def explained(stops: Sequence[Mapping[str, Any]], switch: Optional[Tuple[float, 
               ) -> Dict[str, List[Dict[str, Any]]]:
     """The MX ends that are no two curves' meeting (mx_ends' open list)
     sorted: {"stage_switch": those with F* inside the window `switch`
-    ((F*_enter, F*_leave) or None), "generalised_hopf": ends of fold curves
+    ((F*_enter, F*_leave) or None), "orbit_switch": ends whose orbit has an
+    extreme of compression within SWITCH_WIDTHS of the switch (the end's
+    "switch", orbit_at_switch), "generalised_hopf": ends of fold curves
     where the predicate `at_gh` holds (on_hopf_locus while a curve is
     continued; within FOLD_TOL of a located GH point in the figure,
     located.at_gh; None: no fold end is),
     "on_fold": ends of torus curves within FOLD_TOL of a fold curve
     (`folds`: lists of branches), "liftoff": those within CLOSE_TOL of the
     lift-off edge `lift` (liftoff_edge, or None), "open": the rest}."""
-    out = {"stage_switch": [], "generalised_hopf": [], "on_fold": [], "liftoff": [], "open": []}
+    out = {"stage_switch": [], "orbit_switch": [], "generalised_hopf": [], "on_fold": [],
+           "liftoff": [], "open": []}
     for stop in stops:
         if inside(switch, stop["Fstar"]):
             out["stage_switch"].append(stop)
+        elif stop.get("switch", numpy.inf) <= SWITCH_WIDTHS:
+            out["orbit_switch"].append(stop)
         elif stop["curve"].startswith("fold") and at_gh and at_gh(stop):
             out["generalised_hopf"].append(stop)
         elif stop["curve"].startswith(("torus", "tongue")) and on_curves(stop, folds, FOLD_TOL):

@@ -71,6 +71,13 @@ def first_torus_curve(rundir: str, name: str, found: Tuple[Any, Sequence[Any]], 
     return torus.torus_curve(rundir, name, placed_tr(rundir, found, index, tr_name), **options)
 
 
+def stored_curve(curve: Sequence[Any]) -> List[Any]:
+    """A torus curve's runs as stored branches of TORUS_COLUMNS, each MX end
+    with how near its orbit comes to the stage switch (ends.orbit_at_switch)."""
+    return [branch for run in curve
+            for branch in jobs.stored(run, TORUS_COLUMNS, ends.orbit_at_switch)]
+
+
 def crossing_kinds(crossings: Sequence[Any]) -> List[str]:
     """"tongue" for each crossing that opens or closes a window (a loss of
     stability regained further up, torus.windows), "torus" for a loss never
@@ -137,8 +144,7 @@ def found_curves(large_loads: Collection[float]) -> Dict[str, Any]:
                 points.append(point)
     print(f"fig11: {len(out['torus'])} torus and {len(out['tongue'])} tongue curves found; "
           f"{len(points)} torus points on none", flush=True)
-    stored = {kind: [[b for run in curve for b in jobs.stored(run, TORUS_COLUMNS)]
-                     for curve in curves] for kind, curves in out.items()}
+    stored = {kind: [stored_curve(curve) for curve in curves] for kind, curves in out.items()}
     return {"curves": stored["torus"], "tongue": stored["tongue"], "points": points}
 
 
@@ -159,8 +165,7 @@ def torus_curves(large: Mapping[str, Any]) -> Dict[str, Any]:
                "direction": c["direction"]}
               for Fstar in TORUS_POINT_LOADS for c in found[Fstar][1]
               if not on_curves({"V": c["value"], "Fstar": Fstar}, curve)]
-    return {"curves": [[branch for run in curve for branch in jobs.stored(run, TORUS_COLUMNS)]],
-            "points": points}
+    return {"curves": [stored_curve(curve)], "points": points}
 
 
 def tongue_curve(part: str) -> Dict[str, Any]:
@@ -172,7 +177,7 @@ def tongue_curve(part: str) -> Dict[str, Any]:
     Fstar, index, options = TONGUE_EDGES[part]
     curve = first_torus_curve(paths.rundir(f"fig11/{part}"), "tongue", large_upwards(Fstar),
                               index, **options)
-    return {"curves": [[branch for run in curve for branch in jobs.stored(run, TORUS_COLUMNS)]]}
+    return {"curves": [stored_curve(curve)]}
 
 
 BEYOND = 1.1 * V_MAX   # a slice that no torus curve crosses below V_MAX

@@ -218,13 +218,15 @@ def read(figure: str, part: Optional[str] = None, root: Optional[str] = None,
 class Branch:
     """A stored AUTO branch read back: columns by name (numpy arrays), and
     stability() and labels as a parseB branch has them, so the helpers of
-    `branches` and `draw` take either."""
+    `branches` and `draw` take either; at_mx {point index: number} as
+    stored() kept it ({} if none)."""
 
     def __init__(self, record: dict):
         self.columns = {k: numpy.asarray(v, dtype=float) for k, v in record["columns"].items()}
         self.coordnames = list(self.columns)
         self._stable = numpy.asarray(record["stable"], dtype=bool)
         self.labels = _Labels(record["labels"])
+        self.at_mx = {int(i): v for i, v in record.get("at_mx", {}).items()}
 
     def __getitem__(self, name: str) -> numpy.ndarray:
         return self.columns[name]
@@ -257,13 +259,23 @@ class _Labels:
         return self._at[index]
 
 
-def stored(diagram: Any, columns: Sequence[str]) -> list:
+def stored(diagram: Any, columns: Sequence[str],
+           at_mx: Optional[Callable[[Any], float]] = None) -> list:
     """The branches of an AUTO diagram (a bifDiag or a list of branches) as
-    records of the given columns (those a branch lacks are left out)."""
-    return [{"columns": {c: numpy.asarray(b[c]) for c in columns if c in b.coordnames},
-             "stable": branches.stable_mask(b),
-             "labels": [list(p) for p in branches.labelled_points(b)]}
-            for b in diagram]
+    records of the given columns (those a branch lacks are left out).
+    at_mx(solution): a number of the solution at each MX point, kept as
+    "at_mx" {point index: number} (why a curve stopped there can depend on
+    the orbit, not only on its place in the parameters)."""
+    out = []
+    for b in diagram:
+        record = {"columns": {c: numpy.asarray(b[c]) for c in columns if c in b.coordnames},
+                  "stable": branches.stable_mask(b),
+                  "labels": [list(p) for p in branches.labelled_points(b)]}
+        if at_mx is not None:
+            record["at_mx"] = {str(i): at_mx(b(lab))
+                               for i, lab, _ in branches.labelled_points(b, "MX")}
+        out.append(record)
+    return out
 
 
 def loaded(records: Sequence[Mapping[str, Any]]) -> list:
