@@ -71,3 +71,13 @@ def test_an_end_without_its_orbit_stays_open():
     by its place alone."""
     stop = {"V": 462.86, "Fstar": 0.9423, "curve": "tongue1"}
     assert ends.explained([stop], None, None)["open"] == [stop]
+
+
+def test_a_more_particular_cause_comes_first():
+    """A torus curve's end on a fold curve (ends.FOLD_TOL) stays "on_fold"
+    even where its orbit also grazes the switch."""
+    fold = [jobs.Branch({"columns": {"V": [60.0, 63.4, 70.0], "Fstar": [0.03, 0.0307, 0.032]},
+                         "stable": [False] * 3, "labels": []})]
+    stop = {"V": 63.4, "Fstar": 0.0307, "curve": "torus2", "switch": 0.5}
+    found = ends.explained([stop], None, None, [fold])
+    assert found["on_fold"] == [stop] and not found["orbit_switch"]

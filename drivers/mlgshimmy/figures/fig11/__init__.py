@@ -111,10 +111,11 @@ def compute(parts: Mapping[str, Any]) -> Dict[str, Any]:
     print(f"fig11: {check['disagree']} of {check['samples']} slice samples disagree with "
           "their region's label")
     for kind, why in (("stage_switch", "inside the oleo stage switch"),
-                      ("orbit_switch", "where its orbit grazes the oleo stage switch"),
                       ("generalised_hopf", "at a located generalised Hopf point"),
                       ("on_fold", "on a fold curve"),
-                      ("liftoff", "at the lift-off edge"), ("open", "")):
+                      ("liftoff", "at the lift-off edge"),
+                      ("orbit_switch", "where its orbit grazes the oleo stage switch"),
+                      ("open", "")):
         for stop in ends[kind]:
             print(f"{'' if why else 'REPORTED: '}fig11 {stop['curve']} stops (MX) "
                   f"{why + ' ' if why else ''}at V = {stop['V']:.4g}, F* = {stop['Fstar']:.4g}")
@@ -181,10 +182,10 @@ def numbers(pitchforks: Sequence[float], stored: Mapping[str, Any], drawn: Mappi
                 "slice samples off their region": check["disagree"],
                 "MX stops on drawn curves": len(ends["open"]),
                 "curve ends inside the stage switch": len(ends["stage_switch"]),
-                "curve ends where its orbit grazes the stage switch": len(ends["orbit_switch"]),
                 "fold curve ends at a generalised Hopf point": len(ends["generalised_hopf"]),
                 "torus curve ends on a fold curve": len(ends["on_fold"]),
-                "curve ends at the lift-off edge": len(ends["liftoff"])})
+                "curve ends at the lift-off edge": len(ends["liftoff"]),
+                "curve ends where its orbit grazes the stage switch": len(ends["orbit_switch"])})
     out.update({f"{kind} points on the Hopf curves": sum(p["type"] == kind for p in special)
                 for kind in codim2.TYPES})
     return out

@@ -200,28 +200,29 @@ def explained(stops: Sequence[Mapping[str, Any]], switch: Optional[Tuple[float, 
               ) -> Dict[str, List[Dict[str, Any]]]:
     """The MX ends that are no two curves' meeting (mx_ends' open list)
     sorted: {"stage_switch": those with F* inside the window `switch`
-    ((F*_enter, F*_leave) or None), "orbit_switch": ends whose orbit has an
-    extreme of compression within SWITCH_WIDTHS of the switch (the end's
-    "switch", orbit_at_switch), "generalised_hopf": ends of fold curves
+    ((F*_enter, F*_leave) or None), "generalised_hopf": ends of fold curves
     where the predicate `at_gh` holds (on_hopf_locus while a curve is
     continued; within FOLD_TOL of a located GH point in the figure,
     located.at_gh; None: no fold end is),
     "on_fold": ends of torus curves within FOLD_TOL of a fold curve
     (`folds`: lists of branches), "liftoff": those within CLOSE_TOL of the
-    lift-off edge `lift` (liftoff_edge, or None), "open": the rest}."""
+    lift-off edge `lift` (liftoff_edge, or None), "orbit_switch": of the
+    others, those whose orbit has an extreme of compression within
+    SWITCH_WIDTHS of the switch (the end's "switch", orbit_at_switch: a
+    cause less particular than those above), "open": the rest}."""
     out = {"stage_switch": [], "orbit_switch": [], "generalised_hopf": [], "on_fold": [],
            "liftoff": [], "open": []}
     for stop in stops:
         if inside(switch, stop["Fstar"]):
             out["stage_switch"].append(stop)
-        elif stop.get("switch", numpy.inf) <= SWITCH_WIDTHS:
-            out["orbit_switch"].append(stop)
         elif stop["curve"].startswith("fold") and at_gh and at_gh(stop):
             out["generalised_hopf"].append(stop)
         elif stop["curve"].startswith(("torus", "tongue")) and on_curves(stop, folds, FOLD_TOL):
             out["on_fold"].append(stop)
         elif lift and nearest_point(stop, lift)[0] < CLOSE_TOL:
             out["liftoff"].append(stop)
+        elif stop.get("switch", numpy.inf) <= SWITCH_WIDTHS:
+            out["orbit_switch"].append(stop)
         else:
             out["open"].append(stop)
     return out

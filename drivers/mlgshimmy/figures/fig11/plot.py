@@ -28,14 +28,14 @@ ENDS = (("mx_joins", "hopf", JOIN_LABELS["hopf"]),
         ("mx_joins", "hopf_elsewhere", JOIN_LABELS["hopf_elsewhere"]),
         ("mx_joins", "tongue", JOIN_LABELS["tongue"]),
         ("stage_switch_ends", None, "the curve stops inside the oleo's stage switch"),
-        ("orbit_switch_ends", None, "the curve stops where its orbit grazes the oleo's stage "
-                                    "switch (its largest or smallest compression within "
-                                    f"{SWITCH_WIDTHS:g} switch widths of it)"),
         ("generalised_hopf_ends", None, "a fold curve ends on the Hopf curve (a generalised "
                                         "Hopf point: its orbits shrink to straight rolling)"),
         ("on_fold_ends", None, "a torus curve ends on a fold curve (its Floquet pair meets "
                                "the fold's multiplier 1)"),
         ("liftoff_ends", None, "the curve ends at the lift-off edge (a wheel lifts off beyond)"),
+        ("orbit_switch_ends", None, "the curve stops where its orbit grazes the oleo's stage "
+                                    "switch (its largest or smallest compression within "
+                                    f"{SWITCH_WIDTHS:g} switch widths of it)"),
         ("mx_stops", None, "AUTO stopped the continuation (MX) for no reason found"))
 
 
