@@ -52,3 +52,33 @@ def test_a_point_two_curves_locate_is_listed_once():
     zh = {**GH, "type": "ZH"}
     assert located.distance(GH, twin) < located.SAME
     assert located.once([GH, twin, zh]) == [GH, zh]
+
+
+def line(a, b, n):
+    """n points from a to b, (V, F*) pairs."""
+    return [(a[0] + (b[0] - a[0]) * k / (n - 1), a[1] + (b[1] - a[1]) * k / (n - 1))
+            for k in range(n)]
+
+
+def stored(points, label="EP"):
+    Vs, Fs = zip(*points)
+    return {"columns": {"V": list(Vs), "Fstar": list(Fs)}, "stable": [True] * len(Vs),
+            "labels": [[len(Vs) - 1, 9, label]]}
+
+
+def test_a_fold_curve_that_retraces_itself_past_a_gh_point_is_cut_there():
+    """fold1+ runs from its start (100, 1.0) down to the GH point at
+    (110, 0.8), back through its start and on to (50, 2.0), where fold1-
+    ends too: cut at the GH point, which becomes its MX end; fold1- and a
+    curve that passes the GH point into new ground stay whole."""
+    start, gh, edge = (100.0, 1.0), (GH["V"], GH["Fstar"]), (50.0, 2.0)
+    gh_point = dict(GH)
+    plus = stored(line(start, gh, 11) + line(gh, start, 11)[1:] + line(start, edge, 21)[1:])
+    minus = stored(line(start, edge, 21))
+    onward = stored(line((90.0, 1.2), gh, 6) + line(gh, (300.0, 0.3), 30)[1:])
+    out = located.retraced_past_gh([[plus, minus], [onward]], [gh_point], ends.FOLD_TOL)
+    cut = out[0][0]
+    assert len(cut["columns"]["V"]) == 11
+    assert (cut["columns"]["V"][-1], cut["columns"]["Fstar"][-1]) == pytest.approx(gh)
+    assert cut["labels"][-1] == [10, 9, "MX"]
+    assert out[0][1] is minus and out[1][0] is onward

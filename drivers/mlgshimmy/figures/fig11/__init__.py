@@ -90,6 +90,7 @@ def compute(parts: Mapping[str, Any]) -> Dict[str, Any]:
     switch = stage_switch()
     special = located.points(drawn)
     drawn["fold"] = located.past_gh(drawn["fold"], special, FOLD_TOL, switch)
+    drawn["fold"] = located.retraced_past_gh(drawn["fold"], special, FOLD_TOL)
     pitchforks = stored["pitchfork"][1] + stored.get("stationary_folds", [])
     lift = liftoff_edge([parts[f"liftoff_{Fstar:.2f}"] for Fstar in LIFTOFF_LOADS],
                         [parts[part]["Fstar"] for part in LIFTOFF_ENDS])

@@ -9,7 +9,7 @@ import numpy
 
 from mlgshimmy.figures.fig11.ends import BACK, in_plane, inside, nearest_point, on_hopf_locus
 from mlgshimmy.figures.fig11.orbits import ROLLING
-from mlgshimmy.figures.fig11.plane import F_MAX, GEOMETRY, MODEL, V_MAX
+from mlgshimmy.figures.fig11.plane import F_MAX, GEOMETRY, MODEL, V_MAX, distance as plane_distance
 from mlgshimmy.shared import codim2
 from mlgshimmy.shared import continuation as ct
 from mlgshimmy.shared import jobs
@@ -119,6 +119,49 @@ def past_gh(folds: Sequence[Any], located: Sequence[Mapping[str, Any]], tol: flo
                          "stable": record["stable"][:cut + 1],
                          "labels": [x for x in record["labels"] if x[0] < cut]
                          + [[cut, mx[-1][1], "MX"]]})
+        out.append(kept)
+    return out
+
+
+def retraced_past_gh(folds: Sequence[Any], located: Sequence[Mapping[str, Any]],
+                     tol: float) -> List[Any]:
+    """The fold curves (stored diagrams), each branch that passes within
+    `tol` of a located GH point after its start and from there on only
+    retraces fold curves drawn already (every later point within `tol` of
+    its own path up to the GH point or of another branch of `folds`), cut
+    at the GH point, which becomes its MX end (ends.explained then names
+    it).  At the GH point the orbits shrink to nothing; AUTO goes through
+    and back along the same curve, the orbits half a period shifted (rho =
+    20, mu = 5 deg: the fold curve from S2 down to the GH point at
+    (135.66 m/s, F* = 0.7785) and back through its start to V = 0.5 m/s,
+    where the other direction ends too): drawn twice over, a dashed curve
+    looks solid."""
+    gh = [p for p in located if p["type"] == "GH"]
+    everything = [record["columns"] for diagram in folds for record in diagram]
+    out = []
+    for n, diagram in enumerate(folds):
+        kept = []
+        for record in diagram:
+            columns = record["columns"]
+            cut = next((i for i in range(1, len(columns["V"]))
+                        if any(distance(p, {"V": columns["V"][i], "Fstar": columns["Fstar"][i]})
+                               < tol for p in gh)), None)
+            others = [c for c in everything if c is not columns]
+            if cut is None or cut == len(columns["V"]) - 1 or not all(
+                    min(plane_distance(point, c) for c in others
+                        + [{k: v[:cut + 1] for k, v in columns.items()}]) < tol
+                    for point in ({"V": columns["V"][i], "Fstar": columns["Fstar"][i]}
+                                  for i in range(cut + 1, len(columns["V"])))):
+                kept.append(record)
+                continue
+            print(f"fig11 fold{n + 1} passes the GH point at V = {columns['V'][cut]:.5g}, "
+                  f"F* = {columns['Fstar'][cut]:.5g} and retraces drawn fold curves after it: "
+                  "cut at the GH point")
+            label = max((x[1] for x in record["labels"]), default=0)
+            kept.append({"columns": {c: v[:cut + 1] for c, v in columns.items()},
+                         "stable": record["stable"][:cut + 1],
+                         "labels": [x for x in record["labels"] if x[0] < cut]
+                         + [[cut, label, "MX"]]})
         out.append(kept)
     return out
 
