@@ -42,6 +42,7 @@ NCPUS=${NCPUS:-$(nproc)}
 CTLD_PORT=${SLURMCTLD_PORT:-6817}
 SLURMD_PORT=${SLURMD_PORT:-6818}
 PACKAGES="slurm-wlm munge parallel"
+INSTALL_TRIES=3 INSTALL_WAIT=20   # apt-get tries, and seconds between them (install_packages)
 
 die() { echo "slurm-single-node: $*" >&2; exit 1; }
 
@@ -101,22 +102,34 @@ port_free() {   # true if nothing listens on 127.0.0.1:$1
     ! (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null
 }
 
-install_packages() {
+installed() {
     command -v slurmctld >/dev/null && command -v slurmd >/dev/null \
         && command -v munged >/dev/null && command -v mungekey >/dev/null \
-        && command -v parallel >/dev/null && return 0
+        && command -v parallel >/dev/null
+}
+
+install_packages() {
+    installed && return 0
     if [ "$(id -u)" != 0 ]; then
         echo "slurm-single-node: $PACKAGES are not installed and this is not root" >&2
         exit 77
     fi
     echo "slurm-single-node: installing $PACKAGES"
     export DEBIAN_FRONTEND=noninteractive
-    # the postinsts try invoke-rc.d start, which a container refuses: harmless, we start below
-    if ! { apt-get -o DPkg::Lock::Timeout=300 update -qq \
-           && apt-get -o DPkg::Lock::Timeout=300 install -y -qq $PACKAGES >/dev/null; }; then
-        echo "slurm-single-node: apt-get install $PACKAGES failed" >&2
-        exit 77
-    fi
+    # the postinsts try invoke-rc.d start, which a container refuses: harmless, we start below.
+    # Another apt-get (a second test worker installing the same packages) holds the lists
+    # lock, which DPkg::Lock::Timeout does not wait for: try again, up to INSTALL_TRIES times.
+    local try
+    for try in $(seq "$INSTALL_TRIES"); do
+        if apt-get -o DPkg::Lock::Timeout=300 update -qq \
+                && apt-get -o DPkg::Lock::Timeout=300 install -y -qq $PACKAGES >/dev/null; then
+            return 0
+        fi
+        installed && return 0
+        [ "$try" -lt "$INSTALL_TRIES" ] && sleep "$INSTALL_WAIT"
+    done
+    echo "slurm-single-node: apt-get install $PACKAGES failed ($INSTALL_TRIES tries)" >&2
+    exit 77
 }
 
 start() {
