@@ -87,8 +87,28 @@ def test_rungs_that_stop_where_the_run_stopped_are_not_run_again(capsys):
     assert continuation.with_ladder(attempt, OWN, "run fold_upper3-", keep_last=True,
                                     passes=passes) == "the whole curve"
     assert [c for _, c in calls] == [{}, {"NTST": 400}], calls
-    assert [V for V, _ in probed] == [501.2] * len(continuation.LADDER), probed
+    assert [V for V, _ in probed] == [501.2] * (len(continuation.LADDER) - 1), probed
     assert capsys.readouterr().out.count("stops where the run stopped too") == 3
+
+
+def test_the_last_rung_runs_from_the_start_whatever_its_probe():
+    """Every rung stops where the run stopped when tried from there (the
+    probes fail), yet the five times finer mesh, the last rung, runs the
+    branch from its start and completes it (rho = mu = 10 deg: the fold
+    curve that NTST 400 takes past (473.5 m/s, F* = 0.980))."""
+    stop = runerror.RunError("run fold_upper3- in x: no convergence (MX) at V = 473.5",
+                             kind=runerror.MX)
+    stop.diagram, stop.stop = "diagram up to the stop", {"V": 473.5, "Fstar": 0.98}
+    attempt, calls = attempts([stop, "the whole curve"])
+    probed = []
+
+    def passes(error, **constants):
+        probed.append(constants)
+        return False
+    assert continuation.with_ladder(attempt, OWN, "run fold_upper3-", keep_last=True,
+                                    passes=passes) == "the whole curve"
+    assert [c for _, c in calls] == [{}, {"NTST": 400}], calls
+    assert len(probed) == len(continuation.LADDER) - 1 and {"NTST": 400} not in probed
 
 
 def test_a_stop_without_its_point_is_not_probed():
