@@ -129,6 +129,26 @@ def test_parts_make_rules_run_each_part_after_what_it_needs(toy, run_root):
     assert order == ["a", "b", "sum", "twice"], proc.stdout + proc.stderr
 
 
+def test_parts_after_waits_for_parts_it_does_not_read(run_root):
+    """A part with `after` (jobs.Needs) is a later stage and an order-only
+    prerequisite in mk/parts.mk: listed first, it still runs after them."""
+    work = {"short": jobs.Needs((), lambda _: 1, after=["input"]), "input": lambda: 2,
+            "chain": jobs.Needs(["input"], lambda p: p["input"])}
+    parts = jobs.Parts("toy", work, "figures")
+    assert [parts.stage(n) for n in work] == [2, 1, 2]
+    rules = run_root / "toy" / "parts.mk"
+    rules.parent.mkdir()
+    rules.write_text(parts.make_rules())
+    assert f"short.json: | {run_root}/toy/parts/input.json" in rules.read_text()
+    proc = subprocess.run(["make", "-n", "-j1", "-f", "mk/parts.mk", "FIGURE=toy",
+                           f"MLG_RUN_ROOT={run_root}", "INPUTS="], cwd=paths.ROOT,
+                          capture_output=True, text=True)
+    assert re.findall(r"--part (\w+)", proc.stdout) == ["input", "short", "chain"], \
+        proc.stdout + proc.stderr
+    parts.compute("short")   # the serial assembly: nothing to read
+    assert jobs.read("toy", "short") == 1
+
+
 def test_parts_a_single_parts_run_refuses_to_compute_a_part_it_needs(toy):
     with pytest.raises(jobs.MissingResult) as error:
         toy.compute("sum", alone=True)

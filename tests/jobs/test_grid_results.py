@@ -155,29 +155,31 @@ def figure(*args, root):
 
 def test_a_staged_figure_prints_its_missing_parts_and_its_stages(tmp_path):
     """Fig. 11's parts come in three stages: the Hopf curves from the slices
-    (slice_hopf) read the fold curves of stage 2 (upper_folds)."""
+    (slice_hopf) read the fold curves of stage 2 (upper_folds), and the
+    lift-off edge's ends the lift-off speeds, which wait for the long
+    chains' inputs (stage 1) to leave the cores to those chains."""
     assert figure("stages", root=tmp_path).stdout.strip() == "3"
     beyond = figure("jobs", "--stage", "4", root=tmp_path)
     assert beyond.returncode != 0 and "--stage 4: its parts have stages 1 to 3" \
         in beyond.stderr, beyond.stderr
     third = [line.split()[-1] for line in
              figure("jobs", "--stage", "3", root=tmp_path).stdout.splitlines()]
-    assert third == ["slice_hopf"], third
+    assert third == ["slice_hopf", "liftoff_end_light", "liftoff_end_heavy"], third
     second = [line.split()[-1] for line in
               figure("jobs", "--stage", "2", root=tmp_path).stdout.splitlines()]
-    assert len(second) == 8 and "upper_folds" in second, second
+    assert len(second) == 15 and {"upper_folds", "grid", "liftoff_0.10"} <= set(second), second
     parts = tmp_path / "fig11" / "parts"
     parts.mkdir(parents=True)
     for name in second[:5]:
         (parts / f"{name}.json").write_text("{}")
     missing = figure("jobs", "--stage", "2", "--missing", root=tmp_path)
     assert [line.split()[-1] for line in missing.stdout.splitlines()] == second[5:]
-    assert "fig11: stage 2: 3 of 8 parts not cached" in missing.stderr, missing.stderr
+    assert "fig11: stage 2: 10 of 15 parts not cached" in missing.stderr, missing.stderr
     status = figure("status", root=tmp_path)
     assert status.returncode == 1, status.stdout
-    assert "fig11: stage 1: 0 of 33 parts cached" in status.stdout
-    assert "fig11: stage 2: 5 of 8 parts cached" in status.stdout
-    assert "fig11: stage 3: 0 of 1 parts cached" in status.stdout
+    assert "fig11: stage 1: 0 of 24 parts cached" in status.stdout
+    assert "fig11: stage 2: 5 of 15 parts cached" in status.stdout
+    assert "fig11: stage 3: 0 of 3 parts cached" in status.stdout
     assert f"missing  stage 2, index 6   {second[5]}: no " in status.stdout, status.stdout
     assert status.stdout.count("  missing  ") == 37
 

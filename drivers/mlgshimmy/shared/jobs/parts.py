@@ -12,13 +12,21 @@ from mlgshimmy.shared.jobs import cache
 
 class Needs:
     """A part that reads other parts: function(parts), run once the parts
-    named in `names` are cached (make runs it after them)."""
+    named in `names` are cached (make runs it after them).  `after`: parts
+    it waits for without reading them (make's order-only prerequisites, a
+    later stage): a short part that waits for the inputs of a long chain
+    leaves the cores to that chain's next part.  GNU make goes over the
+    part list in order, waiting for a free core at each part it can start,
+    and comes back to a part whose prerequisites were still running only
+    on its next pass; the short parts it meets first would run before it."""
 
-    def __init__(self, names: Iterable[str], function: Callable[[Any], Any]):
-        self.names, self.function = tuple(names), function
+    def __init__(self, names: Iterable[str], function: Callable[[Any], Any],
+                 after: Iterable[str] = ()):
+        self.names, self.function, self.after = tuple(names), function, tuple(after)
 
     def __repr__(self) -> str:
-        return f"Needs({list(self.names)})"
+        return f"Needs({list(self.names)}" + (f", after={list(self.after)})" if self.after
+                                              else ")")
 
 
 Job = Union[Callable[[], Any], Needs]
@@ -47,7 +55,8 @@ class Parts:
         job = self.jobs[name]
         if not isinstance(job, Needs):
             return 1
-        return 1 + max(self.stage(n, seen + (name,)) for n in job.names)
+        return 1 + max((self.stage(n, seen + (name,)) for n in job.names + job.after),
+                       default=0)
 
     def stages(self) -> int:
         return max(self.stage(name) for name in self.jobs)
@@ -81,11 +90,14 @@ class Parts:
 
     def make_rules(self) -> str:
         """mk/parts.mk's rules: PARTS, and each part's needs as the
-        prerequisites of its file."""
-        def file(name):
-            return cache.path(self.figure, name)
+        prerequisites of its file (those it waits for only as order-only
+        ones)."""
+        def files(names):
+            return " ".join(cache.path(self.figure, n) for n in names)
         lines = [f"PARTS := {' '.join(self.jobs)}"]
-        lines += [f"{file(name)}: {' '.join(file(n) for n in job.names)}"
+        lines += [f"{cache.path(self.figure, name)}:"
+                  + (f" {files(job.names)}" if job.names else "")
+                  + (f" | {files(job.after)}" if job.after else "")
                   for name, job in self.jobs.items() if isinstance(job, Needs)]
         return "\n".join(lines) + "\n"
 
