@@ -71,23 +71,32 @@ def test_keep_last_keeps_the_last_rung_and_reports_it(capsys):
         in capsys.readouterr().out
 
 
-def test_rungs_that_stop_where_the_run_stopped_are_not_run_again(capsys):
-    """A rung is tried from the stop first (passes); the ones that stop
-    there too are skipped, and only the five times finer mesh, which gets
-    past it, runs the branch again from its start."""
-    stop = runerror.RunError("run fold_upper3- in x: no convergence (MX) at V = 501.2",
+def probed_ladder(V, Fstar, passing):
+    """with_ladder on a fold curve stopped (MX) at (V, F*), its rungs
+    probed by passes(constants) -> passing(constants): (its result, the
+    constants of each run from the start, the constants probed)."""
+    stop = runerror.RunError(f"run fold_upper3- in x: no convergence (MX) at V = {V}",
                              kind=runerror.MX)
-    stop.diagram, stop.stop = "diagram up to the stop", {"V": 501.2, "Fstar": 1.05}
+    stop.diagram, stop.stop = "diagram up to the stop", {"V": V, "Fstar": Fstar}
     attempt, calls = attempts([stop, "the whole curve"])
     probed = []
 
     def passes(error, **constants):
-        probed.append((error.stop["V"], constants))
-        return constants == {"NTST": 400}
-    assert continuation.with_ladder(attempt, OWN, "run fold_upper3-", keep_last=True,
-                                    passes=passes) == "the whole curve"
-    assert [c for _, c in calls] == [{}, {"NTST": 400}], calls
-    assert [V for V, _ in probed] == [501.2] * (len(continuation.LADDER) - 1), probed
+        assert error.stop["V"] == V
+        probed.append(constants)
+        return passing(constants)
+    result = continuation.with_ladder(attempt, OWN, "run fold_upper3-", keep_last=True,
+                                      passes=passes)
+    return result, [c for _, c in calls], probed
+
+
+def test_rungs_that_stop_where_the_run_stopped_are_not_run_again(capsys):
+    """A rung is tried from the stop first (passes); the ones that stop
+    there too are skipped, and only the five times finer mesh, which gets
+    past it, runs the branch again from its start."""
+    result, runs, probed = probed_ladder(501.2, 1.05, lambda c: c == {"NTST": 400})
+    assert result == "the whole curve" and runs == [{}, {"NTST": 400}], runs
+    assert len(probed) == len(continuation.LADDER) - 1, probed
     assert capsys.readouterr().out.count("stops where the run stopped too") == 3
 
 
@@ -96,18 +105,8 @@ def test_the_last_rung_runs_from_the_start_whatever_its_probe():
     probes fail), yet the five times finer mesh, the last rung, runs the
     branch from its start and completes it (rho = mu = 10 deg: the fold
     curve that NTST 400 takes past (473.5 m/s, F* = 0.980))."""
-    stop = runerror.RunError("run fold_upper3- in x: no convergence (MX) at V = 473.5",
-                             kind=runerror.MX)
-    stop.diagram, stop.stop = "diagram up to the stop", {"V": 473.5, "Fstar": 0.98}
-    attempt, calls = attempts([stop, "the whole curve"])
-    probed = []
-
-    def passes(error, **constants):
-        probed.append(constants)
-        return False
-    assert continuation.with_ladder(attempt, OWN, "run fold_upper3-", keep_last=True,
-                                    passes=passes) == "the whole curve"
-    assert [c for _, c in calls] == [{}, {"NTST": 400}], calls
+    result, runs, probed = probed_ladder(473.5, 0.98, lambda c: False)
+    assert result == "the whole curve" and runs == [{}, {"NTST": 400}], runs
     assert len(probed) == len(continuation.LADDER) - 1 and {"NTST": 400} not in probed
 
 
