@@ -115,12 +115,17 @@ def past_gh(folds: Sequence[Any], located: Sequence[Mapping[str, Any]], tol: flo
             print(f"fig11 fold{n + 1} runs on along the Hopf locus past the GH point at "
                   f"V = {columns['V'][cut]:.5g}, F* = {columns['Fstar'][cut]:.5g} to "
                   f"V = {end['V']:.5g}, F* = {end['Fstar']:.5g}: cut at the GH point")
-            kept.append({"columns": {c: v[:cut + 1] for c, v in columns.items()},
-                         "stable": record["stable"][:cut + 1],
-                         "labels": [x for x in record["labels"] if x[0] < cut]
-                         + [[cut, mx[-1][1], "MX"]]})
+            kept.append(cut_at(record, cut, mx[-1][1]))
         out.append(kept)
     return out
+
+
+def cut_at(record: Mapping[str, Any], cut: int, label: int) -> Dict[str, Any]:
+    """A stored branch up to its point `cut`, which becomes an MX end with
+    AUTO label `label` (past_gh, retraced_past_gh)."""
+    return {"columns": {c: v[:cut + 1] for c, v in record["columns"].items()},
+            "stable": record["stable"][:cut + 1],
+            "labels": [x for x in record["labels"] if x[0] < cut] + [[cut, label, "MX"]]}
 
 
 def retraced_past_gh(folds: Sequence[Any], located: Sequence[Mapping[str, Any]],
@@ -157,11 +162,7 @@ def retraced_past_gh(folds: Sequence[Any], located: Sequence[Mapping[str, Any]],
             print(f"fig11 fold{n + 1} passes the GH point at V = {columns['V'][cut]:.5g}, "
                   f"F* = {columns['Fstar'][cut]:.5g} and retraces drawn fold curves after it: "
                   "cut at the GH point")
-            label = max((x[1] for x in record["labels"]), default=0)
-            kept.append({"columns": {c: v[:cut + 1] for c, v in columns.items()},
-                         "stable": record["stable"][:cut + 1],
-                         "labels": [x for x in record["labels"] if x[0] < cut]
-                         + [[cut, label, "MX"]]})
+            kept.append(cut_at(record, cut, max((x[1] for x in record["labels"]), default=0)))
         out.append(kept)
     return out
 
